@@ -1,0 +1,275 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Analyse one package: sources -> facts -> nodes -> labels -> summary.
+
+The event handler and ``colcon rsia analyze`` both call
+:func:`analyze_package`.
+"""
+
+from concurrent.futures import ThreadPoolExecutor
+import hashlib
+import json
+import os
+import time
+
+from colcon_rsia import __version__
+from colcon_rsia import model
+from colcon_rsia import store
+from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
+from colcon_rsia.frontend.compile_db import CompileDatabaseError
+from colcon_rsia.frontend.compile_db import find_resource_dir
+from colcon_rsia.frontend.compile_db import load_compile_database
+from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
+from colcon_rsia.labeling import label_publishers
+from colcon_rsia.node_facts import merge_facts
+from colcon_rsia.node_facts import node_facts
+from colcon_rsia.node_facts import resolve_namespace
+from colcon_rsia.node_facts import select_functions
+from colcon_rsia.nodes import find_executables
+from colcon_rsia.nodes import find_nodelets
+
+
+class AnalysisError(RuntimeError):
+    """An expected failure of one package's analysis (one clear sentence)."""
+
+
+def default_jobs():
+    """Threads for parsing: libclang releases the GIL while it parses."""
+    return max(1, os.cpu_count() or 1)
+
+
+def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
+                    nothing_compiled=False):
+    """Analyse a C++ package from its compile database; store the summary.
+
+    :param str name: the package name
+    :param str path: the package source directory
+    :param str build_base: the package's build directory
+    :param int jobs: parallel parses (default: the number of CPUs)
+    :param bool use_cache: reuse facts of unchanged translation units
+    :param bool nothing_compiled: the package compiles no translation unit
+      (CMake wrote no compile database): summarise it with no nodes
+    :returns: the summary, also written to ``<build_base>/rsia/summary.json``
+    :rtype: colcon_rsia.model.PackageSummary
+    :raises AnalysisError: when the package cannot be analysed at all
+    """
+    started = time.monotonic()
+    path = os.path.abspath(path)
+    db_path = os.path.join(build_base, COMPILE_DB_FILENAME)
+    try:
+        entries = [] if nothing_compiled else load_compile_database(db_path)
+    except CompileDatabaseError as e:
+        raise AnalysisError(str(e)) from None
+    entries = [e for e in entries if _inside(e.file, path)]
+    resource_dir = find_resource_dir()
+    if resource_dir is None:
+        raise AnalysisError(RESOURCE_DIR_HINT)
+
+    units, diagnostics = parse_units(
+        entries, package_path=path, resource_dir=resource_dir,
+        cache=store.cache_dir(build_base) if use_cache else None,
+        jobs=jobs or default_jobs())
+    summary = build_summary(
+        name=name, path=path, build_base=build_base, units=units)
+    summary.diagnostics = diagnostics + summary.diagnostics
+    summary.seconds = round(time.monotonic() - started, 3)
+    store.write_summary(build_base, summary)
+    return summary
+
+
+def _inside(file, directory):
+    return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
+
+
+def parse_units(entries, *, package_path, resource_dir, cache, jobs):
+    """Parse the TUs in a thread pool; return (facts by file, messages)."""
+    def work(entry):
+        return _unit_facts(entry, package_path, resource_dir, cache)
+    units = {}
+    diagnostics = []
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        for entry, (facts, messages) in zip(entries, pool.map(work, entries)):
+            if facts is not None:
+                units[entry.file] = facts
+            diagnostics.extend(messages)
+    return units, diagnostics
+
+
+def _unit_facts(entry, package_path, resource_dir, cache):
+    """Facts of one TU, from the cache when nothing it reads changed."""
+    relative = os.path.relpath(entry.file, package_path)
+    cache_file = None
+    if cache is not None:
+        digest = hashlib.sha1(entry.file.encode()).hexdigest()[:16]
+        cache_file = os.path.join(cache, digest + '.json')
+        cached = _read_cache(cache_file, entry)
+        if cached is not None:
+            return cached, list(cached.diagnostics)
+    # imported here: libclang is needed only when something is parsed
+    import clang.cindex as ci
+    from colcon_rsia.frontend import cpp
+    if not os.path.isfile(entry.file):
+        return None, [f'{relative}: source file missing (stale compile '
+                      'database?); skipped']
+    try:
+        index = ci.Index.create()
+        tu = cpp.parse(
+            index, file=entry.file, arguments=entry.arguments,
+            resource_dir=resource_dir, working_directory=entry.directory)
+    except ci.TranslationUnitLoadError as e:
+        return None, [f'{relative}: libclang could not parse it ({e})']
+    facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
+    facts.diagnostics = [
+        f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)]
+    if cache_file is not None:
+        includes = sorted({
+            i.include.name for i in tu.get_includes()
+            if i.include is not None})
+        _write_cache(cache_file, entry, [entry.file] + includes, facts)
+    return facts, list(facts.diagnostics)
+
+
+def _file_stamp(path):
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return [st.st_mtime_ns, st.st_size]
+
+
+_FRONTEND_DIGEST = []
+
+
+def _frontend_digest():
+    """A digest of the code that makes facts: new code, new facts."""
+    if not _FRONTEND_DIGEST:
+        digest = hashlib.sha1()
+        here = os.path.dirname(os.path.abspath(__file__))
+        for relative in ('model.py', 'frontend/cpp.py',
+                         'frontend/const_eval.py', 'frontend/ros_api.py'):
+            with open(os.path.join(here, relative), 'rb') as h:
+                digest.update(h.read())
+        _FRONTEND_DIGEST.append(digest.hexdigest())
+    return _FRONTEND_DIGEST[0]
+
+
+def _cache_key(entry):
+    return {'tool': __version__, 'schema': model.FACTS_SCHEMA,
+            'frontend': _frontend_digest(),
+            'arguments': entry.arguments, 'directory': entry.directory}
+
+
+def _read_cache(cache_file, entry):
+    try:
+        with open(cache_file, encoding='utf-8') as h:
+            data = json.load(h)
+        if data['key'] != _cache_key(entry):
+            return None
+        for path, stamp in data['inputs'].items():
+            if _file_stamp(path) != stamp:
+                return None
+        return model.TuFacts.from_dict(data['facts'])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None  # no cache, or one we cannot trust: parse again
+
+
+def _write_cache(cache_file, entry, inputs, facts):
+    data = {
+        'key': _cache_key(entry),
+        'inputs': {p: _file_stamp(p) for p in inputs},
+        'facts': facts.to_dict()}
+    try:
+        store.write_json_atomically(cache_file, data)
+    except OSError:
+        pass  # a cache that cannot be written only costs time
+
+
+def build_summary(*, name, path, build_base, units):
+    """Turn the facts of a package's TUs into its labelled nodes.
+
+    Every executable has its own ``main`` (and may reuse free function
+    names), and those share USRs across executables: a node's facts are
+    those of its own TUs plus the package's library TUs, never another
+    executable's.
+    """
+    summary = model.PackageSummary(
+        package=name, path=path, tool_version=__version__)
+    executables = find_executables(package_path=path, build_base=build_base)
+    executable_sources = {s for sources in executables.values()
+                          for s in sources}
+    library = [u for f, u in units.items() if f not in executable_sources]
+    for executable, sources in sorted(executables.items()):
+        own = [units[s] for s in sources if s in units]
+        if not own:
+            summary.diagnostics.append(
+                f"executable '{executable}': none of its sources is in the "
+                'compile database; skipped')
+            continue
+        seeds = {f.id for unit in own for f in unit.functions}
+        summary.nodes.append(_node(
+            name, executable, 'executable', sources, path,
+            merge_facts(own + library), seeds))
+    merged_library = merge_facts(library)
+    nodelets = find_nodelets(
+        package_path=path,
+        exported_classes=merge_facts(units.values()).plugin_exports)
+    for plugin, class_name in sorted(nodelets.items()):
+        seeds = {f.id for f in merged_library.functions
+                 if f.name.startswith(class_name + '::')}
+        sources = sorted({
+            os.path.join(path, f.location.rsplit(':', 1)[0])
+            for f in merged_library.functions if f.id in seeds})
+        short = plugin.split('/')[-1]
+        summary.nodes.append(_node(
+            name, short, 'nodelet', sources, path, merged_library, seeds,
+            node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
+    return summary
+
+
+def _node(package, executable, kind, sources, path, merged, seeds,
+          node_id=None):
+    facts = node_facts(merged, select_functions(merged, seeds))
+    publishers, roots = label_publishers(facts)
+    names = {fid: f.name for fid, f in facts.functions.items()}
+    return model.Node(
+        id=node_id or f'{package}/{executable}', package=package,
+        executable=executable, kind=kind,
+        sources=sorted(os.path.relpath(s, path) for s in sources),
+        publishers=sorted(publishers, key=lambda p: (p.location, p.topic or '')),
+        subscribers=sorted((
+            model.NodeSubscriber(
+                topic=s.topic, topic_is_literal=s.topic_is_literal,
+                msg_type=s.msg_type, api=s.api,
+                callback=names.get(s.callback, s.callback),
+                namespace=resolve_namespace(facts, s.nh),
+                location=s.location)
+            for s in facts.subscribers),
+            key=lambda s: (s.location, s.topic or '')),
+        timers=[model.NodeTimer(
+            api=t.api, callback=names.get(t.callback, t.callback),
+            period=t.period, rate_hz=t.rate_hz, location=t.location)
+            for t in facts.timers],
+        services=[model.NodeService(
+            name=s.name, api=s.api,
+            callback=names.get(s.callback, s.callback), location=s.location)
+            for s in facts.services],
+        actions=_actions(facts, names),
+        roots=roots)
+
+
+def _actions(facts, names):
+    """Actions, with callbacks registered later folded into their server."""
+    actions = [a for a in facts.actions
+               if not a.location.startswith('registration:')]
+    by_handle = {a.handle: a for a in actions if a.handle}
+    extra = {}
+    for registration in facts.actions:
+        if registration.location.startswith('registration:') and \
+                registration.handle in by_handle:
+            extra.setdefault(registration.handle, []).extend(
+                registration.callbacks)
+    return [model.NodeAction(
+        name=a.name, api=a.api, role=a.role,
+        callbacks=sorted({names.get(c, c) for c in
+                          a.callbacks + extra.get(a.handle, [])}),
+        location=a.location) for a in actions]

@@ -1,0 +1,106 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+from concurrent.futures import ThreadPoolExecutor
+import time
+
+from colcon_core.event.job import JobEnded
+from colcon_core.event.timer import TimerEvent
+from colcon_core.event_handler import EventHandlerExtensionPoint
+from colcon_core.event_reactor import EventReactorShutdown
+from colcon_core.plugin_system import satisfies_version
+
+
+class RsiaEventHandler(EventHandlerExtensionPoint):
+    """
+    Analyse each package's rates right after its build job ends.
+
+    The analysis runs in a worker thread while the build goes on; results
+    are printed as they come and joined when the build ends. A package that
+    cannot be analysed gets one message and never fails the build.
+    """
+
+    # the build's own console output and logs come first (they have higher
+    # priorities); our lines follow the package's "Finished" line
+    PRIORITY = 60
+
+    # packages analysed at once: libclang parsing is CPU-bound and the build
+    # still needs the cores, so one package at a time, its translation units
+    # parsed in parallel
+    PACKAGE_WORKERS = 1
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            EventHandlerExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+        # instantiated on every colcon call, --help included: stay cheap
+        self.enabled = False
+        self._pool = None
+        self._pending = []
+        self._outcomes = []
+        self._started = None
+
+    def __call__(self, event):  # noqa: D102
+        data = event[0]
+        if self.context is None or \
+                getattr(self.context.args, 'verb_name', None) != 'build':
+            return
+        if isinstance(data, JobEnded):
+            job = event[1]
+            if str(data.rc) == '0' and job is not None:
+                self._submit(job)
+        elif isinstance(data, TimerEvent):
+            self._report_finished()
+        elif isinstance(data, EventReactorShutdown):
+            self._shutdown()
+
+    def _submit(self, job):
+        # imported here: the analysis (and libclang) loads only when used
+        from colcon_rsia.runner import analyze
+        pkg = job.task_context.pkg
+        args = job.task_context.args
+        if self._pool is None:
+            self._pool = ThreadPoolExecutor(
+                max_workers=self.PACKAGE_WORKERS,
+                thread_name_prefix='rsia')
+            self._started = time.monotonic()
+        self._pending.append(self._pool.submit(
+            analyze, name=pkg.name, package_type=pkg.type,
+            path=str(pkg.path), build_base=args.build_base,
+            cmake_args=getattr(args, 'cmake_args', None)))
+
+    def _report_finished(self):
+        still_running = []
+        for future in self._pending:
+            if future.done():
+                self._report(future)
+            else:
+                still_running.append(future)
+        self._pending = still_running
+
+    def _report(self, future):
+        from colcon_rsia.runner import Outcome
+        try:
+            outcome = future.result()
+        except Exception as e:  # noqa: B902
+            outcome = Outcome('?', error=str(e))
+        self._outcomes.append(outcome)
+        if not outcome.skipped:
+            print(outcome.line(), flush=True)
+
+    def _shutdown(self):
+        if self._pool is None:
+            return
+        for future in self._pending:
+            self._report(future)  # waits for the analysis to end
+        self._pending = []
+        self._pool.shutdown(wait=True)
+        self._pool = None
+        analysed = [o for o in self._outcomes if o.summary is not None]
+        considered = [o for o in self._outcomes if not o.skipped]
+        nodes = sum(len(o.summary.nodes) for o in analysed)
+        print(
+            f'rsia: analysed {len(analysed)} of {len(considered)} '
+            f'packages ({nodes} nodes) in '
+            f'{time.monotonic() - self._started:.1f}s; '
+            "see 'colcon rsia graph' and 'colcon rsia impact'", flush=True)

@@ -1,0 +1,236 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Compile-time constant numbers in C++ expressions (rates, periods).
+
+Literals, ``const``/``constexpr`` variables, ``#define`` macros, casts and
+``+ - * /``. Anything else is not a constant: the answer is None. Nothing is
+ever executed; macro bodies are read by a small arithmetic parser.
+"""
+
+import re
+
+import clang.cindex as ci
+
+CK = ci.CursorKind
+
+# how deep constants may refer to other constants
+MAX_DEPTH = 8
+
+_WRAPPERS = frozenset({
+    CK.UNEXPOSED_EXPR, CK.PAREN_EXPR, CK.CSTYLE_CAST_EXPR,
+    CK.CXX_STATIC_CAST_EXPR, CK.CXX_FUNCTIONAL_CAST_EXPR,
+})
+_NOT_EXPRESSIONS = frozenset({
+    CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF})
+_NUMBER = re.compile(
+    r'^(0[xX][0-9a-fA-F]+|(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)'
+    r'[uUlLfF]*$')
+
+
+def evaluate_number(cursor, depth=0):
+    """Return the numeric value of a constant expression, or None."""
+    if cursor is None or depth > MAX_DEPTH:
+        return None
+    value = _evaluate_structure(cursor, depth)
+    if value is None:
+        # a whole expression spelled as one macro: read the macro
+        tokens = [t.spelling for t in source_tokens(cursor)]
+        if len(tokens) == 1 and not _NUMBER.match(tokens[0]):
+            macros = _Macros(cursor.translation_unit)
+            body = macros.get(tokens[0])
+            if body is not None:
+                value = evaluate_tokens(body, macros, depth + 1)
+    return value
+
+
+def _evaluate_structure(cursor, depth):
+    kind = cursor.kind
+    if kind in (CK.INTEGER_LITERAL, CK.FLOATING_LITERAL):
+        # inside a macro expansion the first token is the literal as spelled
+        first = next(iter(cursor.get_tokens()), None)
+        return _number(first.spelling) if first is not None else None
+    children = [c for c in cursor.get_children()
+                if c.kind not in _NOT_EXPRESSIONS]
+    if kind in _WRAPPERS and children:
+        return evaluate_number(children[-1], depth + 1)
+    if kind == CK.UNARY_OPERATOR and len(children) == 1:
+        value = evaluate_number(children[0], depth + 1)
+        first = next(iter(cursor.get_tokens()), None)
+        if value is None or first is None:
+            return None
+        return -value if first.spelling == '-' else value
+    if kind == CK.BINARY_OPERATOR and len(children) == 2:
+        left = evaluate_number(children[0], depth + 1)
+        right = evaluate_number(children[1], depth + 1)
+        operator = _operator_between(cursor, children[0])
+        return _apply(operator, left, right)
+    if kind == CK.DECL_REF_EXPR:
+        return _constant_variable(cursor.referenced, depth)
+    return None
+
+
+def _constant_variable(declaration, depth):
+    if declaration is None or declaration.kind != CK.VAR_DECL:
+        return None
+    tokens = [t.spelling for t in declaration.get_tokens()]
+    if not (declaration.type.is_const_qualified() or 'constexpr' in tokens):
+        return None  # a variable may change: not a constant rate
+    children = [c for c in declaration.get_children()
+                if c.kind not in _NOT_EXPRESSIONS]
+    return evaluate_number(children[-1], depth + 1) if children else None
+
+
+def _operator_between(cursor, left):
+    end = left.extent.end.offset
+    for token in cursor.get_tokens():
+        if token.extent.start.offset >= end:
+            return token.spelling
+    return None
+
+
+def _apply(operator, left, right):
+    if left is None or right is None:
+        return None
+    if operator == '+':
+        return left + right
+    if operator == '-':
+        return left - right
+    if operator == '*':
+        return left * right
+    if operator == '/':
+        return left / right if right else None
+    return None
+
+
+def _number(text):
+    match = _NUMBER.match(text)
+    if not match:
+        return None
+    body = match.group(1)
+    if body.lower().startswith('0x'):
+        return float(int(body, 16))
+    return float(body)
+
+
+def source_tokens(cursor):
+    """The tokens written at an expression's place in the source.
+
+    Inside a macro expansion libclang's extent starts at the macro's
+    definition; then re-read the tokens at the place of use.
+    """
+    tokens = list(cursor.get_tokens())
+    start, end = cursor.extent.start, cursor.extent.end
+    if not tokens or start.file is None:
+        return tokens
+    first = tokens[0].location
+    if first.file is not None and first.file.name == start.file.name and \
+            first.line == start.line and first.column == start.column:
+        return tokens
+    tu = cursor.translation_unit
+    extent = ci.SourceRange.from_locations(
+        ci.SourceLocation.from_position(
+            tu, start.file, start.line, start.column),
+        ci.SourceLocation.from_position(tu, end.file, end.line, end.column))
+    return list(tu.get_tokens(extent=extent))
+
+
+class _Macros:
+    """Object-like macro bodies of a TU by name, read on first use."""
+
+    def __init__(self, tu):
+        self._tu = tu
+
+    def get(self, name):
+        definitions = getattr(self._tu, '_rsia_macro_definitions', None)
+        if definitions is None:
+            # only spellings here: tokenising 10k+ macros costs a second
+            definitions = {
+                c.spelling: c for c in self._tu.cursor.get_children()
+                if c.kind == CK.MACRO_DEFINITION}
+            self._tu._rsia_macro_definitions = definitions
+        cursor = definitions.get(name)
+        if cursor is None:
+            return None
+        tokens = list(cursor.get_tokens())
+        if len(tokens) < 2:
+            return None
+        # a function-like macro (NAME'(' with no space) is not a constant
+        if tokens[1].spelling == '(' and \
+                tokens[1].extent.start.offset == tokens[0].extent.end.offset:
+            return None
+        return [t.spelling for t in tokens[1:]]
+
+    def __contains__(self, name):
+        return self.get(name) is not None
+
+
+def evaluate_tokens(tokens, macros=None, depth=0):
+    """Evaluate ``+ - * / ( )`` over numbers and macro names, or None."""
+    macros = macros or {}
+    expanded = []
+    for token in tokens:
+        if _NUMBER.match(token) or token in '+-*/()':
+            expanded.append(token)
+        elif depth < MAX_DEPTH and macros.get(token) is not None:
+            value = evaluate_tokens(macros.get(token), macros, depth + 1)
+            if value is None:
+                return None
+            expanded.append(repr(value))
+        else:
+            return None
+    parser = _Parser(expanded)
+    try:
+        value = parser.expression()
+    except (IndexError, ValueError, ZeroDivisionError):
+        return None
+    return value if parser.position == len(expanded) else None
+
+
+class _Parser:
+    """Recursive descent over tokens: expression, term, factor."""
+
+    def __init__(self, tokens):
+        self.tokens = tokens
+        self.position = 0
+
+    def _peek(self):
+        if self.position < len(self.tokens):
+            return self.tokens[self.position]
+        return None
+
+    def _take(self):
+        token = self.tokens[self.position]
+        self.position += 1
+        return token
+
+    def expression(self):
+        value = self.term()
+        while self._peek() in ('+', '-'):
+            value = value + self.term() if self._take() == '+' \
+                else value - self.term()
+        return value
+
+    def term(self):
+        value = self.factor()
+        while self._peek() in ('*', '/'):
+            if self._take() == '*':
+                value *= self.factor()
+            else:
+                value /= self.factor()
+        return value
+
+    def factor(self):
+        token = self._take()
+        if token == '-':
+            return -self.factor()
+        if token == '+':
+            return self.factor()
+        if token == '(':
+            value = self.expression()
+            if self._take() != ')':
+                raise ValueError('unbalanced parenthesis')
+            return value
+        value = _number(token)
+        if value is None:
+            raise ValueError(f'not a number: {token}')
+        return value

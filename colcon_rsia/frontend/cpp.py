@@ -1,0 +1,893 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The C++ front end: a libclang walk from a translation unit to its facts.
+
+Only cursors whose file lies inside the package are walked (a TU with the
+real ROS headers has ~400k cursors; the package's own code a few thousand).
+A ROS call is recognised by the qualified name of the declaration it calls,
+looked up in :mod:`colcon_rsia.frontend.ros_api`.
+"""
+
+import os
+import re
+
+import clang.cindex as ci
+from colcon_rsia import model
+from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.const_eval import evaluate_number
+from colcon_rsia.frontend.const_eval import source_tokens
+
+CK = ci.CursorKind
+
+FUNCTION_KINDS = frozenset({
+    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.CONSTRUCTOR, CK.DESTRUCTOR,
+    CK.FUNCTION_TEMPLATE, CK.CONVERSION_FUNCTION,
+})
+CLASS_KINDS = frozenset({
+    CK.CLASS_DECL, CK.STRUCT_DECL, CK.CLASS_TEMPLATE,
+    CK.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION, CK.UNION_DECL,
+})
+SCOPE_KINDS = CLASS_KINDS | {CK.NAMESPACE, CK.LINKAGE_SPEC}
+LOOP_KINDS = frozenset({
+    CK.WHILE_STMT, CK.FOR_STMT, CK.DO_STMT, CK.CXX_FOR_RANGE_STMT})
+HANDLE_KINDS = frozenset({CK.VAR_DECL, CK.FIELD_DECL, CK.PARM_DECL})
+REF_KINDS = frozenset({CK.DECL_REF_EXPR, CK.MEMBER_REF_EXPR})
+# statements end the search for the variable a call's result is stored in
+STATEMENT_KINDS = frozenset({
+    CK.COMPOUND_STMT, CK.RETURN_STMT, CK.IF_STMT, CK.WHILE_STMT,
+    CK.FOR_STMT, CK.DO_STMT, CK.SWITCH_STMT, CK.LAMBDA_EXPR,
+    CK.CXX_FOR_RANGE_STMT,
+})
+EXPORT_MACROS = frozenset({
+    'PLUGINLIB_EXPORT_CLASS', 'CLASS_LOADER_REGISTER_CLASS'})
+
+PARSE_OPTIONS = (
+    # incomplete: we never need the TU's template instantiations at its end
+    ci.TranslationUnit.PARSE_INCOMPLETE |
+    # detailed: macro definitions (#define RATE 10) and instantiations
+    # (PLUGINLIB_EXPORT_CLASS)
+    ci.TranslationUnit.PARSE_DETAILED_PROCESSING_RECORD)
+
+# how many parse errors of one TU are kept in the summary
+MAX_DIAGNOSTICS_PER_TU = 5
+
+
+class _MemberInit:
+    """Stands on the expression stack for a constructor's member init."""
+
+    kind = None
+
+    def __init__(self, member):
+        self.member = member
+
+
+def parse(index, *, file, arguments, resource_dir, working_directory):
+    """Parse one translation unit with libclang.
+
+    :raises clang.cindex.TranslationUnitLoadError: when libclang gives up
+    """
+    args = list(arguments)
+    if resource_dir:
+        args += ['-resource-dir', resource_dir]
+    # the default limit of 20 errors truncates the AST
+    args += ['-ferror-limit=0', '-working-directory', working_directory]
+    return index.parse(file, args=args, options=PARSE_OPTIONS)
+
+
+def parse_diagnostics(tu):
+    """Return the first parse errors of a TU as one-line strings."""
+    messages = []
+    for diag in tu.diagnostics:
+        if diag.severity >= ci.Diagnostic.Error:
+            loc = diag.location
+            where = f'{loc.file.name}:{loc.line}' if loc.file else '?'
+            messages.append(f'{where}: {diag.spelling}')
+            if len(messages) >= MAX_DIAGNOSTICS_PER_TU:
+                break
+    return messages
+
+
+def extract_facts(tu, *, package_path, source):
+    """Walk the package's own code in a parsed TU and return its facts.
+
+    :param tu: the parsed translation unit
+    :param str package_path: absolute path of the package source
+    :param str source: the TU's main file, relative to the package
+    :rtype: colcon_rsia.model.TuFacts
+    """
+    walker = _Walker(package_path, model.TuFacts(source=source))
+    walker.walk(tu)
+    return walker.facts
+
+
+def qualified_name(cursor):
+    """Return ``ns::Class::name`` of a declaration (no template args)."""
+    parts = []
+    while cursor is not None and cursor.kind != CK.TRANSLATION_UNIT:
+        if cursor.spelling:
+            parts.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return '::'.join(reversed(parts))
+
+
+_MSG_ALLOCATOR = re.compile(r'(\w+)_<\s*(?:class\s+)?std::allocator<void>\s*>')
+_MSG_WRAPPER = re.compile(
+    r'^(?:(?:boost|std)::shared_ptr|ros::MessageEvent)<(.*)>$')
+
+
+def normalize_msg_type(spelling):
+    """``const std_msgs::String::ConstPtr &`` -> ``std_msgs::String``."""
+    if not spelling:
+        return None
+    text = _MSG_ALLOCATOR.sub(r'\1', spelling)
+    text = re.sub(r'\b(?:const|volatile|struct|class|typename)\b', '', text)
+    text = text.replace('&', '').replace('*', '').strip()
+    text = re.sub(r'\s+', ' ', text)
+    for _ in range(3):
+        match = _MSG_WRAPPER.match(text.replace(' ', ''))
+        if not match:
+            break
+        text = match.group(1)
+    text = text.replace(' ', '')
+    text = re.sub(r'::(?:ConstPtr|Ptr)$', '', text)
+    return text or None
+
+
+def _first_template_argument(spelling):
+    start = spelling.find('<')
+    if start < 0:
+        return None
+    depth = 0
+    for i in range(start, len(spelling)):
+        ch = spelling[i]
+        if ch == '<':
+            depth += 1
+        elif ch == '>':
+            depth -= 1
+            if depth == 0:
+                return spelling[start + 1:i]
+        elif ch == ',' and depth == 1:
+            return spelling[start + 1:i]
+    return None
+
+
+def _expression_text(cursor):
+    """The source text of an expression, tokens joined readably."""
+    text = ''
+    previous = ''
+    for token in source_tokens(cursor):
+        spelling = token.spelling
+        if previous and (previous[-1].isalnum() or previous[-1] == '_') \
+                and (spelling[0].isalnum() or spelling[0] == '_'):
+            text += ' '
+        text += spelling
+        previous = spelling
+    return text
+
+
+def _children(cursor):
+    return list(cursor.get_children())
+
+
+def _walk_preorder(cursor, stop=LOOP_KINDS - LOOP_KINDS):
+    """Yield the cursors below `cursor` (not into `stop` kinds)."""
+    todo = _children(cursor)[::-1]
+    while todo:
+        current = todo.pop()
+        yield current
+        if current.kind not in stop:
+            todo.extend(_children(current)[::-1])
+
+
+def first_handle(cursor):
+    """The variable/field/parameter an object expression starts from."""
+    if cursor is None:
+        return None
+    candidates = [cursor] + list(_walk_preorder(
+        cursor, stop=frozenset({CK.LAMBDA_EXPR})))
+    for current in candidates:
+        if current.kind in REF_KINDS:
+            ref = current.referenced
+            if ref is not None and ref.kind in HANDLE_KINDS:
+                return ref
+    return None
+
+
+BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
+
+
+def first_function(cursor):
+    """The function a callable expression names (``&C::f``, ``f``)."""
+    for current in [cursor] + list(_walk_preorder(cursor)):
+        if current.kind in REF_KINDS and current.referenced is not None and \
+                current.referenced.kind in FUNCTION_KINDS:
+            return current.referenced
+    return None
+
+
+def _call_object(call):
+    """The object expression of a member call, or None."""
+    children = _children(call)
+    if not children:
+        return None
+    callee = children[0]
+    if callee.kind == CK.MEMBER_REF_EXPR:
+        for child in _children(callee):
+            if child.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
+                                  CK.TEMPLATE_REF):
+                return child
+    return None
+
+
+def _explicit_template_type(call):
+    """The first explicit template argument written at a call site."""
+    children = _children(call)
+    if not children:
+        return None
+    callee = children[0]
+    candidates = [callee] + _children(callee)
+    if callee.kind == CK.UNEXPOSED_EXPR and _children(callee):
+        candidates += _children(_children(callee)[0])
+    for child in candidates:
+        if child.kind == CK.TYPE_REF:
+            return child.type.spelling or child.spelling
+    return None
+
+
+class _Walker:
+    """Collects the facts of one TU; see :func:`extract_facts`."""
+
+    def __init__(self, package_path, facts):
+        self.package_path = package_path.rstrip('/') + '/'
+        self.facts = facts
+        self._in_package_cache = {}
+        # (file, offset) of expressions used as a registered callback, so
+        # that they do not also count as a plain function reference
+        self._consumed = set()
+        self._lambdas_in_variables = set()
+        self._registered = set()
+
+    # --- locations ---------------------------------------------------------
+
+    def in_package(self, cursor):
+        file = cursor.location.file
+        if file is None:
+            return False
+        name = file.name
+        cached = self._in_package_cache.get(name)
+        if cached is None:
+            cached = os.path.abspath(name).startswith(self.package_path)
+            self._in_package_cache[name] = cached
+        return cached
+
+    def relpath(self, cursor):
+        name = os.path.abspath(cursor.location.file.name)
+        if name.startswith(self.package_path):
+            return name[len(self.package_path):]
+        return name
+
+    def location(self, cursor):
+        if cursor.location.file is None:
+            return '?:0'
+        return f'{self.relpath(cursor)}:{cursor.location.line}'
+
+    def key(self, cursor):
+        file = cursor.location.file
+        return (file.name if file else '', cursor.extent.start.offset)
+
+    def loop_id(self, cursor):
+        return f'{self.relpath(cursor)}@{cursor.extent.start.offset}'
+
+    # --- declarations ------------------------------------------------------
+
+    def walk(self, tu):
+        for cursor in tu.cursor.get_children():
+            kind = cursor.kind
+            # most top-level cursors are the headers' macros: skip them
+            # before asking for their location, which costs more
+            if kind == CK.MACRO_INSTANTIATION:
+                if cursor.spelling in EXPORT_MACROS and \
+                        self.in_package(cursor):
+                    self._plugin_export(cursor)
+                continue
+            if kind in (CK.MACRO_DEFINITION, CK.INCLUSION_DIRECTIVE):
+                continue
+            if self.in_package(cursor):
+                self._declaration(cursor)
+        # a lambda stored in a variable and then registered as a callback
+        # is a root, not something its defining function calls
+        self.facts.calls = [
+            c for c in self.facts.calls
+            if not (c.kind == 'ref' and c.callee in self._registered and
+                    c.callee in self._lambdas_in_variables)]
+
+    def _declaration(self, cursor):
+        kind = cursor.kind
+        if kind in SCOPE_KINDS:
+            for child in cursor.get_children():
+                if self.in_package(child):
+                    self._declaration(child)
+        elif kind in FUNCTION_KINDS:
+            if cursor.is_definition():
+                self._function(cursor)
+        elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
+            self._declared_object(cursor, function=None)
+
+    def _plugin_export(self, cursor):
+        tokens = [t.spelling for t in cursor.get_tokens()]
+        try:
+            inner = tokens[tokens.index('(') + 1:-1]
+        except ValueError:
+            return
+        text = ''.join(inner)
+        parts = text.split(',')
+        if len(parts) >= 2:
+            self.facts.plugin_exports.append(
+                [parts[0].lstrip(':'), parts[1].lstrip(':')])
+
+    def _class_id(self, cursor):
+        parent = cursor.semantic_parent
+        if parent is not None and parent.kind in CLASS_KINDS:
+            return parent.get_usr()
+        return None
+
+    def _function(self, cursor):
+        fid = cursor.get_usr()
+        self.facts.functions.append(model.Function(
+            id=fid, name=qualified_name(cursor),
+            location=self.location(cursor),
+            class_id=self._class_id(cursor),
+            params=[c.get_usr() for c in cursor.get_children()
+                    if c.kind == CK.PARM_DECL]))
+        ctx = _Context(fid)
+        pending_member = None
+        for child in cursor.get_children():
+            if child.kind == CK.MEMBER_REF:
+                pending_member = child.referenced
+                continue
+            if child.kind in (CK.PARM_DECL, CK.TYPE_REF, CK.NAMESPACE_REF,
+                              CK.TEMPLATE_REF, CK.TEMPLATE_TYPE_PARAMETER,
+                              CK.TEMPLATE_NON_TYPE_PARAMETER):
+                continue
+            stack = [_MemberInit(pending_member)] if pending_member else []
+            self._visit(child, ctx, stack)
+            pending_member = None
+
+    def _declared_object(self, cursor, function):
+        """A variable or field whose type makes it a publisher/listener."""
+        if cursor.type.kind in (ci.TypeKind.LVALUEREFERENCE,
+                                ci.TypeKind.RVALUEREFERENCE):
+            return
+        spellings = cursor.type.spelling + ' ' + \
+            cursor.type.get_canonical().spelling
+        for class_name, api in ros_api.DECLARED.items():
+            if not re.search(
+                    r'(?<![\w:])' + re.escape(class_name) + r'(?!\w)',
+                    spellings):
+                continue
+            class_id = self._class_id(cursor) if function is None else None
+            for topic in api.implicit_topics:
+                common = dict(
+                    function=function, api=class_name, topic=topic,
+                    topic_is_literal=True, msg_type=api.msg_type,
+                    handle=cursor.get_usr(), location=self.location(cursor),
+                    class_id=class_id)
+                if api.role == ros_api.DECLARED_PUBLISHER:
+                    self.facts.publishers.append(model.PublisherFact(
+                        handle_name=cursor.spelling, **common))
+                else:
+                    self.facts.subscribers.append(model.SubscriberFact(
+                        callback=None, **common))
+            return
+
+    # --- function bodies ---------------------------------------------------
+
+    def _visit(self, cursor, ctx, stack):
+        kind = cursor.kind
+        if kind == CK.LAMBDA_EXPR:
+            self._lambda(cursor, ctx)
+            return
+        if kind == CK.CALL_EXPR:
+            self._call(cursor, ctx, stack)
+        elif kind in REF_KINDS:
+            self._reference(cursor, ctx, stack)
+        elif kind == CK.VAR_DECL:
+            self._declared_object(cursor, ctx.function)
+            for child in cursor.get_children():
+                if child.kind == CK.LAMBDA_EXPR:
+                    self._lambdas_in_variables.add(self._lambda_id(child))
+        children = _children(cursor)
+        stack.append(cursor)
+        if kind in LOOP_KINDS:
+            ctx.loops.append((self.loop_id(cursor), ctx.conditional, cursor))
+            for child in children:
+                self._visit(child, ctx, stack)
+            ctx.loops.pop()
+        elif kind in (CK.IF_STMT, CK.SWITCH_STMT,
+                      CK.CONDITIONAL_OPERATOR) and children:
+            # the condition runs every time; the branches may not
+            self._visit(children[0], ctx, stack)
+            ctx.conditional += 1
+            for child in children[1:]:
+                self._visit(child, ctx, stack)
+            ctx.conditional -= 1
+        else:
+            for child in children:
+                self._visit(child, ctx, stack)
+        stack.pop()
+
+    def _lambda_id(self, cursor):
+        loc = cursor.location
+        return f'lambda@{self.relpath(cursor)}:{loc.line}:{loc.column}'
+
+    def _lambda(self, cursor, ctx):
+        lid = self._lambda_id(cursor)
+        self.facts.functions.append(model.Function(
+            id=lid, name=f'lambda@{self.location(cursor)}',
+            location=self.location(cursor),
+            class_id=None,
+            params=[c.get_usr() for c in cursor.get_children()
+                    if c.kind == CK.PARM_DECL]))
+        if self.key(cursor) not in self._consumed:
+            self._add_call(ctx, lid, cursor, kind='ref')
+        inner = _Context(lid)
+        for child in cursor.get_children():
+            if child.kind == CK.COMPOUND_STMT:
+                self._visit(child, inner, [])
+
+    def _add_call(self, ctx, callee, cursor, kind='call'):
+        self.facts.calls.append(model.Call(
+            caller=ctx.function, callee=callee,
+            location=self.location(cursor), loops=ctx.loop_ids(), kind=kind))
+
+    def _reference(self, cursor, ctx, stack):
+        """A function named but not called here: it may be called later."""
+        ref = cursor.referenced
+        if ref is None or ref.kind not in FUNCTION_KINDS or \
+                not self.in_package(ref):
+            return
+        if self.key(cursor) in self._consumed:
+            return
+        for parent in stack[-2:]:
+            if getattr(parent, 'kind', None) == CK.CALL_EXPR and \
+                    parent.referenced == ref:
+                return  # the callee of a call, counted by _call
+        self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
+
+    def _call(self, cursor, ctx, stack):
+        ref = cursor.referenced
+        if ref is None:
+            return
+        if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+            self._add_call(ctx, ref.get_usr(), cursor)
+            self._bind_arguments(ref.get_usr(), cursor.get_arguments())
+            return
+        name = qualified_name(ref)
+        api = ros_api.lookup_call(name)
+        arguments = None
+        if api is None and name in ros_api.FORWARDING_FACTORIES:
+            name, api = self._forwarded_constructor(cursor)
+        if api is None:
+            return
+        arguments = list(cursor.get_arguments())
+        handler = getattr(self, '_on_' + api.role)
+        handler(cursor, ctx, stack, api, name, arguments)
+
+    def _forwarded_constructor(self, cursor):
+        """make_shared<X>(args) reads like X's constructor."""
+        class_name = _explicit_template_type(cursor)
+        if not class_name:
+            return None, None
+        class_name = re.sub(r'<.*', '', class_name).strip()
+        class_name = re.sub(r'^(?:class|struct)\s+', '', class_name)
+        short = class_name.split('::')[-1]
+        name = f'{class_name}::{short}'
+        return name, ros_api.lookup_call(name)
+
+    # --- argument helpers --------------------------------------------------
+
+    def _topic(self, argument):
+        """Return (topic as written, is it a literal)."""
+        if argument is None:
+            return None, False
+        literals = []
+        has_variable = False
+        for current in [argument] + list(_walk_preorder(argument)):
+            if current.kind == CK.STRING_LITERAL:
+                literals.append(current)
+            elif current.kind in REF_KINDS and current.referenced is not None \
+                    and current.referenced.kind in HANDLE_KINDS:
+                has_variable = True
+        if len(literals) == 1 and not has_variable:
+            text = literals[0].spelling
+            return _unquote(text), True
+        text = _expression_text(argument)
+        return (text or None), False
+
+    def _argument(self, arguments, position):
+        if position == ros_api.FIRST_STRING:
+            for argument in arguments:
+                spelling = argument.type.get_canonical().spelling
+                if 'basic_string' in spelling or 'char' in spelling:
+                    return argument
+            return None
+        if isinstance(position, int) and position < len(arguments):
+            argument = arguments[position]
+            # a default argument has no tokens of its own
+            if next(iter(argument.get_tokens()), None) is None:
+                return None
+            return argument
+        return None
+
+    def _bind_arguments(self, callee, arguments, first_index=0):
+        """Record handles passed to a package function's parameters."""
+        for index, argument in enumerate(arguments, start=first_index):
+            handle = first_handle(argument)
+            if handle is not None and self.in_package(handle):
+                self.facts.bindings.append(model.ParamBinding(
+                    callee=callee, index=index, handle=handle.get_usr()))
+
+    def _bound_arguments(self, argument):
+        """Handles bound by boost::bind / std::bind to the callback."""
+        for current in [argument] + list(_walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind != CK.CALL_EXPR or current.referenced is None or \
+                    qualified_name(current.referenced) not in BIND_FUNCTIONS:
+                continue
+            bound = list(current.get_arguments())
+            if not bound:
+                return
+            target = first_function(bound[0])
+            if target is None or not self.in_package(target):
+                return
+            rest = bound[1:]
+            # a bound method's first argument is the object, not a parameter
+            if target.kind == CK.CXX_METHOD and not target.is_static_method():
+                rest = rest[1:]
+            self._bind_arguments(target.get_usr(), rest)
+            return
+
+    def _resolve_callback(self, argument):
+        """Return (function id, declaration cursor) of a callback argument."""
+        if argument is None:
+            return None, None
+        self._bound_arguments(argument)
+        for current in [argument] + list(_walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind == CK.LAMBDA_EXPR:
+                self._consumed.add(self.key(current))
+                lid = self._lambda_id(current)
+                self._registered.add(lid)
+                return lid, current
+            if current.kind not in REF_KINDS:
+                continue
+            ref = current.referenced
+            if ref is None:
+                continue
+            if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+                self._consumed.add(self.key(current))
+                self._registered.add(ref.get_usr())
+                return ref.get_usr(), ref
+            if ref.kind == CK.VAR_DECL:
+                for child in ref.get_children():
+                    if child.kind == CK.LAMBDA_EXPR:
+                        lid = self._lambda_id(child)
+                        self._registered.add(lid)
+                        return lid, child
+        return None, None
+
+    def _callbacks(self, arguments, position):
+        if position == ros_api.FIRST_CALLBACK:
+            found = []
+            for argument in arguments:
+                callback, _ = self._resolve_callback(argument)
+                if callback:
+                    found.append(callback)
+            return found
+        callback, _ = self._resolve_callback(
+            self._argument(arguments, position))
+        return [callback] if callback else []
+
+    def _callback_msg_type(self, declaration):
+        if declaration is None:
+            return None
+        for child in declaration.get_children():
+            if child.kind == CK.PARM_DECL:
+                return normalize_msg_type(child.type.spelling)
+        return None
+
+    def _target(self, cursor, stack):
+        """The variable/field a created object is stored in, or None."""
+        start = cursor.extent.start.offset
+        for parent in reversed(stack):
+            if isinstance(parent, _MemberInit):
+                return parent.member
+            kind = parent.kind
+            if kind == CK.VAR_DECL:
+                return parent
+            if kind in STATEMENT_KINDS:
+                return None
+            if kind == CK.CALL_EXPR:
+                children = _children(parent)
+                if parent.spelling == 'operator=' and children:
+                    return first_handle(children[0])
+                obj = _call_object(parent)
+                if obj is not None and obj.extent.end.offset <= start:
+                    # x.reset(new ...), v.push_back(nh.advertise(...))
+                    return first_handle(obj)
+            if kind == CK.BINARY_OPERATOR:
+                children = _children(parent)
+                if children and _binary_operator(parent, children[0]) == '=':
+                    return first_handle(children[0])
+        return None
+
+    def _namespace_of(self, call):
+        """The NodeHandle a create call was made on: USR or marker."""
+        obj = _call_object(call)
+        if obj is None:
+            return None
+        for current in [obj] + list(_walk_preorder(obj)):
+            if current.kind == CK.CALL_EXPR and current.referenced is not None:
+                api = ros_api.lookup_call(qualified_name(current.referenced))
+                if api is not None and api.role == ros_api.PRIVATE_HANDLE:
+                    return '~'
+                if api is not None and api.role == ros_api.PUBLIC_HANDLE:
+                    return ''
+        handle = first_handle(obj)
+        return handle.get_usr() if handle is not None else None
+
+    # --- roles (named after ros_api roles) ----------------------------------
+
+    def _on_publisher(self, cursor, ctx, stack, api, name, arguments):
+        topic, literal = self._topic(self._argument(arguments, api.name_arg))
+        if topic is None and name.endswith('::init'):
+            return
+        if topic is None and api.name_arg and len(arguments) <= api.name_arg:
+            return  # a default constructor: the topic comes with init()
+        msg_type = api.msg_type or normalize_msg_type(
+            _explicit_template_type(cursor) or
+            _first_template_argument(self._object_type(cursor, name)))
+        target = self._target(cursor, stack)
+        topics = [(topic, msg_type)]
+        if api.camera:
+            topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
+        for each_topic, each_type in topics:
+            self.facts.publishers.append(model.PublisherFact(
+                function=ctx.function, api=ros_api.api_label(name),
+                topic=each_topic, topic_is_literal=literal,
+                msg_type=each_type,
+                handle=target.get_usr() if target is not None else None,
+                handle_name=target.spelling if target is not None else None,
+                location=self.location(cursor),
+                nh=self._namespace_of(cursor)))
+
+    def _object_type(self, cursor, name):
+        """The class type a constructor or method belongs to."""
+        if name.split('::')[-1] == name.split('::')[-2]:
+            return cursor.type.spelling
+        obj = _call_object(cursor)
+        return obj.type.spelling if obj is not None else ''
+
+    def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
+        topic, literal = self._topic(self._argument(arguments, api.name_arg))
+        if topic is None:
+            return  # a default-constructed message_filters::Subscriber
+        callback, declaration = self._resolve_callback(
+            self._argument(arguments, api.callback_arg)) \
+            if api.callback_arg is not None else (None, None)
+        msg_type = api.msg_type or normalize_msg_type(
+            _explicit_template_type(cursor) or
+            _first_template_argument(self._object_type(cursor, name))) or \
+            self._callback_msg_type(declaration)
+        target = self._target(cursor, stack)
+        if target is None and api.callback_arg is None:
+            target = first_handle(_call_object(cursor))
+        topics = [(topic, msg_type)]
+        if api.camera:
+            topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
+        for each_topic, each_type in topics:
+            self.facts.subscribers.append(model.SubscriberFact(
+                function=ctx.function, api=ros_api.api_label(name),
+                topic=each_topic, topic_is_literal=literal,
+                msg_type=each_type,
+                handle=target.get_usr() if target is not None else None,
+                callback=callback, location=self.location(cursor),
+                nh=self._namespace_of(cursor)))
+
+    def _on_timer(self, cursor, ctx, stack, api, name, arguments):
+        callback, _ = self._resolve_callback(
+            self._argument(arguments, api.callback_arg))
+        period = self._argument(arguments, api.period_arg)
+        self.facts.timers.append(model.TimerFact(
+            function=ctx.function, api=name, callback=callback,
+            period=_expression_text(period) if period is not None else '',
+            rate_hz=_period_rate_hz(period),
+            location=self.location(cursor)))
+
+    def _on_service(self, cursor, ctx, stack, api, name, arguments):
+        service, _ = self._topic(self._argument(arguments, api.name_arg))
+        callback, _ = self._resolve_callback(
+            self._argument(arguments, api.callback_arg))
+        self.facts.services.append(model.ServiceFact(
+            function=ctx.function, api=name, name=service,
+            callback=callback, location=self.location(cursor)))
+
+    def _on_action_server(self, cursor, ctx, stack, api, name, arguments):
+        self._action(cursor, ctx, stack, api, name, arguments, 'server')
+
+    def _on_action_client(self, cursor, ctx, stack, api, name, arguments):
+        self._action(cursor, ctx, stack, api, name, arguments, 'client')
+
+    def _action(self, cursor, ctx, stack, api, name, arguments, role):
+        action, _ = self._topic(self._argument(arguments, api.name_arg)) \
+            if api.name_arg is not None else (None, False)
+        callbacks = self._callbacks(arguments, api.callback_arg) \
+            if api.callback_arg is not None else []
+        is_registration = api.name_arg is None
+        target = first_handle(_call_object(cursor)) if is_registration \
+            else self._target(cursor, stack)
+        self.facts.actions.append(model.ActionFact(
+            function=ctx.function, api=ros_api.api_label(name), role=role,
+            name=action, callbacks=callbacks,
+            handle=target.get_usr() if target is not None else None,
+            location=self.location(cursor) if not is_registration
+            else 'registration:' + self.location(cursor)))
+
+    def _on_publish(self, cursor, ctx, stack, api, name, arguments):
+        handle = first_handle(_call_object(cursor))
+        self.facts.publish_sites.append(model.PublishSite(
+            function=ctx.function, api=name,
+            handle=handle.get_usr() if handle is not None else None,
+            location=self.location(cursor), loops=ctx.loop_ids()))
+
+    def _on_rate(self, cursor, ctx, stack, api, name, arguments):
+        target = self._target(cursor, stack)
+        if target is None:
+            return  # a temporary Rate paces nothing
+        argument = self._argument(arguments, api.period_arg)
+        rate_hz = None
+        if argument is not None:
+            if 'Duration' in argument.type.spelling:
+                rate_hz = _period_rate_hz(argument)
+            else:
+                rate_hz = evaluate_number(argument)
+        self.facts.rates.append(model.RateObject(
+            handle=target.get_usr(), rate_hz=rate_hz,
+            expression=_expression_text(argument) if argument else '',
+            location=self.location(cursor)))
+
+    def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
+        handle = first_handle(_call_object(cursor))
+        if handle is None or not ctx.loops:
+            return
+        loop_id, conditional_at_entry, loop = ctx.loops[-1]
+        if ctx.conditional != conditional_at_entry:
+            return  # a sleep that may be skipped does not pace the loop
+        declared = handle.extent.start
+        if declared.file is not None and loop.extent.start.file is not None \
+                and declared.file.name == loop.extent.start.file.name and \
+                loop.extent.start.offset <= declared.offset \
+                <= loop.extent.end.offset:
+            return  # a Rate made anew in every iteration never adapts
+        self.facts.paced_loops.append(model.PacedLoop(
+            loop=loop_id, function=ctx.function,
+            rate_handle=handle.get_usr(), location=self.location(loop),
+            sleep_location=self.location(cursor)))
+
+    def _on_sync(self, cursor, ctx, stack, api, name, arguments):
+        inputs = []
+        for argument in arguments:
+            handle = first_handle(argument)
+            if handle is not None:
+                inputs.append(handle.get_usr())
+        if name.endswith('::connectInput'):
+            target = first_handle(_call_object(cursor))
+        else:
+            target = self._target(cursor, stack)
+        self.facts.syncs.append(model.SyncFact(
+            handle=target.get_usr() if target is not None else None,
+            inputs=inputs, location=self.location(cursor)))
+
+    def _on_register_callback(self, cursor, ctx, stack, api, name,
+                              arguments):
+        callback, _ = self._resolve_callback(
+            self._argument(arguments, api.callback_arg))
+        handle = first_handle(_call_object(cursor))
+        self.facts.registrations.append(model.Registration(
+            function=ctx.function,
+            handle=handle.get_usr() if handle is not None else None,
+            callback=callback, location=self.location(cursor)))
+
+    def _on_node_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self._target(cursor, stack)
+        if target is None:
+            return
+        namespace = ''
+        written = [a for a in arguments
+                   if next(iter(a.get_tokens()), None) is not None]
+        parent = first_handle(written[0]) if written else None
+        if parent is not None:
+            namespace = 'ref:' + parent.get_usr()
+            if len(written) > 1:
+                sub, _ = self._topic(written[1])
+                namespace += '|' + (sub or '')
+        elif written:
+            namespace, _ = self._topic(written[0])
+        self.facts.node_handles.append(model.NodeHandleFact(
+            handle=target.get_usr(), namespace=namespace or ''))
+
+    def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self._target(cursor, stack)
+        if target is not None:
+            self.facts.node_handles.append(model.NodeHandleFact(
+                handle=target.get_usr(), namespace='~'))
+
+    def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self._target(cursor, stack)
+        if target is not None:
+            self.facts.node_handles.append(model.NodeHandleFact(
+                handle=target.get_usr(), namespace=''))
+
+
+class _Context:
+    """Where the walk is inside one function body."""
+
+    def __init__(self, function):
+        self.function = function
+        # (loop id, conditional depth at the loop, loop cursor)
+        self.loops = []
+        self.conditional = 0
+
+    def loop_ids(self):
+        return [loop_id for loop_id, _, _ in self.loops]
+
+
+def _unquote(literal):
+    match = re.match(r'^(?:u8|u|U|L)?"(.*)"$', literal, re.DOTALL)
+    return match.group(1) if match else literal
+
+
+def _camera_info(topic):
+    if topic is None:
+        return None
+    head, _, _ = topic.rpartition('/')
+    return f'{head}/camera_info' if head else 'camera_info'
+
+
+def _binary_operator(cursor, left):
+    end = left.extent.end.offset
+    for token in cursor.get_tokens():
+        if token.extent.start.offset >= end:
+            return token.spelling
+    return None
+
+
+_PERIOD_CLASSES = ('Duration', 'WallDuration')
+_RATE_CLASSES = ('Rate', 'WallRate')
+
+
+def _period_rate_hz(argument):
+    """Hz of a period argument (``ros::Duration(0.1)``, ``Rate(10)``, 5.0)."""
+    if argument is None:
+        return None
+    for current in [argument] + list(_walk_preorder(argument)):
+        if current.kind != CK.CALL_EXPR or current.referenced is None or \
+                current.referenced.kind != CK.CONSTRUCTOR:
+            continue
+        class_name = current.referenced.spelling
+        values = [evaluate_number(a) for a in current.get_arguments()]
+        if class_name in _PERIOD_CLASSES:
+            if len(values) == 1 and values[0]:
+                return _round(1.0 / values[0])
+            if len(values) == 2 and None not in values:
+                seconds = values[0] + values[1] * 1e-9
+                return _round(1.0 / seconds) if seconds else None
+            return None
+        if class_name in _RATE_CLASSES and len(values) == 1:
+            return _round(values[0]) if values[0] else None
+    return None
+
+
+def _round(value):
+    # 1/0.1 is 9.999999999999998: keep the rate a person would write
+    return round(value, 6) if value is not None else None

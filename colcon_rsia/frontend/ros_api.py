@@ -1,0 +1,188 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The table of ROS APIs the analysis recognises: qualified name -> role.
+
+This is data, not code. A call is recognised by the qualified name of the
+*declaration* it calls (``ros::NodeHandle::advertise``), never by the spelling
+of the object it is called on. Argument positions are 0-based and count only
+the arguments written at the call site (not the object).
+
+Sources: ``../shared/reference/ros-api.md`` (Debian ROS 1 headers, Noetic).
+"""
+
+from dataclasses import dataclass
+from typing import Optional
+
+# roles
+PUBLISHER = 'publisher'            # a call that returns a publisher handle
+SUBSCRIBER = 'subscriber'          # a call that returns a subscriber handle
+TIMER = 'timer'                    # a call that registers a periodic callback
+SERVICE = 'service'                # a call that registers a service server
+PUBLISH = 'publish'                # a call that publishes through its object
+RATE = 'rate'                      # the constructor of an adaptive-sleep object
+RATE_SLEEP = 'rate_sleep'          # the adaptive sleep itself
+DECLARED_PUBLISHER = 'declared_publisher'    # every object of the class
+DECLARED_SUBSCRIBER = 'declared_subscriber'  # every object of the class
+SYNC = 'sync'                      # a message_filters synchronizer
+REGISTER_CALLBACK = 'register_callback'      # message_filters callbacks
+ACTION_SERVER = 'action_server'
+ACTION_CLIENT = 'action_client'
+NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
+PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
+PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
+
+# special argument positions
+FIRST_STRING = 'first_string'      # the first argument of string type
+FIRST_CALLBACK = 'first_callback'  # the first argument naming a function
+
+TF_MSG = 'tf2_msgs::TFMessage'
+IMAGE_MSG = 'sensor_msgs::Image'
+CAMERA_INFO_MSG = 'sensor_msgs::CameraInfo'
+
+
+@dataclass(frozen=True)
+class Api:
+    """How one ROS API is used by the analysis."""
+
+    role: str
+    # argument holding the topic / service / action name
+    name_arg: object = None
+    # argument holding the callback
+    callback_arg: object = None
+    # fixed message type; None: from the explicit template argument or
+    # the callback's parameter
+    msg_type: Optional[str] = None
+    # topics created implicitly by the API
+    implicit_topics: tuple = ()
+    # image_transport camera APIs also create `<dirname>/camera_info`
+    camera: bool = False
+    # the argument holding a period: 'duration' or 'rate' (Hz)
+    period_arg: Optional[int] = None
+    # the public name the analysis reports for this API; default: the key
+    label: Optional[str] = None
+
+
+NH = 'ros::NodeHandle::'
+IT = 'image_transport::ImageTransport::'
+
+CALLS = {
+    # roscpp
+    NH + 'advertise': Api(PUBLISHER, name_arg=0),
+    NH + 'subscribe': Api(SUBSCRIBER, name_arg=0, callback_arg=2),
+    NH + 'createTimer': Api(TIMER, callback_arg=1, period_arg=0),
+    NH + 'createWallTimer': Api(TIMER, callback_arg=1, period_arg=0),
+    NH + 'createSteadyTimer': Api(TIMER, callback_arg=1, period_arg=0),
+    NH + 'advertiseService': Api(SERVICE, name_arg=0, callback_arg=1),
+    NH + 'NodeHandle': Api(NODE_HANDLE),
+    'ros::Publisher::publish': Api(PUBLISH),
+    'ros::Rate::Rate': Api(RATE, period_arg=0),
+    'ros::WallRate::WallRate': Api(RATE, period_arg=0),
+    'ros::Rate::sleep': Api(RATE_SLEEP),
+    'ros::WallRate::sleep': Api(RATE_SLEEP),
+    # image_transport
+    IT + 'ImageTransport': Api(NODE_HANDLE),
+    IT + 'advertise': Api(PUBLISHER, name_arg=0, msg_type=IMAGE_MSG),
+    IT + 'advertiseCamera': Api(
+        PUBLISHER, name_arg=0, msg_type=IMAGE_MSG, camera=True),
+    IT + 'subscribe': Api(
+        SUBSCRIBER, name_arg=0, callback_arg=2, msg_type=IMAGE_MSG),
+    IT + 'subscribeCamera': Api(
+        SUBSCRIBER, name_arg=0, callback_arg=2, msg_type=IMAGE_MSG,
+        camera=True),
+    'image_transport::Publisher::publish': Api(PUBLISH),
+    'image_transport::CameraPublisher::publish': Api(PUBLISH),
+    # tf / tf2_ros: the broadcasters publish through sendTransform
+    'tf::TransformBroadcaster::sendTransform': Api(PUBLISH),
+    'tf2_ros::TransformBroadcaster::sendTransform': Api(PUBLISH),
+    'tf2_ros::StaticTransformBroadcaster::sendTransform': Api(PUBLISH),
+    # message_filters
+    'message_filters::Subscriber::Subscriber': Api(
+        SUBSCRIBER, name_arg=1, label='message_filters::Subscriber'),
+    'message_filters::Subscriber::subscribe': Api(
+        SUBSCRIBER, name_arg=1, label='message_filters::Subscriber'),
+    'message_filters::Synchronizer::Synchronizer': Api(SYNC),
+    'message_filters::TimeSynchronizer::TimeSynchronizer': Api(SYNC),
+    'message_filters::Synchronizer::connectInput': Api(SYNC),
+    'message_filters::TimeSynchronizer::connectInput': Api(SYNC),
+    'message_filters::SimpleFilter::registerCallback': Api(
+        REGISTER_CALLBACK, callback_arg=0),
+    'message_filters::Synchronizer::registerCallback': Api(
+        REGISTER_CALLBACK, callback_arg=0),
+    # realtime_tools: the constructor (or init) advertises the topic
+    'realtime_tools::RealtimePublisher::RealtimePublisher': Api(
+        PUBLISHER, name_arg=1, label='realtime_tools::RealtimePublisher'),
+    'realtime_tools::RealtimePublisher::init': Api(
+        PUBLISHER, name_arg=1, label='realtime_tools::RealtimePublisher'),
+    'realtime_tools::RealtimePublisher::unlockAndPublish': Api(PUBLISH),
+    # diagnostic_updater publishes /diagnostics when updated
+    'diagnostic_updater::Updater::update': Api(PUBLISH),
+    'diagnostic_updater::Updater::force_update': Api(PUBLISH),
+    'diagnostic_updater::Updater::broadcast': Api(PUBLISH),
+    # actionlib: recorded as actions, their callbacks are roots
+    'actionlib::SimpleActionServer::SimpleActionServer': Api(
+        ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLBACK,
+        label='actionlib::SimpleActionServer'),
+    'actionlib::ActionServer::ActionServer': Api(
+        ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLBACK,
+        label='actionlib::ActionServer'),
+    'actionlib::SimpleActionServer::registerGoalCallback': Api(
+        ACTION_SERVER, callback_arg=0, label='actionlib::SimpleActionServer'),
+    'actionlib::SimpleActionServer::registerPreemptCallback': Api(
+        ACTION_SERVER, callback_arg=0, label='actionlib::SimpleActionServer'),
+    'actionlib::SimpleActionClient::SimpleActionClient': Api(
+        ACTION_CLIENT, name_arg=FIRST_STRING,
+        label='actionlib::SimpleActionClient'),
+    'actionlib::ActionClient::ActionClient': Api(
+        ACTION_CLIENT, name_arg=FIRST_STRING, label='actionlib::ActionClient'),
+    # nodelet handles
+    'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
+    'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),
+    'nodelet::Nodelet::getPrivateNodeHandle': Api(PRIVATE_HANDLE),
+    'nodelet::Nodelet::getMTPrivateNodeHandle': Api(PRIVATE_HANDLE),
+}
+
+# classes whose every object (variable, field, pointee) is a publisher or a
+# subscriber with implicit topics
+DECLARED = {
+    'tf::TransformBroadcaster': Api(
+        DECLARED_PUBLISHER, msg_type=TF_MSG, implicit_topics=('/tf',)),
+    'tf2_ros::TransformBroadcaster': Api(
+        DECLARED_PUBLISHER, msg_type=TF_MSG, implicit_topics=('/tf',)),
+    'tf2_ros::StaticTransformBroadcaster': Api(
+        DECLARED_PUBLISHER, msg_type=TF_MSG, implicit_topics=('/tf_static',)),
+    'diagnostic_updater::Updater': Api(
+        DECLARED_PUBLISHER, msg_type='diagnostic_msgs::DiagnosticArray',
+        implicit_topics=('/diagnostics',)),
+    'tf::TransformListener': Api(
+        DECLARED_SUBSCRIBER, msg_type=TF_MSG,
+        implicit_topics=('/tf', '/tf_static')),
+    'tf2_ros::TransformListener': Api(
+        DECLARED_SUBSCRIBER, msg_type=TF_MSG,
+        implicit_topics=('/tf', '/tf_static')),
+}
+
+# factory functions whose template argument names the constructed class, so
+# that `std::make_shared<realtime_tools::RealtimePublisher<M>>(nh, "t", 1)`
+# is read like the constructor it forwards to
+FORWARDING_FACTORIES = frozenset({
+    'std::make_shared', 'std::make_unique', 'std::allocate_shared',
+    'boost::make_shared', 'boost::allocate_shared',
+})
+
+# functions that are roots of a node by their name alone
+MAIN_FUNCTION = 'main'
+NODELET_INIT_METHOD = 'onInit'
+NODELET_BASE_CLASS = 'nodelet::Nodelet'
+
+
+def lookup_call(qualified_name):
+    """Return the :class:`Api` for a called declaration, or None."""
+    return CALLS.get(qualified_name)
+
+
+def api_label(qualified_name):
+    """Return the name under which an API is reported."""
+    api = CALLS.get(qualified_name) or DECLARED.get(qualified_name)
+    if api is not None and api.label:
+        return api.label
+    return qualified_name

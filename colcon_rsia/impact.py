@@ -1,0 +1,102 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Impact analysis: the paper's Algorithm 2 and the traditional one."""
+
+import difflib
+
+from colcon_rsia import model
+
+IMPACT_SCHEMA = 'colcon-rsia/impact@1'
+IMPACT_ALL_SCHEMA = 'colcon-rsia/impact-all@1'
+
+
+class UnknownNodeError(ValueError):
+    """A changed node that is not in the graph."""
+
+
+def check_changed(system, changed):
+    """Raise UnknownNodeError naming the closest known ids."""
+    known = sorted(system.instances)
+    for node_id in changed:
+        if node_id not in system.instances:
+            close = difflib.get_close_matches(node_id, known, n=5, cutoff=0.4)
+            hint = f"; closest known: {', '.join(close)}" if close else \
+                f"; known nodes: {', '.join(known[:10])}" if known else \
+                '; no node has been analysed yet'
+            raise UnknownNodeError(f"unknown node '{node_id}'{hint}")
+
+
+def _impact(system, changed, rate_aware):
+    graph = system.graph
+    changed_vertices = {('node', c) for c in changed}
+    impact = set()
+    visited = set()
+    for start in sorted(changed_vertices):
+        todo = [start]
+        while todo:
+            current = todo.pop()
+            if current in visited:
+                continue
+            visited.add(current)
+            for topic in graph.successors(current):
+                label = graph.edges[current, topic]['label']
+                # a changed node's edges are all relabelled dependent
+                if rate_aware and label == model.INDEPENDENT and \
+                        current not in changed_vertices:
+                    continue
+                for subscriber in graph.successors(topic):
+                    # reached again through a cycle: listed, not re-walked
+                    impact.add(subscriber[1])
+                    if subscriber not in visited:
+                        todo.append(subscriber)
+    return sorted(impact)
+
+
+def rate_impact(system, changed):
+    """The nodes whose publishing rate may follow a change (Algorithm 2)."""
+    return _impact(system, changed, rate_aware=True)
+
+
+def traditional_impact(system, changed):
+    """Every node reachable along data flow from the changed nodes."""
+    return _impact(system, changed, rate_aware=False)
+
+
+def impact_to_json(system, changed):
+    """The impact@1 contract (see the README)."""
+    return {
+        'schema': IMPACT_SCHEMA,
+        'changed': sorted(changed),
+        'rate_impact': rate_impact(system, changed),
+        'traditional_impact': traditional_impact(system, changed),
+    }
+
+
+def impact_all(system):
+    """Both impact sizes for every node whose change reaches another node.
+
+    Leaf nodes (traditional impact empty) are left out, as in the paper's
+    Fig. 3 and 7.
+    """
+    rows = []
+    for node_id in sorted(system.instances):
+        traditional = traditional_impact(system, [node_id])
+        if not traditional:
+            continue
+        rows.append({
+            'id': node_id,
+            'rate_impact': len(rate_impact(system, [node_id])),
+            'traditional_impact': len(traditional),
+        })
+    rate_sum = sum(r['rate_impact'] for r in rows)
+    traditional_sum = sum(r['traditional_impact'] for r in rows)
+    count = len(rows)
+    return {
+        'schema': IMPACT_ALL_SCHEMA,
+        'nodes': rows,
+        'average_rate_impact': round(rate_sum / count, 3) if count else 0.0,
+        'average_traditional_impact':
+            round(traditional_sum / count, 3) if count else 0.0,
+        'ratio': round(rate_sum / traditional_sum, 3)
+        if traditional_sum else 1.0,
+    }

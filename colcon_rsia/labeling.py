@@ -1,0 +1,252 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Algorithm 1 of the paper: label each publisher of a node.
+
+A publisher edge is *independent* of the node's incoming rates when
+
+1. the node has no inputs at all (no subscriber, tf listener, service or
+   action server): ``no_subscribers``; or
+2. every call path from a root to each of its publish sites starts at a
+   timer callback (``timer``) or passes through a loop paced by the
+   ``sleep()`` of a Rate object (``rate_loop``); both kinds: ``mixed``.
+
+Otherwise it is *dependent* (``none``). Enumerating every loop-free path is
+exponential; a path is bad exactly when it starts at a non-timer root and
+uses no paced call edge, so "some bad path exists" is a reachability
+question over the unpaced edges from the non-timer roots (a walk using only
+unpaced edges contains a loop-free path using a subset of them).
+"""
+
+from colcon_rsia import model
+from colcon_rsia.node_facts import handles_of
+from colcon_rsia.node_facts import resolve_namespace
+
+
+def find_roots(facts):
+    """Return {function id: (kind, location)} of a node's roots."""
+    roots = {}
+
+    def add(function, kind, location):
+        if function and function in facts.functions:
+            # a timer root stays a timer root only if nothing else
+            # (a subscription, a service) also calls it from outside
+            previous = roots.get(function)
+            if previous is None or previous[0] == model.ROOT_TIMER:
+                roots[function] = (kind, location)
+    for function in facts.functions.values():
+        if function.name == 'main':
+            add(function.id, model.ROOT_MAIN, function.location)
+        elif function.name.endswith('::onInit'):
+            add(function.id, model.ROOT_NODELET, function.location)
+    for timer in facts.timers:
+        add(timer.callback, model.ROOT_TIMER, timer.location)
+    for subscriber in facts.subscribers:
+        add(subscriber.callback, model.ROOT_SUBSCRIBER, subscriber.location)
+    for service in facts.services:
+        add(service.callback, model.ROOT_SERVICE, service.location)
+    for action in facts.actions:
+        for callback in action.callbacks:
+            add(callback, model.ROOT_ACTION, action.location)
+    for registration in facts.registrations:
+        add(registration.callback, model.ROOT_SUBSCRIBER,
+            registration.location)
+    called = {c.callee for c in facts.calls if c.caller in facts.functions}
+    for function in facts.functions.values():
+        if function.id not in roots and function.id not in called:
+            add(function.id, model.ROOT_ENTRY, function.location)
+    # functions reachable from no root (a cycle nobody enters) are entered
+    # from outside as far as we can tell
+    reached = _reach(roots, _edges(facts.calls))
+    for function in facts.functions.values():
+        if function.id not in reached:
+            roots[function.id] = (model.ROOT_ENTRY, function.location)
+            reached |= _reach([function.id], _edges(facts.calls))
+    return roots
+
+
+def _edges(calls, keep=None):
+    edges = {}
+    for call in calls:
+        if keep is None or keep(call):
+            edges.setdefault(call.caller, []).append(call)
+    return edges
+
+
+def _reach(starts, edges, parents=None):
+    reached = set()
+    todo = list(starts)
+    while todo:
+        current = todo.pop()
+        if current in reached:
+            continue
+        reached.add(current)
+        for call in edges.get(current, ()):
+            if call.callee not in reached:
+                if parents is not None:
+                    parents.setdefault(call.callee, call)
+                todo.append(call.callee)
+    return reached
+
+
+def has_inputs(facts):
+    """Whether anything outside drives the node (pattern 1 fails)."""
+    return bool(facts.subscribers or facts.services or any(
+        a.role == 'server' for a in facts.actions))
+
+
+def label_publishers(facts):
+    """Label every publisher of one node (see the module docstring).
+
+    :param facts: the node's :class:`colcon_rsia.node_facts.NodeFacts`
+    :returns: the labelled publishers and the roots
+    """
+    roots = find_roots(facts)
+    paced = {p.loop: p for p in facts.paced_loops}
+
+    def is_paced(loops):
+        return [paced[loop] for loop in loops if loop in paced]
+
+    all_edges = _edges(facts.calls)
+    timer_roots = [f for f, (k, _) in roots.items()
+                   if k == model.ROOT_TIMER]
+    other_roots = [f for f, (k, _) in roots.items()
+                   if k != model.ROOT_TIMER]
+    bad_parents = {}
+    unpaced_from_others = _reach(
+        other_roots, _edges(facts.calls, lambda c: not is_paced(c.loops)),
+        bad_parents)
+    from_timers = _reach(timer_roots, all_edges)
+    from_others = _reach(other_roots, all_edges)
+    callers_of = {}
+    for call in facts.calls:
+        callers_of.setdefault(call.callee, []).append(call)
+
+    driven = has_inputs(facts)
+    labelled = []
+    for publisher in facts.publishers:
+        sites = [s for s in facts.publish_sites
+                 if publisher.handle and s.handle and
+                 publisher.handle in handles_of(facts, s.handle)]
+        evidence = [model.Evidence('publish_site', s.location, s.api)
+                    for s in sites]
+        base = dict(
+            topic=publisher.topic, topic_is_literal=publisher.topic_is_literal,
+            msg_type=publisher.msg_type, api=publisher.api,
+            handle=publisher.handle_name,
+            namespace=resolve_namespace(facts, publisher.nh),
+            location=publisher.location,
+            publish_sites=sorted({s.location for s in sites}))
+        if not driven:
+            evidence.append(model.Evidence(
+                'no_subscribers', publisher.location,
+                'the node has no subscriber, service or action server'))
+            labelled.append(model.LabelledPublisher(
+                label=model.INDEPENDENT,
+                pattern=model.PATTERN_NO_SUBSCRIBERS, rate_hz=None,
+                evidence=evidence, **base))
+            continue
+        if not sites:
+            evidence.append(model.Evidence(
+                'no_publish_site', publisher.location,
+                'no publish call through this publisher was found'))
+            labelled.append(model.LabelledPublisher(
+                label=model.DEPENDENT, pattern=model.PATTERN_NONE,
+                rate_hz=None, evidence=evidence, **base))
+            continue
+        label, pattern, rates = _label_sites(
+            sites, facts, roots, is_paced, unpaced_from_others, bad_parents,
+            from_timers, from_others, callers_of, evidence)
+        rate_hz = None
+        if label == model.INDEPENDENT and len(rates) == 1:
+            rate_hz = next(iter(rates))
+        labelled.append(model.LabelledPublisher(
+            label=label, pattern=pattern, rate_hz=rate_hz,
+            evidence=evidence, **base))
+    root_list = [model.Root(facts.functions[f].name, kind, location)
+                 for f, (kind, location) in roots.items()]
+    return labelled, sorted(root_list, key=lambda r: (r.location, r.function))
+
+
+def _label_sites(sites, facts, roots, is_paced, unpaced_from_others,
+                 bad_parents, from_timers, from_others, callers_of, evidence):
+    kinds = set()
+    rates = set()
+    for site in sites:
+        site_loops = is_paced(site.loops)
+        if not site_loops and site.function in unpaced_from_others:
+            evidence.append(_bad_path(site, facts, roots, bad_parents))
+            return model.DEPENDENT, model.PATTERN_NONE, set()
+        if site.function in from_timers:
+            kinds.add(model.PATTERN_TIMER)
+            for timer in facts.timers:
+                if timer.callback and _reaches(
+                        timer.callback, site.function, facts):
+                    rates.add(timer.rate_hz)
+                    evidence.append(model.Evidence(
+                        'timer', timer.location, _timer_detail(timer, facts)))
+        if site.function in from_others or site_loops:
+            kinds.add(model.PATTERN_RATE_LOOP)
+            loops = site_loops + _paced_calls_into(
+                site.function, facts, is_paced, callers_of)
+            for loop in loops:
+                rate = facts.rates.get(loop.rate_handle)
+                rates.add(rate.rate_hz if rate is not None else None)
+                evidence.append(model.Evidence(
+                    'rate_loop', loop.location,
+                    f'paced by sleep() at {loop.sleep_location}'))
+    if kinds == {model.PATTERN_TIMER}:
+        pattern = model.PATTERN_TIMER
+    elif kinds == {model.PATTERN_RATE_LOOP}:
+        pattern = model.PATTERN_RATE_LOOP
+    else:
+        pattern = model.PATTERN_MIXED
+    return model.INDEPENDENT, pattern, rates
+
+
+def _reaches(start, target, facts):
+    return target in _reach([start], _edges(facts.calls))
+
+
+def _paced_calls_into(function, facts, is_paced, callers_of):
+    """The paced loops whose calls lead (transitively) to `function`."""
+    loops = []
+    seen = set()
+    todo = [function]
+    while todo:
+        current = todo.pop()
+        if current in seen:
+            continue
+        seen.add(current)
+        for call in callers_of.get(current, ()):
+            found = is_paced(call.loops)
+            if found:
+                loops.extend(found)
+            else:
+                todo.append(call.caller)
+    return loops
+
+
+def _timer_detail(timer, facts):
+    callback = facts.functions.get(timer.callback)
+    name = callback.name if callback else timer.callback
+    rate = f' at {timer.rate_hz:g} Hz' if timer.rate_hz else ''
+    return f'timer callback {name}{rate}'
+
+
+def _bad_path(site, facts, roots, parents):
+    """Evidence for a dependent site: one path that decides it."""
+    path = [site.location]
+    current = site.function
+    seen = set()
+    while current in parents and current not in roots and current not in seen:
+        seen.add(current)
+        call = parents[current]
+        path.append(call.location)
+        current = call.caller
+    kind, location = roots.get(current, (model.ROOT_ENTRY, '?'))
+    function = facts.functions.get(current)
+    name = function.name if function else current
+    return model.Evidence(
+        'path', location,
+        f'{kind} root {name} reaches the publish site without a timer or '
+        f'a rate loop (via {" <- ".join(path)})')

@@ -1,0 +1,405 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Plain data of the analysis, and its (de)serialisation.
+
+Two layers:
+
+* **facts** (:class:`TuFacts`): what a front end found in one translation unit
+  or Python module, keyed by function; no ROS semantics beyond the role of a
+  call. Facts are cached per translation unit.
+* **the package summary** (:class:`PackageSummary`): the nodes of a package
+  with their labelled publishers; this is what ``summary.json`` holds and
+  everything after the analysis (graph, impact, reports) reads.
+
+Locations are ``"path/relative/to/package:line"`` strings.
+"""
+
+from dataclasses import asdict
+from dataclasses import dataclass
+from dataclasses import field
+from dataclasses import fields
+from typing import List
+from typing import Optional
+
+SUMMARY_SCHEMA = 'colcon-rsia/summary@1'
+FACTS_SCHEMA = 'colcon-rsia/facts@1'
+
+# labels and patterns of a publisher edge (the paper's Algorithm 1)
+INDEPENDENT = 'independent'
+DEPENDENT = 'dependent'
+PATTERN_NO_SUBSCRIBERS = 'no_subscribers'
+PATTERN_TIMER = 'timer'
+PATTERN_RATE_LOOP = 'rate_loop'
+PATTERN_MIXED = 'mixed'
+PATTERN_NONE = 'none'
+
+# root kinds
+ROOT_MAIN = 'main'
+ROOT_NODELET = 'nodelet'
+ROOT_SUBSCRIBER = 'subscriber'
+ROOT_TIMER = 'timer'
+ROOT_SERVICE = 'service'
+ROOT_ACTION = 'action'
+ROOT_ENTRY = 'entry'  # a function nobody calls: entered from outside
+
+
+@dataclass
+class Function:
+    """A function, method, constructor or lambda with a body."""
+
+    id: str            # USR; lambdas: lambda@<file>:<line>:<col>
+    name: str          # qualified name; lambdas: lambda@<file>:<line>
+    location: str
+    class_id: Optional[str] = None  # USR of the enclosing class
+    params: List[str] = field(default_factory=list)  # USRs, in order
+
+
+@dataclass
+class ParamBinding:
+    """A handle passed as argument `index` of a function (call or bind)."""
+
+    callee: str
+    index: int
+    handle: str
+
+
+@dataclass
+class Call:
+    """A call edge; `kind` is 'call' or 'ref' (address taken, called later)."""
+
+    caller: str
+    callee: str
+    location: str
+    loops: List[str] = field(default_factory=list)
+    kind: str = 'call'
+
+
+@dataclass
+class PublisherFact:
+    """A publisher object created in user code."""
+
+    function: Optional[str]
+    api: str
+    topic: Optional[str]          # as written: the literal, else the expression
+    topic_is_literal: bool
+    msg_type: Optional[str]
+    handle: Optional[str]         # USR of the variable/field holding it
+    handle_name: Optional[str]
+    location: str
+    class_id: Optional[str] = None
+    nh: Optional[str] = None      # USR of the NodeHandle used, or a namespace marker
+
+
+@dataclass
+class SubscriberFact:
+    """A subscription created in user code."""
+
+    function: Optional[str]
+    api: str
+    topic: Optional[str]
+    topic_is_literal: bool
+    msg_type: Optional[str]
+    handle: Optional[str]
+    callback: Optional[str]       # function id
+    location: str
+    class_id: Optional[str] = None
+    nh: Optional[str] = None
+
+
+@dataclass
+class TimerFact:
+    """A periodic callback registration."""
+
+    function: str
+    api: str
+    callback: Optional[str]
+    period: str                   # the period/rate expression as written
+    rate_hz: Optional[float]
+    location: str
+
+
+@dataclass
+class ServiceFact:
+    """A service server."""
+
+    function: str
+    api: str
+    name: Optional[str]
+    callback: Optional[str]
+    location: str
+
+
+@dataclass
+class ActionFact:
+    """An action server or client, or a callback registered on one."""
+
+    function: Optional[str]
+    api: str
+    role: str                     # server | client
+    name: Optional[str]
+    callbacks: List[str]
+    handle: Optional[str]
+    location: str
+
+
+@dataclass
+class PublishSite:
+    """A call that publishes through a handle."""
+
+    function: str
+    api: str
+    handle: Optional[str]
+    location: str
+    loops: List[str] = field(default_factory=list)
+
+
+@dataclass
+class RateObject:
+    """An adaptive-sleep object (``ros::Rate``) and its rate when constant."""
+
+    handle: str
+    rate_hz: Optional[float]
+    expression: str
+    location: str
+
+
+@dataclass
+class PacedLoop:
+    """A loop whose every iteration runs the sleep() of a rate object."""
+
+    loop: str
+    function: str
+    rate_handle: str
+    location: str                 # of the loop
+    sleep_location: str
+
+
+@dataclass
+class SyncFact:
+    """A message_filters synchronizer and the handles it takes as inputs."""
+
+    handle: Optional[str]
+    inputs: List[str]
+    location: str
+
+
+@dataclass
+class Registration:
+    """A message_filters callback registration on a handle."""
+
+    function: str
+    handle: Optional[str]
+    callback: Optional[str]
+    location: str
+
+
+@dataclass
+class NodeHandleFact:
+    """The namespace a NodeHandle variable/field was created with."""
+
+    handle: str
+    namespace: str                # '' node ns, '~' private, or as written
+
+
+@dataclass
+class TuFacts:
+    """Everything a front end found in one translation unit."""
+
+    source: str
+    functions: List[Function] = field(default_factory=list)
+    calls: List[Call] = field(default_factory=list)
+    publishers: List[PublisherFact] = field(default_factory=list)
+    subscribers: List[SubscriberFact] = field(default_factory=list)
+    timers: List[TimerFact] = field(default_factory=list)
+    services: List[ServiceFact] = field(default_factory=list)
+    actions: List[ActionFact] = field(default_factory=list)
+    publish_sites: List[PublishSite] = field(default_factory=list)
+    rates: List[RateObject] = field(default_factory=list)
+    paced_loops: List[PacedLoop] = field(default_factory=list)
+    syncs: List[SyncFact] = field(default_factory=list)
+    registrations: List[Registration] = field(default_factory=list)
+    node_handles: List[NodeHandleFact] = field(default_factory=list)
+    bindings: List[ParamBinding] = field(default_factory=list)
+    plugin_exports: List[List[str]] = field(default_factory=list)
+    diagnostics: List[str] = field(default_factory=list)
+
+    def to_dict(self):  # noqa: D102
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data):  # noqa: D102
+        types = {
+            'functions': Function, 'calls': Call,
+            'publishers': PublisherFact, 'subscribers': SubscriberFact,
+            'timers': TimerFact, 'services': ServiceFact,
+            'actions': ActionFact, 'publish_sites': PublishSite,
+            'rates': RateObject, 'paced_loops': PacedLoop,
+            'syncs': SyncFact, 'registrations': Registration,
+            'node_handles': NodeHandleFact, 'bindings': ParamBinding,
+        }
+        kwargs = {}
+        for f in fields(cls):
+            value = data.get(f.name, [] if f.name != 'source' else '')
+            if f.name in types:
+                value = [types[f.name](**item) for item in value]
+            kwargs[f.name] = value
+        return cls(**kwargs)
+
+    def extend(self, other):
+        """Append all facts of another unit (duplicates removed later)."""
+        for f in fields(self):
+            if f.name != 'source':
+                getattr(self, f.name).extend(getattr(other, f.name))
+
+
+# --- the package summary (summary.json) -----------------------------------
+
+@dataclass
+class Evidence:
+    """Why a label was given: a kind and a location."""
+
+    kind: str      # publish_site | timer | rate_loop | subscriber | path ...
+    location: str
+    detail: str = ''
+
+
+@dataclass
+class LabelledPublisher:
+    """A publisher of a node with its rate label."""
+
+    topic: Optional[str]
+    topic_is_literal: bool
+    msg_type: Optional[str]
+    api: str
+    handle: Optional[str]
+    namespace: Optional[str]
+    location: str
+    label: str
+    pattern: str
+    rate_hz: Optional[float]
+    publish_sites: List[str] = field(default_factory=list)
+    evidence: List[Evidence] = field(default_factory=list)
+
+
+@dataclass
+class NodeSubscriber:
+    """A subscription of a node."""
+
+    topic: Optional[str]
+    topic_is_literal: bool
+    msg_type: Optional[str]
+    api: str
+    callback: Optional[str]
+    namespace: Optional[str]
+    location: str
+
+
+@dataclass
+class NodeTimer:
+    """A timer of a node."""
+
+    api: str
+    callback: Optional[str]
+    period: str
+    rate_hz: Optional[float]
+    location: str
+
+
+@dataclass
+class NodeService:
+    """A service server of a node."""
+
+    name: Optional[str]
+    api: str
+    callback: Optional[str]
+    location: str
+
+
+@dataclass
+class NodeAction:
+    """An action server or client of a node."""
+
+    name: Optional[str]
+    api: str
+    role: str
+    callbacks: List[str]
+    location: str
+
+
+@dataclass
+class Root:
+    """Where a call path of the node starts."""
+
+    function: str
+    kind: str
+    location: str
+
+
+@dataclass
+class Node:
+    """One node (executable or nodelet) with its labelled facts."""
+
+    id: str
+    package: str
+    executable: str
+    kind: str                      # executable | nodelet
+    sources: List[str] = field(default_factory=list)
+    publishers: List[LabelledPublisher] = field(default_factory=list)
+    subscribers: List[NodeSubscriber] = field(default_factory=list)
+    timers: List[NodeTimer] = field(default_factory=list)
+    services: List[NodeService] = field(default_factory=list)
+    actions: List[NodeAction] = field(default_factory=list)
+    roots: List[Root] = field(default_factory=list)
+
+
+@dataclass
+class PackageSummary:
+    """The analysis result of one package: the content of summary.json."""
+
+    package: str
+    path: str
+    tool_version: str
+    header_mode: str = 'exact'
+    nodes: List[Node] = field(default_factory=list)
+    diagnostics: List[str] = field(default_factory=list)
+    seconds: float = 0.0
+    schema: str = SUMMARY_SCHEMA
+
+    def to_dict(self):  # noqa: D102
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data):
+        """Build a summary from its dict; raise ValueError when malformed."""
+        if data.get('schema') != SUMMARY_SCHEMA:
+            raise ValueError(
+                f"unsupported summary schema {data.get('schema')!r} "
+                f'(this version reads {SUMMARY_SCHEMA!r})')
+        try:
+            nodes = [_node_from_dict(n) for n in data['nodes']]
+            return cls(
+                package=data['package'], path=data['path'],
+                tool_version=data['tool_version'],
+                header_mode=data.get('header_mode', 'exact'),
+                nodes=nodes, diagnostics=list(data.get('diagnostics', [])),
+                seconds=float(data.get('seconds', 0.0)))
+        except (KeyError, TypeError, AttributeError) as e:
+            raise ValueError(f'malformed summary: {e!r}') from None
+
+
+def _node_from_dict(data):
+    publishers = []
+    for p in data.get('publishers', []):
+        p = dict(p)
+        p['evidence'] = [Evidence(**e) for e in p.get('evidence', [])]
+        publishers.append(LabelledPublisher(**p))
+    return Node(
+        id=data['id'], package=data['package'],
+        executable=data['executable'], kind=data['kind'],
+        sources=list(data.get('sources', [])),
+        publishers=publishers,
+        subscribers=[NodeSubscriber(**s) for s in data.get('subscribers', [])],
+        timers=[NodeTimer(**t) for t in data.get('timers', [])],
+        services=[NodeService(**s) for s in data.get('services', [])],
+        actions=[NodeAction(**a) for a in data.get('actions', [])],
+        roots=[Root(**r) for r in data.get('roots', [])])

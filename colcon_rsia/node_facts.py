@@ -1,0 +1,206 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The facts of one node: the functions it runs and what they do.
+
+An executable runs every function of its own translation units and whatever
+they call in the package's libraries; a nodelet runs the methods of its
+class and whatever they call. Facts of all the node's TUs are merged (by
+function id, which is stable across TUs) before labelling.
+"""
+
+from dataclasses import asdict
+from dataclasses import dataclass
+from dataclasses import field
+from dataclasses import replace
+from typing import Dict
+from typing import List
+
+from colcon_rsia import model
+
+
+@dataclass
+class NodeFacts:
+    """Facts restricted to the functions one node runs."""
+
+    functions: Dict[str, model.Function] = field(default_factory=dict)
+    calls: List[model.Call] = field(default_factory=list)
+    publishers: List[model.PublisherFact] = field(default_factory=list)
+    subscribers: List[model.SubscriberFact] = field(default_factory=list)
+    timers: List[model.TimerFact] = field(default_factory=list)
+    services: List[model.ServiceFact] = field(default_factory=list)
+    actions: List[model.ActionFact] = field(default_factory=list)
+    publish_sites: List[model.PublishSite] = field(default_factory=list)
+    paced_loops: List[model.PacedLoop] = field(default_factory=list)
+    registrations: List[model.Registration] = field(default_factory=list)
+    rates: Dict[str, model.RateObject] = field(default_factory=dict)
+    syncs: List[model.SyncFact] = field(default_factory=list)
+    namespaces: Dict[str, str] = field(default_factory=dict)
+    # handle USR -> the handles it may stand for (parameters bound by
+    # calls and binds)
+    aliases: Dict[str, set] = field(default_factory=dict)
+
+
+def unique(items):
+    """Drop repeated facts (a header's functions appear in every TU)."""
+    seen = set()
+    result = []
+    for item in items:
+        key = repr(asdict(item))
+        if key not in seen:
+            seen.add(key)
+            result.append(item)
+    return result
+
+
+def merge_facts(units):
+    """Merge the facts of several translation units into one."""
+    merged = model.TuFacts(source='')
+    for unit in units:
+        merged.extend(unit)
+    return merged
+
+
+def _callbacks_registered_by(facts):
+    """{function id: [callback ids it registers]}."""
+    registered = {}
+
+    def add(function, callbacks):
+        for callback in callbacks:
+            if function and callback:
+                registered.setdefault(function, []).append(callback)
+    for fact in facts.subscribers:
+        add(fact.function, [fact.callback])
+    for fact in facts.timers + facts.services:
+        add(fact.function, [fact.callback])
+    for fact in facts.actions:
+        add(fact.function, fact.callbacks)
+    for fact in facts.registrations:
+        add(fact.function, [fact.callback])
+    return registered
+
+
+def select_functions(facts, seeds):
+    """All functions reachable from `seeds` by calls and registrations."""
+    edges = {}
+    for call in facts.calls:
+        edges.setdefault(call.caller, []).append(call.callee)
+    for function, callbacks in _callbacks_registered_by(facts).items():
+        edges.setdefault(function, []).extend(callbacks)
+    selected = set()
+    todo = list(seeds)
+    while todo:
+        current = todo.pop()
+        if current in selected:
+            continue
+        selected.add(current)
+        todo.extend(edges.get(current, ()))
+    return selected
+
+
+def node_facts(facts, function_ids):
+    """Restrict merged package facts to the functions of one node."""
+    functions = {}
+    for function in facts.functions:
+        if function.id in function_ids:
+            functions.setdefault(function.id, function)
+    classes = {f.class_id for f in functions.values() if f.class_id}
+
+    def owned(fact):
+        if fact.function is not None:
+            return fact.function in functions
+        return getattr(fact, 'class_id', None) in classes
+
+    result = NodeFacts(functions=functions)
+    result.calls = unique(
+        c for c in facts.calls if c.caller in functions)
+    result.publishers = unique(p for p in facts.publishers if owned(p))
+    result.subscribers = unique(s for s in facts.subscribers if owned(s))
+    result.timers = unique(t for t in facts.timers if owned(t))
+    result.services = unique(s for s in facts.services if owned(s))
+    result.actions = unique(a for a in facts.actions if owned(a))
+    result.publish_sites = unique(
+        s for s in facts.publish_sites if s.function in functions)
+    result.paced_loops = unique(
+        p for p in facts.paced_loops if p.function in functions)
+    result.registrations = unique(
+        r for r in facts.registrations if r.function in functions)
+    result.rates = {r.handle: r for r in facts.rates}
+    result.syncs = unique(facts.syncs)
+    result.namespaces = {h.handle: h.namespace for h in facts.node_handles}
+    result.aliases = _parameter_aliases(functions, facts.bindings)
+    _attach_filter_callbacks(result)
+    return result
+
+
+def _parameter_aliases(functions, bindings):
+    """{parameter USR: handles passed to it}, through chains of calls."""
+    bound = {}
+    for binding in bindings:
+        function = functions.get(binding.callee)
+        if function is None or binding.index >= len(function.params):
+            continue
+        bound.setdefault(function.params[binding.index], set()).add(
+            binding.handle)
+    aliases = {}
+    for param in bound:
+        seen = set()
+        todo = [param]
+        while todo:
+            current = todo.pop()
+            for handle in bound.get(current, ()):
+                if handle not in seen:
+                    seen.add(handle)
+                    todo.append(handle)
+        aliases[param] = seen
+    return aliases
+
+
+def handles_of(facts, handle):
+    """The handle itself and every handle a parameter may stand for."""
+    return {handle} | facts.aliases.get(handle, set())
+
+
+def _attach_filter_callbacks(facts):
+    """message_filters subscribers get the callbacks registered on them.
+
+    The callback is registered on the subscriber itself or on a
+    synchronizer that takes the subscriber as one of its inputs.
+    """
+    by_handle = {}
+    for registration in facts.registrations:
+        if registration.handle and registration.callback:
+            by_handle.setdefault(registration.handle, []).append(
+                registration.callback)
+    for sync in facts.syncs:
+        for callback in by_handle.get(sync.handle, []):
+            for handle in sync.inputs:
+                by_handle.setdefault(handle, []).append(callback)
+    # copies: the same fact object may belong to several nodes
+    facts.subscribers = [
+        replace(s, callback=sorted(by_handle[s.handle])[0])
+        if s.callback is None and s.handle in by_handle else s
+        for s in facts.subscribers]
+
+
+def resolve_namespace(facts, marker, depth=0):
+    """The namespace a NodeHandle marker stands for ('' when unknown).
+
+    A marker is '' (node namespace), '~' (private), a namespace as
+    written, the USR of a NodeHandle variable, or 'ref:<usr>|<sub>'.
+    """
+    # a handle may be built from another; a short chain is enough
+    if marker is None or depth > 8:
+        return ''
+    if marker.startswith('ref:'):
+        parent, _, sub = marker[4:].partition('|')
+        base = resolve_namespace(facts, parent, depth + 1)
+        if not sub:
+            return base
+        if sub.startswith('/') or not base:
+            return sub
+        return f'{base}/{sub}'
+    if marker in facts.namespaces:
+        return resolve_namespace(facts, facts.namespaces[marker], depth + 1)
+    if marker.startswith('c:'):
+        return ''  # a handle whose construction we did not see
+    return marker

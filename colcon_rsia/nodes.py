@@ -1,0 +1,159 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Which sources make which node.
+
+C++ executables come from the CMake file-API codemodel that colcon-cmake asks
+CMake for (``build/<pkg>/.cmake/api/v1/reply``), else from ``add_executable``
+in ``CMakeLists.txt``. Nodelets come from the plugin XML exported in
+``package.xml`` and the ``PLUGINLIB_EXPORT_CLASS`` lines of the sources.
+"""
+
+from dataclasses import dataclass
+from dataclasses import field
+import glob
+import json
+import os
+import re
+from typing import List
+
+import defusedxml.ElementTree as ElementTree
+
+NODELET_BASE_CLASS = 'nodelet::Nodelet'
+
+
+@dataclass
+class NodeSpec:
+    """One node of a package before its facts are known."""
+
+    executable: str
+    kind: str                       # executable | nodelet
+    sources: List[str] = field(default_factory=list)  # absolute paths
+    class_name: str = ''            # nodelets: the C++ class
+
+
+def find_executables(*, package_path, build_base):
+    """Return {executable name: [absolute source paths]} of a package."""
+    executables = _executables_from_codemodel(package_path, build_base)
+    if executables is None:
+        executables = _executables_from_cmakelists(package_path)
+    return executables
+
+
+def _executables_from_codemodel(package_path, build_base):
+    indexes = sorted(glob.glob(os.path.join(
+        build_base, '.cmake', 'api', 'v1', 'reply', 'index-*.json')))
+    if not indexes:
+        return None
+    reply_dir = os.path.dirname(indexes[-1])
+    try:
+        with open(indexes[-1]) as h:
+            index = json.load(h)
+        codemodel_file = None
+        for client in index.get('reply', {}).values():
+            if isinstance(client, dict) and 'codemodel-v2' in client:
+                codemodel_file = client['codemodel-v2']['jsonFile']
+        if codemodel_file is None:
+            return None
+        with open(os.path.join(reply_dir, codemodel_file)) as h:
+            codemodel = json.load(h)
+        source_dir = codemodel['paths']['source']
+        targets = {}
+        for configuration in codemodel['configurations'][:1]:
+            for target in configuration['targets']:
+                with open(os.path.join(reply_dir, target['jsonFile'])) as h:
+                    targets[target['id']] = json.load(h)
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    executables = {}
+    for target in targets.values():
+        if target.get('type') != 'EXECUTABLE':
+            continue
+        sources = [
+            os.path.normpath(os.path.join(source_dir, s['path']))
+            for s in target.get('sources', []) if 'path' in s]
+        sources = [s for s in sources if _is_cxx_source(s)]
+        if not sources:
+            continue
+        name = target.get('nameOnDisk') or target['name']
+        executables[name] = sources
+    return executables
+
+
+_ADD_EXECUTABLE = re.compile(r'add_executable\s*\(([^)]*)\)', re.IGNORECASE)
+
+
+def _executables_from_cmakelists(package_path):
+    path = os.path.join(package_path, 'CMakeLists.txt')
+    try:
+        with open(path, encoding='utf-8', errors='replace') as h:
+            text = h.read()
+    except OSError:
+        return {}
+    text = re.sub(r'#[^\n]*', '', text)
+    project = re.search(r'project\s*\(\s*([\w-]+)', text, re.IGNORECASE)
+    variables = {'PROJECT_NAME': project.group(1) if project else ''}
+    executables = {}
+    for match in _ADD_EXECUTABLE.finditer(text):
+        words = [_substitute(w, variables) for w in match.group(1).split()]
+        if not words or words[0] in ('IMPORTED', 'ALIAS'):
+            continue
+        sources = [
+            os.path.normpath(os.path.join(package_path, w))
+            for w in words[1:] if _is_cxx_source(w)]
+        if sources:
+            executables[words[0]] = sources
+    return executables
+
+
+def _substitute(word, variables):
+    return re.sub(
+        r'\$\{(\w+)\}', lambda m: variables.get(m.group(1), m.group(0)), word)
+
+
+def _is_cxx_source(path):
+    return os.path.splitext(path)[1].lower() in (
+        '.cpp', '.cc', '.cxx', '.c++', '.c')
+
+
+def find_nodelets(*, package_path, exported_classes):
+    """Return {plugin name: class name} of the package's nodelets.
+
+    :param exported_classes: (class, base class) pairs found in the sources
+    """
+    nodelet_classes = {
+        c.lstrip(':') for c, base in exported_classes
+        if base.lstrip(':') == NODELET_BASE_CLASS}
+    declared = {}
+    for xml_path in _plugin_xml_files(package_path):
+        try:
+            root = ElementTree.parse(xml_path).getroot()
+        except (OSError, ElementTree.ParseError, ValueError):
+            continue
+        for element in root.iter('class'):
+            base = element.get('base_class_type', '').lstrip(':')
+            class_type = element.get('type', '').lstrip(':')
+            name = element.get('name') or class_type
+            if base == NODELET_BASE_CLASS and class_type:
+                declared[name] = class_type
+    # a class exported in code but missing from the XML still runs as a
+    # nodelet; name it by its class so it is not lost
+    known = set(declared.values())
+    for class_name in sorted(nodelet_classes - known):
+        declared[class_name] = class_name
+    return declared
+
+
+def _plugin_xml_files(package_path):
+    manifest = os.path.join(package_path, 'package.xml')
+    try:
+        root = ElementTree.parse(manifest).getroot()
+    except (OSError, ElementTree.ParseError, ValueError):
+        return []
+    files = []
+    for export in root.iter('export'):
+        for element in export:
+            plugin = element.get('plugin')
+            if plugin:
+                files.append(os.path.join(
+                    package_path, plugin.replace('${prefix}', '').lstrip('/')))
+    return files

@@ -1,0 +1,129 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Run the analysis of one package and say how it went, never raising.
+
+Shared by the event handler and ``colcon rsia analyze`` so that both
+analyse, report and fail the same way.
+"""
+
+import ast
+from dataclasses import dataclass
+import os
+import re
+import traceback
+from typing import Optional
+
+from colcon_rsia.analysis import AnalysisError
+from colcon_rsia.analysis import analyze_package
+from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
+from colcon_rsia.model import INDEPENDENT
+from colcon_rsia.model import PackageSummary
+
+# package types whose build produces a compile database
+CPP_PACKAGE_TYPES = frozenset({
+    'cmake', 'ros.catkin', 'ros.cmake', 'ros.ament_cmake'})
+
+EXPORT_FLAG = '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'
+
+
+@dataclass
+class Outcome:
+    """The result of analysing one package."""
+
+    package: str
+    summary: Optional[PackageSummary] = None
+    warning: Optional[str] = None   # the package was not analysed, and why
+    error: Optional[str] = None     # the analysis failed, and why
+    # a package of a kind this version does not analyse (nothing to say
+    # during a build)
+    skipped: bool = False
+
+    def line(self):
+        """One line for the console."""
+        if self.summary is not None:
+            return summary_line(self.summary)
+        if self.warning is not None:
+            return f'rsia: {self.package}: {self.warning}'
+        return f'rsia: {self.package}: analysis failed: {self.error}'
+
+
+def summary_line(summary):
+    """``rsia: pkg: 2 nodes, 5 publishers (3 independent, 2 dependent)``."""
+    publishers = [p for n in summary.nodes for p in n.publishers]
+    independent = sum(1 for p in publishers if p.label == INDEPENDENT)
+    line = (
+        f'rsia: {summary.package}: {len(summary.nodes)} nodes, '
+        f'{len(publishers)} publishers ({independent} independent, '
+        f'{len(publishers) - independent} dependent) '
+        f'in {summary.seconds:.1f}s')
+    if summary.diagnostics:
+        line += (f'; {len(summary.diagnostics)} problems, first: '
+                 f'{summary.diagnostics[0]}')
+    return line
+
+
+def missing_compile_db_message(cmake_args):
+    """Tell how to get a compile database, given the package's cmake args."""
+    if cmake_args and any(
+            a.startswith('-DCMAKE_EXPORT_COMPILE_COMMANDS') for a in cmake_args):
+        return (
+            f'no {COMPILE_DB_FILENAME} although the CMake arguments ask for '
+            'it (the generator may not support it: use Makefiles or Ninja); '
+            'not analysed')
+    return (
+        f'no {COMPILE_DB_FILENAME}; not analysed. Build with '
+        f"'--cmake-args {EXPORT_FLAG}', or the 'compile-commands' mixin "
+        "('--mixin compile-commands'), or add the flag to the 'build' "
+        'cmake-args of your colcon defaults.yaml')
+
+
+def exports_compile_commands(build_base):
+    """Whether the package's CMake cache asks for compile_commands.json."""
+    try:
+        with open(os.path.join(build_base, 'CMakeCache.txt'),
+                  encoding='utf-8', errors='replace') as h:
+            text = h.read()
+    except OSError:
+        return False
+    match = re.search(
+        r'^CMAKE_EXPORT_COMPILE_COMMANDS(?::\w+)?=(\S*)', text, re.MULTILINE)
+    return bool(match) and match.group(1).upper() in ('ON', 'TRUE', '1', 'YES')
+
+
+def recorded_cmake_args(build_base):
+    """The CMake arguments colcon-cmake recorded for the last configure."""
+    try:
+        with open(os.path.join(build_base, 'cmake_args.last')) as h:
+            value = ast.literal_eval(h.read())
+    except (OSError, ValueError, SyntaxError):
+        return None
+    return value if isinstance(value, list) else None
+
+
+def analyze(*, name, package_type, path, build_base, cmake_args=None,
+            jobs=None):
+    """Analyse one package; return an :class:`Outcome`, never raise."""
+    if package_type not in CPP_PACKAGE_TYPES:
+        return Outcome(
+            name, warning=f"package type '{package_type}' is not analysed "
+                          'by this version; skipped', skipped=True)
+    has_database = os.path.isfile(
+        os.path.join(build_base, COMPILE_DB_FILENAME))
+    if not has_database and not exports_compile_commands(build_base):
+        if cmake_args is None:
+            cmake_args = recorded_cmake_args(build_base)
+        return Outcome(name, warning=missing_compile_db_message(cmake_args))
+    try:
+        # CMake asked for a database but wrote none: nothing is compiled
+        # (a header-only package), so the package has no nodes
+        summary = analyze_package(
+            name=name, path=path, build_base=build_base, jobs=jobs,
+            nothing_compiled=not has_database)
+    except AnalysisError as e:
+        return Outcome(name, error=str(e))
+    except Exception as e:  # noqa: B902
+        # a bug of ours must never fail the user's build: say it and go on
+        detail = traceback.format_exc().strip().splitlines()[-1]
+        return Outcome(name, error=f'internal error ({type(e).__name__}: '
+                                   f'{detail}); please report it')
+    return Outcome(name, summary=summary)

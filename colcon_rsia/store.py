@@ -1,0 +1,95 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Summary files under the build base: paths, atomic writes, reading."""
+
+import json
+import os
+import tempfile
+
+from colcon_rsia.model import PackageSummary
+
+RSIA_DIRNAME = 'rsia'
+SUMMARY_FILENAME = 'summary.json'
+CACHE_DIRNAME = 'cache'
+
+
+def summary_path(package_build_base):
+    """Return the summary path of a package's build directory."""
+    return os.path.join(package_build_base, RSIA_DIRNAME, SUMMARY_FILENAME)
+
+
+def cache_dir(package_build_base):
+    """Return the per-TU cache directory of a package's build directory."""
+    return os.path.join(package_build_base, RSIA_DIRNAME, CACHE_DIRNAME)
+
+
+def write_json_atomically(path, data):
+    """Write JSON so that readers see the old file or the new, never half.
+
+    A temp file in the same directory is renamed over the target; a build
+    killed mid-write leaves at most a stray temp file.
+    """
+    directory = os.path.dirname(path)
+    os.makedirs(directory, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(
+        dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
+    try:
+        with os.fdopen(fd, 'w', encoding='utf-8') as h:
+            json.dump(data, h, indent=1, sort_keys=True)
+            h.write('\n')
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def write_summary(package_build_base, summary):
+    """Store a package summary; return its path."""
+    path = summary_path(package_build_base)
+    write_json_atomically(path, summary.to_dict())
+    return path
+
+
+class SummaryError(RuntimeError):
+    """A summary file that cannot be used."""
+
+
+def read_summary(path):
+    """Read one summary file.
+
+    :raises SummaryError: with one sentence naming the file and the problem
+    """
+    try:
+        with open(path, encoding='utf-8') as h:
+            data = json.load(h)
+    except FileNotFoundError:
+        raise SummaryError(f"no summary at '{path}'")
+    except (OSError, ValueError) as e:
+        raise SummaryError(
+            f"corrupted summary '{path}' ({e}); re-run "
+            "'colcon rsia analyze' for its package")
+    if not isinstance(data, dict):
+        raise SummaryError(f"corrupted summary '{path}': not an object")
+    try:
+        return PackageSummary.from_dict(data)
+    except ValueError as e:
+        raise SummaryError(
+            f"summary '{path}' cannot be used: {e}; re-run "
+            "'colcon rsia analyze' for its package")
+
+
+def find_summaries(build_base):
+    """Return {package name: summary path} of every analysed package."""
+    found = {}
+    try:
+        names = sorted(os.listdir(build_base))
+    except OSError:
+        return found
+    for name in names:
+        path = summary_path(os.path.join(build_base, name))
+        if os.path.isfile(path):
+            found[name] = path
+    return found

@@ -1,0 +1,50 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+import os
+import time
+
+from colcon_core.logging import colcon_logger
+from colcon_core.package_selection import get_packages
+from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.runner import analyze
+from colcon_rsia.subverb import add_workspace_arguments
+from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+
+logger = colcon_logger.getChild(__name__)
+
+
+class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
+    """(Re)analyse the selected packages from their compile databases."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def add_arguments(self, *, parser):  # noqa: D102
+        add_workspace_arguments(parser)
+        parser.add_argument(
+            '--jobs', type=int, default=None,
+            help='Translation units parsed in parallel (default: the number '
+                 'of CPUs)')
+
+    def main(self, *, context):  # noqa: D102
+        args = context.args
+        decorators = [d for d in get_packages(args) if d.selected]
+        build_base = os.path.abspath(args.build_base)
+        started = time.monotonic()
+        analysed = 0
+        for number, decorator in enumerate(decorators, start=1):
+            pkg = decorator.descriptor
+            print(f'[{number}/{len(decorators)}] analysing {pkg.name} ...',
+                  flush=True)
+            outcome = analyze(
+                name=pkg.name, package_type=pkg.type, path=str(pkg.path),
+                build_base=os.path.join(build_base, pkg.name),
+                jobs=args.jobs)
+            print(outcome.line(), flush=True)
+            analysed += outcome.summary is not None
+        print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
+              f'{time.monotonic() - started:.1f}s', flush=True)
+        return 0

@@ -1,0 +1,42 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+import json
+
+from colcon_core.logging import colcon_logger
+from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.graph import build_graph
+from colcon_rsia.graph import graph_to_dot
+from colcon_rsia.graph import graph_to_json
+from colcon_rsia.graph import graph_to_text
+from colcon_rsia.subverb import add_workspace_arguments
+from colcon_rsia.subverb import load_selected_summaries
+from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+
+logger = colcon_logger.getChild(__name__)
+
+
+class GraphRsiaSubverb(RsiaSubverbExtensionPoint):
+    """Print the rate dependency graph of the analysed packages."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def add_arguments(self, *, parser):  # noqa: D102
+        add_workspace_arguments(parser)
+        parser.add_argument(
+            '--format', choices=('text', 'json', 'dot'), default='text',
+            help='Output format (default: text)')
+
+    def main(self, *, context):  # noqa: D102
+        args = context.args
+        system = build_graph(load_selected_summaries(args, logger))
+        if args.format == 'json':
+            print(json.dumps(graph_to_json(system), indent=2, sort_keys=True))
+        elif args.format == 'dot':
+            print(graph_to_dot(system), end='')
+        else:
+            print(graph_to_text(system), end='')
+        return 0

@@ -1,0 +1,100 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Session fixtures: each test workspace is compiled once per test run."""
+
+from dataclasses import dataclass
+import json
+import os
+from pathlib import Path
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+WORKSPACES = REPO / 'test_workspaces'
+CMAKE_ARGS = [
+    '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON',
+    # catkin needs Debian's python (its `catkin` module), not a venv's
+    '-DPYTHON_EXECUTABLE=/usr/bin/python3',
+]
+# a whole workspace build must never take longer than this in CI
+BUILD_TIMEOUT_S = 1500
+
+
+def colcon_executable():
+    """The colcon of the interpreter running the tests."""
+    candidate = Path(sys.executable).parent / 'colcon'
+    if candidate.exists():
+        return str(candidate)
+    return shutil.which('colcon')
+
+
+@dataclass
+class Workspace:
+    """A built test workspace."""
+
+    root: Path
+    src: Path
+    returncode: int
+    stdout: str
+    stderr: str
+
+    @property
+    def build_base(self):  # noqa: D102
+        return self.root / 'build'
+
+    def summary(self, package):  # noqa: D102
+        path = self.build_base / package / 'rsia' / 'summary.json'
+        return json.loads(path.read_text())
+
+    def colcon(self, *args, check=False):
+        """Run colcon in the workspace root; return the completed process."""
+        return run_colcon(list(args), cwd=self.root, check=check)
+
+
+def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S):
+    env = dict(os.environ)
+    # no user mixins or defaults may change what the tests build
+    env['COLCON_HOME'] = str(Path(cwd) / '.colcon_home')
+    result = subprocess.run(
+        [colcon_executable()] + args, cwd=str(cwd), env=env,
+        capture_output=True, text=True, timeout=timeout)
+    if check and result.returncode != 0:
+        raise AssertionError(
+            f'colcon {" ".join(args)} failed ({result.returncode}):\n'
+            f'{result.stdout[-4000:]}\n{result.stderr[-4000:]}')
+    return result
+
+
+def build_workspace(src, root, *, handler=True, compile_commands=True,
+                    extra=()):
+    """colcon build a workspace whose sources are `src` into `root`."""
+    root.mkdir(parents=True, exist_ok=True)
+    args = ['build', '--base-paths', str(src)]
+    if handler:
+        args += ['--event-handlers', 'rsia+']
+    cmake_args = list(CMAKE_ARGS) if compile_commands else CMAKE_ARGS[1:]
+    args += list(extra) + ['--cmake-args'] + cmake_args
+    result = run_colcon(args, cwd=root)
+    return Workspace(root, Path(src), result.returncode, result.stdout,
+                     result.stderr)
+
+
+@pytest.fixture(scope='session')
+def ros1_workspace(tmp_path_factory):
+    """test_workspaces/ros1 built with the rsia event handler."""
+    workspace = build_workspace(
+        WORKSPACES / 'ros1' / 'src', tmp_path_factory.mktemp('ros1'))
+    assert workspace.returncode == 0, workspace.stdout + workspace.stderr
+    return workspace
+
+
+@pytest.fixture(scope='session')
+def system_workspace(tmp_path_factory):
+    """test_workspaces/system built with the rsia event handler."""
+    workspace = build_workspace(
+        WORKSPACES / 'system' / 'src', tmp_path_factory.mktemp('system'))
+    assert workspace.returncode == 0, workspace.stdout + workspace.stderr
+    return workspace

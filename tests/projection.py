@@ -1,0 +1,44 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Project a summary onto the fields of the hand-written expected files."""
+
+import json
+
+PUBLISHER_FIELDS = ('topic', 'msg_type', 'api', 'label', 'pattern', 'rate_hz')
+SUBSCRIBER_FIELDS = ('topic', 'msg_type', 'api', 'callback')
+TIMER_FIELDS = ('api', 'callback', 'rate_hz')
+SERVICE_FIELDS = ('name', 'api', 'callback')
+ACTION_FIELDS = ('name', 'api', 'role')
+SECTIONS = {
+    'publishers': PUBLISHER_FIELDS,
+    'subscribers': SUBSCRIBER_FIELDS,
+    'timers': TIMER_FIELDS,
+    'services': SERVICE_FIELDS,
+    'actions': ACTION_FIELDS,
+}
+
+
+def _normal(value):
+    # YAML writes 10 and 10.0 alike for a person; compare numbers as floats
+    if isinstance(value, int) and not isinstance(value, bool):
+        return float(value)
+    return value
+
+
+def _entries(items, names):
+    projected = [
+        {name: _normal(item.get(name)) for name in names} for item in items]
+    return sorted(projected, key=lambda e: json.dumps(e, sort_keys=True))
+
+
+def project_node(node):
+    """The comparable view of one node (summary or expected file)."""
+    view = {'id': node['id'], 'kind': node.get('kind', 'executable')}
+    for section, names in SECTIONS.items():
+        view[section] = _entries(node.get(section) or [], names)
+    return view
+
+
+def project_nodes(nodes):
+    """{node id: view} of a list of nodes."""
+    return {node['id']: project_node(node) for node in nodes}

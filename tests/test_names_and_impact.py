@@ -1,0 +1,106 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Name resolution and the two impact analyses on small graphs."""
+
+from colcon_rsia import model
+from colcon_rsia.graph import build_graph
+from colcon_rsia.impact import check_changed
+from colcon_rsia.impact import impact_all
+from colcon_rsia.impact import rate_impact
+from colcon_rsia.impact import traditional_impact
+from colcon_rsia.impact import UnknownNodeError
+from colcon_rsia.names import resolve
+import pytest
+
+
+def test_resolve_global_relative_private_and_handle_namespaces():
+    assert resolve('/scan', node_name='n') == '/scan'
+    assert resolve('scan', node_name='n') == '/scan'
+    assert resolve('scan', node_name='n', namespace='/robot') == '/robot/scan'
+    assert resolve('~scan', node_name='n', namespace='/robot') == \
+        '/robot/n/scan'
+    assert resolve('~/scan', node_name='n') == '/n/scan'
+    assert resolve('scan', node_name='n', handle_namespace='~') == '/n/scan'
+    assert resolve('scan', node_name='n', namespace='/r',
+                   handle_namespace='front') == '/r/front/scan'
+    assert resolve('scan', node_name='n', namespace='/r',
+                   handle_namespace='/abs') == '/abs/scan'
+    assert resolve('a//b/', node_name='n') == '/a/b'
+    assert resolve(None, node_name='n') is None
+
+
+def _publisher(topic, label):
+    return model.LabelledPublisher(
+        topic=topic, topic_is_literal=True, msg_type='m', api='a',
+        handle='h', namespace='', location='f:1', label=label,
+        pattern='timer' if label == model.INDEPENDENT else 'none',
+        rate_hz=None)
+
+
+def _subscriber(topic):
+    return model.NodeSubscriber(
+        topic=topic, topic_is_literal=True, msg_type='m', api='a',
+        callback='cb', namespace='', location='f:2')
+
+
+def _system(spec):
+    """spec: {name: ([(topic, label)], [subscribed topics])}."""
+    nodes = [
+        model.Node(id=f'p/{name}', package='p', executable=name,
+                   kind='executable',
+                   publishers=[_publisher(t, lbl) for t, lbl in pubs],
+                   subscribers=[_subscriber(t) for t in subs])
+        for name, (pubs, subs) in spec.items()]
+    summary = model.PackageSummary(
+        package='p', path='/p', tool_version='0', nodes=nodes)
+    return build_graph([summary])
+
+
+I, D = model.INDEPENDENT, model.DEPENDENT
+# a -> b (dependent) -> c (independent) -> d; c -> e dependent; d <-> a cycle
+SYSTEM = {
+    'a': ([('x', I)], ['w']),
+    'b': ([('y', D)], ['x']),
+    'c': ([('z', I), ('v', D)], ['y']),
+    'd': ([('w', D)], ['z']),
+    'e': ([], ['v']),
+}
+
+
+def test_rate_impact_stops_at_independent_edges_of_unchanged_nodes():
+    system = _system(SYSTEM)
+    # a's own independent edge is relabelled dependent: b; b -> c; c's
+    # independent z is not crossed, its dependent v is: e
+    assert rate_impact(system, ['p/a']) == ['p/b', 'p/c', 'p/e']
+    assert traditional_impact(system, ['p/a']) == \
+        ['p/a', 'p/b', 'p/c', 'p/d', 'p/e']
+
+
+def test_changed_node_listed_only_when_reached_again():
+    system = _system(SYSTEM)
+    # d -> w (dependent) -> a; a changed? no: a's x is independent, stop
+    assert rate_impact(system, ['p/d']) == ['p/a']
+    # both changed: d reaches a, a (relabelled) reaches b, c; c's z stays
+    # independent so d is not reached again
+    assert rate_impact(system, ['p/a', 'p/d']) == ['p/a', 'p/b', 'p/c', 'p/e']
+    # c changed with d: c -> z (relabelled) -> d, d -> a: the cycle closes
+    # only through a's independent edge, so c is not listed
+    assert rate_impact(system, ['p/c', 'p/d']) == ['p/a', 'p/d', 'p/e']
+
+
+def test_impact_all_leaves_out_leaf_nodes_and_reports_the_ratio():
+    result = impact_all(_system(SYSTEM))
+    rows = {r['id']: (r['rate_impact'], r['traditional_impact'])
+            for r in result['nodes']}
+    assert 'p/e' not in rows
+    assert rows['p/a'] == (3, 5)
+    rate = sum(r[0] for r in rows.values())
+    traditional = sum(r[1] for r in rows.values())
+    assert result['ratio'] == round(rate / traditional, 3)
+
+
+def test_unknown_node_names_the_closest_ones():
+    with pytest.raises(UnknownNodeError) as info:
+        check_changed(_system(SYSTEM), ['p/aa'])
+    assert "unknown node 'p/aa'" in str(info.value)
+    assert 'p/a' in str(info.value)

@@ -1,0 +1,171 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Small pure functions: arguments, constants, message types, storage."""
+
+import json
+import os
+from types import SimpleNamespace
+from unittest import mock
+
+from colcon_core.command import CommandContext
+from colcon_core.event.job import JobEnded
+from colcon_core.event_reactor import EventReactorShutdown
+from colcon_rsia import model
+from colcon_rsia.event_handler.rsia import RsiaEventHandler
+from colcon_rsia.frontend.compile_db import clang_arguments
+from colcon_rsia.frontend.compile_db import CompileDatabaseError
+from colcon_rsia.frontend.compile_db import load_compile_database
+from colcon_rsia.frontend.const_eval import evaluate_tokens
+from colcon_rsia.frontend.cpp import normalize_msg_type
+from colcon_rsia.runner import analyze
+from colcon_rsia.runner import missing_compile_db_message
+from colcon_rsia.store import read_summary
+from colcon_rsia.store import SummaryError
+from colcon_rsia.store import write_summary
+import pytest
+
+
+def test_clang_arguments_drop_compiler_output_and_dependency_files():
+    argv = ['/usr/bin/c++', '-DX=1', '-I/inc', '-MD', '-MT', 'a.o', '-MF',
+            'a.d', '-o', 'a.o', '-c', '/src/a.cpp', '-std=gnu++17']
+    assert clang_arguments(argv, '/src/a.cpp', '/build') == \
+        ['-DX=1', '-I/inc', '-std=gnu++17']
+
+
+def test_compile_database_errors_are_one_sentence(tmp_path):
+    with pytest.raises(CompileDatabaseError, match='no compile database'):
+        load_compile_database(str(tmp_path / 'missing.json'))
+    broken = tmp_path / 'compile_commands.json'
+    broken.write_text('[{"directory": ')
+    with pytest.raises(CompileDatabaseError, match='unreadable'):
+        load_compile_database(str(broken))
+
+
+def test_compile_database_reads_command_and_arguments_forms(tmp_path):
+    db = tmp_path / 'compile_commands.json'
+    db.write_text(json.dumps([
+        {'directory': '/b', 'file': '/s/a.cpp',
+         'command': 'c++ -I"/with space" -c /s/a.cpp -o a.o'},
+        {'directory': '/b', 'file': 'rel.cpp',
+         'arguments': ['c++', '-DY', '-c', 'rel.cpp']},
+        {'file': 'no-directory.cpp'},
+    ]))
+    entries = {e.file: e.arguments for e in load_compile_database(str(db))}
+    assert entries == {'/s/a.cpp': ['-I/with space'], '/b/rel.cpp': ['-DY']}
+
+
+def test_constant_expressions_from_macro_tokens():
+    macros = {'HZ': ['20'], 'PERIOD': ['(', '1.0', '/', 'HZ', ')']}
+    assert evaluate_tokens(['HZ'], macros) == 20.0
+    assert evaluate_tokens(['PERIOD'], macros) == pytest.approx(0.05)
+    assert evaluate_tokens(['2', '*', '(', '3', '+', '4', ')']) == 14.0
+    assert evaluate_tokens(['-', '0x10']) == -16.0
+    assert evaluate_tokens(['rate_param']) is None
+    assert evaluate_tokens(['1', '/', '0']) is None
+    assert evaluate_tokens(['(', '1']) is None
+
+
+@pytest.mark.parametrize('spelling, expected', [
+    ('const std_msgs::String::ConstPtr &', 'std_msgs::String'),
+    ('const sensor_msgs::Image_<std::allocator<void> > &',
+     'sensor_msgs::Image'),
+    ('boost::shared_ptr<const geometry_msgs::Twist>', 'geometry_msgs::Twist'),
+    ('const ros::MessageEvent<const std_msgs::Int32> &', 'std_msgs::Int32'),
+    ('std_msgs::Float64', 'std_msgs::Float64'),
+    ('', None),
+])
+def test_message_types_are_normalised(spelling, expected):
+    assert normalize_msg_type(spelling) == expected
+
+
+def _summary():
+    return model.PackageSummary(
+        package='p', path='/p', tool_version='0', nodes=[model.Node(
+            id='p/n', package='p', executable='n', kind='executable')])
+
+
+def test_summary_round_trip_and_atomic_write(tmp_path):
+    path = write_summary(str(tmp_path), _summary())
+    assert read_summary(path) == _summary()
+    assert os.listdir(os.path.dirname(path)) == ['summary.json']
+
+
+@pytest.mark.parametrize('content, message', [
+    ('{"schema": "colcon-rsia/summary@1", "nodes": [', 'corrupted summary'),
+    ('{"schema": "colcon-rsia/summary@99", "nodes": []}',
+     "unsupported summary schema 'colcon-rsia/summary@99'"),
+    ('{"schema": "colcon-rsia/summary@1", "nodes": [{"id": 1}]}',
+     'malformed summary'),
+    ('[]', 'not an object'),
+])
+def test_unusable_summaries_are_one_clear_message(tmp_path, content,
+                                                  message):
+    path = tmp_path / 'summary.json'
+    path.write_text(content)
+    with pytest.raises(SummaryError) as info:
+        read_summary(str(path))
+    assert message in str(info.value)
+    assert str(path) in str(info.value)
+
+
+def test_missing_compile_database_message_tells_how_to_get_one():
+    message = missing_compile_db_message(['-DCMAKE_BUILD_TYPE=Release'])
+    assert '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON' in message
+    assert 'compile-commands' in message
+    assert 'defaults.yaml' in message
+    asked = missing_compile_db_message(['-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'])
+    assert 'generator' in asked
+
+
+def test_runner_never_raises(tmp_path):
+    (tmp_path / 'compile_commands.json').write_text('not json')
+    outcome = analyze(name='p', package_type='ros.catkin',
+                      path=str(tmp_path), build_base=str(tmp_path))
+    assert outcome.summary is None
+    assert 'unreadable compile database' in outcome.error
+    with mock.patch('colcon_rsia.runner.analyze_package',
+                    side_effect=KeyError('boom')):
+        outcome = analyze(name='p', package_type='ros.catkin',
+                          path=str(tmp_path), build_base=str(tmp_path))
+    assert 'internal error' in outcome.error
+    skipped = analyze(name='p', package_type='ros.ament_python',
+                      path=str(tmp_path), build_base=str(tmp_path))
+    assert skipped.skipped
+
+
+def _job(tmp_path, name='pkg', package_type='ros.catkin', cmake_args=None):
+    job = mock.Mock()
+    job.task_context.pkg.name = name
+    job.task_context.pkg.type = package_type
+    job.task_context.pkg.path = str(tmp_path / 'src' / name)
+    job.task_context.args.build_base = str(tmp_path / 'build' / name)
+    job.task_context.args.cmake_args = cmake_args
+    return job
+
+
+def test_event_handler_is_disabled_by_default_and_acts_only_on_build(
+        tmp_path, capsys):
+    handler = RsiaEventHandler()
+    assert handler.enabled is False
+    handler.context = CommandContext(
+        command_name='colcon', args=SimpleNamespace(verb_name='test'))
+    handler((JobEnded('pkg', 0), _job(tmp_path)))
+    handler((EventReactorShutdown(), None))
+    assert capsys.readouterr().out == ''
+
+
+def test_event_handler_warns_once_per_package_without_database(
+        tmp_path, capsys):
+    handler = RsiaEventHandler()
+    handler.context = CommandContext(
+        command_name='colcon', args=SimpleNamespace(verb_name='build'))
+    handler((JobEnded('pkg', 0), _job(tmp_path)))
+    handler((JobEnded('failed', 1), _job(tmp_path, name='failed')))
+    handler((JobEnded('py', 0), _job(tmp_path, name='py',
+                                     package_type='ros.ament_python')))
+    handler((EventReactorShutdown(), None))
+    out = capsys.readouterr().out
+    assert out.count('rsia: pkg: no compile_commands.json') == 1
+    assert '--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON' in out
+    assert 'failed' not in out and 'rsia: py' not in out
+    assert 'rsia: analysed 0 of 1 packages' in out
