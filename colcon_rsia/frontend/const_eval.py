@@ -134,34 +134,48 @@ def source_tokens(cursor):
     return list(tu.get_tokens(extent=extent))
 
 
+_DEFINE = re.compile(r'^[ \t]*#[ \t]*define[ \t]+(\w+)(?![\w(])(.*)$', re.MULTILINE)
+_TOKEN = re.compile(r'0[xX][0-9a-fA-F]+|(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?'
+                    r'[uUlLfF]*|\w+|\S')
+# system headers define no rates of the package: do not read them
+_SYSTEM_PREFIXES = ('/usr/', '/opt/', '/lib/')
+
+
 class _Macros:
-    """Object-like macro bodies of a TU by name, read on first use."""
+    """Object-like macros of the TU's own files, read from their text.
+
+    Only needed when a rate is spelled as a macro whose body is an
+    expression; the files are read on first use.
+    """
 
     def __init__(self, tu):
         self._tu = tu
 
-    def get(self, name):
-        definitions = getattr(self._tu, '_rsia_macro_definitions', None)
-        if definitions is None:
-            # only spellings here: tokenising 10k+ macros costs a second
-            definitions = {
-                c.spelling: c for c in self._tu.cursor.get_children()
-                if c.kind == CK.MACRO_DEFINITION}
-            self._tu._rsia_macro_definitions = definitions
-        cursor = definitions.get(name)
-        if cursor is None:
-            return None
-        tokens = list(cursor.get_tokens())
-        if len(tokens) < 2:
-            return None
-        # a function-like macro (NAME'(' with no space) is not a constant
-        if tokens[1].spelling == '(' and \
-                tokens[1].extent.start.offset == tokens[0].extent.end.offset:
-            return None
-        return [t.spelling for t in tokens[1:]]
+    def _definitions(self):
+        cached = getattr(self._tu, '_rsia_macros', None)
+        if cached is None:
+            cached = {}
+            files = [self._tu.spelling] + [
+                i.include.name for i in self._tu.get_includes()
+                if i.include is not None]
+            for name in files:
+                if name.startswith(_SYSTEM_PREFIXES):
+                    continue
+                try:
+                    with open(name, encoding='utf-8', errors='replace') as h:
+                        text = h.read()
+                except OSError:
+                    continue
+                text = re.sub(r'/\*.*?\*/', ' ', text, flags=re.DOTALL)
+                for match in _DEFINE.finditer(text):
+                    body = match.group(2).split('//')[0]
+                    cached.setdefault(match.group(1), _TOKEN.findall(body))
+            self._tu._rsia_macros = cached
+        return cached
 
-    def __contains__(self, name):
-        return self.get(name) is not None
+    def get(self, name):
+        """The body tokens of an object-like macro, or None."""
+        return self._definitions().get(name) or None
 
 
 def evaluate_tokens(tokens, macros=None, depth=0):

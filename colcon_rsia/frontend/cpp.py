@@ -38,15 +38,15 @@ STATEMENT_KINDS = frozenset({
     CK.FOR_STMT, CK.DO_STMT, CK.SWITCH_STMT, CK.LAMBDA_EXPR,
     CK.CXX_FOR_RANGE_STMT,
 })
-EXPORT_MACROS = frozenset({
-    'PLUGINLIB_EXPORT_CLASS', 'CLASS_LOADER_REGISTER_CLASS'})
+# plugin registrations, read from the source text: a detailed processing
+# record would show them as macro instantiations, but it triples the number
+# of top-level cursors (every macro of every header) and so the walk time
+EXPORT_MACRO = re.compile(
+    r'\b(?:PLUGINLIB_EXPORT_CLASS|CLASS_LOADER_REGISTER_CLASS)\s*\(\s*'
+    r'([\w:]+)\s*,\s*([\w:]+)\s*\)')
 
-PARSE_OPTIONS = (
-    # incomplete: we never need the TU's template instantiations at its end
-    ci.TranslationUnit.PARSE_INCOMPLETE |
-    # detailed: macro definitions (#define RATE 10) and instantiations
-    # (PLUGINLIB_EXPORT_CLASS)
-    ci.TranslationUnit.PARSE_DETAILED_PROCESSING_RECORD)
+# incomplete: we never need the TU's template instantiations at its end
+PARSE_OPTIONS = ci.TranslationUnit.PARSE_INCOMPLETE
 
 # how many parse errors of one TU are kept in the summary
 MAX_DIAGNOSTICS_PER_TU = 5
@@ -281,17 +281,8 @@ class _Walker:
     # --- declarations ------------------------------------------------------
 
     def walk(self, tu):
+        self._plugin_exports(tu.spelling)
         for cursor in tu.cursor.get_children():
-            kind = cursor.kind
-            # most top-level cursors are the headers' macros: skip them
-            # before asking for their location, which costs more
-            if kind == CK.MACRO_INSTANTIATION:
-                if cursor.spelling in EXPORT_MACROS and \
-                        self.in_package(cursor):
-                    self._plugin_export(cursor)
-                continue
-            if kind in (CK.MACRO_DEFINITION, CK.INCLUSION_DIRECTIVE):
-                continue
             if self.in_package(cursor):
                 self._declaration(cursor)
         # a lambda stored in a variable and then registered as a callback
@@ -313,17 +304,15 @@ class _Walker:
         elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
             self._declared_object(cursor, function=None)
 
-    def _plugin_export(self, cursor):
-        tokens = [t.spelling for t in cursor.get_tokens()]
+    def _plugin_exports(self, main_file):
         try:
-            inner = tokens[tokens.index('(') + 1:-1]
-        except ValueError:
+            with open(main_file, encoding='utf-8', errors='replace') as h:
+                text = h.read()
+        except OSError:
             return
-        text = ''.join(inner)
-        parts = text.split(',')
-        if len(parts) >= 2:
+        for match in EXPORT_MACRO.finditer(text):
             self.facts.plugin_exports.append(
-                [parts[0].lstrip(':'), parts[1].lstrip(':')])
+                [match.group(1).lstrip(':'), match.group(2).lstrip(':')])
 
     def _class_id(self, cursor):
         parent = cursor.semantic_parent
