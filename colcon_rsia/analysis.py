@@ -25,6 +25,7 @@ from colcon_rsia.node_facts import merge_facts
 from colcon_rsia.node_facts import node_facts
 from colcon_rsia.node_facts import resolve_namespace
 from colcon_rsia.node_facts import select_functions
+from colcon_rsia.node_facts import topic_param
 from colcon_rsia.nodes import find_executables
 from colcon_rsia.nodes import find_nodelets
 
@@ -242,7 +243,7 @@ def _node(package, executable, kind, sources, path, merged, seeds,
                 msg_type=s.msg_type, api=s.api,
                 callback=names.get(s.callback, s.callback),
                 namespace=resolve_namespace(facts, s.nh),
-                location=s.location)
+                location=s.location, topic_param=topic_param(facts, s))
             for s in facts.subscribers),
             key=lambda s: (s.location, s.topic or '')),
         timers=[model.NodeTimer(

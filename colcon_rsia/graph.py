@@ -13,8 +13,11 @@ from dataclasses import dataclass
 from dataclasses import field
 from typing import Dict
 from typing import List
+from typing import Optional
+from typing import Tuple
 
 from colcon_rsia import model
+from colcon_rsia.names import join
 from colcon_rsia.names import node_fqn
 from colcon_rsia.names import resolve
 import networkx as nx
@@ -26,16 +29,25 @@ GRAPH_SCHEMA = 'colcon-rsia/graph@1'
 class Instance:
     """One running node: its analysed model and where it runs."""
 
-    id: str
-    node: model.Node
+    id: str                        # node id; with a launch file its full name
+    node: Optional[model.Node]     # None: its package was not analysed
+    package: str
+    executable: str
     name: str                      # the node's base name
     namespace: str = '/'
+    remaps: List[Tuple[str, str]] = field(default_factory=list)
+    params: Dict[str, object] = field(default_factory=dict)  # node-relative
+    location: str = ''
     publishers: List[dict] = field(default_factory=list)
     subscribers: List[dict] = field(default_factory=list)
 
     @property
     def fqn(self):  # noqa: D102
         return node_fqn(self.namespace, self.name)
+
+    @property
+    def kind(self):  # noqa: D102
+        return self.node.kind if self.node is not None else 'unknown'
 
 
 @dataclass
@@ -44,51 +56,84 @@ class SystemGraph:
 
     instances: Dict[str, Instance] = field(default_factory=dict)
     graph: nx.DiGraph = field(default_factory=nx.DiGraph)
+    notes: List[str] = field(default_factory=list)
 
     def topics(self):
         """The global names of all topics, sorted."""
         return sorted(v[1] for v in self.graph if v[0] == 'topic')
 
+    def instances_of(self, node_id):
+        """Ids of the instances running a node id (``pkg/exe``)."""
+        return sorted(
+            i.id for i in self.instances.values()
+            if f'{i.package}/{i.executable}' == node_id or i.id == node_id)
 
-def build_graph(summaries):
-    """Build the system graph of analysed packages (one instance a node)."""
-    system = SystemGraph()
-    for summary in summaries:
-        for node in summary.nodes:
-            instance = Instance(id=node.id, node=node, name=node.executable)
-            system.instances[node.id] = instance
+
+def instances_from_summaries(summaries):
+    """Every analysed node once, in the root namespace, as its executable.
+
+    This is what runs when no launch file is given.
+    """
+    return [
+        Instance(id=node.id, node=node, package=node.package,
+                 executable=node.executable, name=node.executable)
+        for summary in summaries for node in summary.nodes]
+
+
+def build_graph(summaries, instances=None, notes=()):
+    """Build the system graph.
+
+    :param summaries: the package summaries
+    :param instances: the node instances that run (from a launch file);
+      None: every analysed node once (:func:`instances_from_summaries`)
+    """
+    if instances is None:
+        instances = instances_from_summaries(summaries)
+    system = SystemGraph(notes=list(notes))
+    for instance in instances:
+        system.instances[instance.id] = instance
     for instance in system.instances.values():
         _connect(system, instance)
     return system
+
+
+def _topic_name(instance, entity):
+    """The topic as the node uses it: literal, or from a parameter."""
+    if entity.topic_is_literal:
+        return entity.topic
+    param = entity.topic_param
+    if param is None:
+        return None
+    value = None
+    if param.namespace.startswith('~'):
+        # a private parameter: the launch file sets it inside the node
+        key = join(param.namespace[1:], param.name).lstrip('/')
+        value = instance.params.get(key)
+    return value if isinstance(value, str) else param.default
+
+
+def _resolve(instance, entity):
+    return resolve(
+        _topic_name(instance, entity),
+        node_name=instance.name, namespace=instance.namespace,
+        handle_namespace=entity.namespace or '', remaps=instance.remaps)
 
 
 def _connect(system, instance):
     graph = system.graph
     vertex = ('node', instance.id)
     graph.add_node(vertex)
+    if instance.node is None:
+        _connect_unknown(system, instance)
+        return
     for publisher in instance.node.publishers:
-        resolved = resolve(
-            publisher.topic if publisher.topic_is_literal else None,
-            node_name=instance.name, namespace=instance.namespace,
-            handle_namespace=publisher.namespace or '')
+        resolved = _resolve(instance, publisher)
         instance.publishers.append(
             {'publisher': publisher, 'resolved': resolved})
-        if resolved is None:
-            continue
-        topic = ('topic', resolved)
-        if graph.has_edge(vertex, topic):
-            data = graph.edges[vertex, topic]
-            data['publishers'].append(publisher)
-            if publisher.label != model.INDEPENDENT:
-                data['label'] = model.DEPENDENT
-        else:
-            graph.add_edge(vertex, topic, label=publisher.label,
-                           publishers=[publisher])
+        if resolved is not None:
+            _add_publisher_edge(graph, vertex, ('topic', resolved), publisher)
     for subscriber in instance.node.subscribers:
-        resolved = resolve(
-            subscriber.topic if subscriber.topic_is_literal else None,
-            node_name=instance.name, namespace=instance.namespace,
-            handle_namespace=subscriber.namespace or '')
+        resolved = _resolve(instance, subscriber)
         instance.subscribers.append(
             {'subscriber': subscriber, 'resolved': resolved})
         if resolved is None:
@@ -100,6 +145,33 @@ def _connect(system, instance):
             graph.add_edge(topic, vertex, subscribers=[subscriber])
 
 
+def _add_publisher_edge(graph, vertex, topic, publisher):
+    if graph.has_edge(vertex, topic):
+        data = graph.edges[vertex, topic]
+        data['publishers'].append(publisher)
+        if publisher.label != model.INDEPENDENT:
+            data['label'] = model.DEPENDENT
+    else:
+        graph.add_edge(vertex, topic, label=publisher.label,
+                       publishers=[publisher])
+
+
+def _connect_unknown(system, instance):
+    """A node whose code was not analysed: assume the worst.
+
+    Its remap targets are the only topics we know it uses; it may read and
+    write each of them, and what it writes follows what it reads.
+    """
+    graph = system.graph
+    vertex = ('node', instance.id)
+    for _, target in instance.remaps:
+        resolved = resolve(target, node_name=instance.name,
+                           namespace=instance.namespace)
+        topic = ('topic', resolved)
+        graph.add_edge(topic, vertex, subscribers=[])
+        graph.add_edge(vertex, topic, label=model.DEPENDENT, publishers=[])
+
+
 def graph_to_json(system):
     """The graph@1 contract (see the README)."""
     nodes = []
@@ -108,9 +180,9 @@ def graph_to_json(system):
         nodes.append({
             'id': instance.id,
             'name': instance.fqn,
-            'package': node.package,
-            'executable': node.executable,
-            'kind': node.kind,
+            'package': instance.package,
+            'executable': instance.executable,
+            'kind': instance.kind,
             'publishers': [{
                 'topic': p['publisher'].topic,
                 'resolved': p['resolved'],
@@ -135,11 +207,12 @@ def graph_to_json(system):
             } for s in instance.subscribers],
             'services': [{
                 'name': s.name, 'api': s.api, 'callback': s.callback,
-                'location': s.location} for s in node.services],
+                'location': s.location}
+                for s in (node.services if node else [])],
             'actions': [{
                 'name': a.name, 'api': a.api, 'role': a.role,
                 'callbacks': a.callbacks, 'location': a.location}
-                for a in node.actions],
+                for a in (node.actions if node else [])],
         })
     topics = []
     for name in system.topics():
@@ -191,8 +264,10 @@ def graph_to_text(system):
     """A readable listing of nodes, their edges and labels."""
     lines = []
     for instance in sorted(system.instances.values(), key=lambda i: i.id):
-        node = instance.node
-        lines.append(f'{instance.id} ({node.kind}, {instance.fqn})')
+        lines.append(f'{instance.id} ({instance.kind}, {instance.fqn})')
+        if instance.node is None:
+            lines.append('  (package not analysed: assumed to read and '
+                         'write its remapped topics)')
         for p in instance.publishers:
             publisher = p['publisher']
             rate = f' {publisher.rate_hz:g} Hz' if publisher.rate_hz else ''

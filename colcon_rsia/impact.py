@@ -14,16 +14,31 @@ class UnknownNodeError(ValueError):
     """A changed node that is not in the graph."""
 
 
-def check_changed(system, changed):
-    """Raise UnknownNodeError naming the closest known ids."""
-    known = sorted(system.instances)
-    for node_id in changed:
-        if node_id not in system.instances:
-            close = difflib.get_close_matches(node_id, known, n=5, cutoff=0.4)
-            hint = f"; closest known: {', '.join(close)}" if close else \
-                f"; known nodes: {', '.join(known[:10])}" if known else \
-                '; no node has been analysed yet'
-            raise UnknownNodeError(f"unknown node '{node_id}'{hint}")
+def expand_changed(system, changed):
+    """The instance ids meant by the changed names, sorted.
+
+    A name is an instance id (a node id, or with a launch file the full
+    name ``/robot/laser_front``) or ``package/executable`` for every
+    instance of that executable.
+
+    :raises UnknownNodeError: naming the closest known names
+    """
+    known = sorted(set(system.instances) | {
+        f'{i.package}/{i.executable}' for i in system.instances.values()})
+    expanded = set()
+    for name in changed:
+        ids = system.instances_of(name)
+        if not ids:
+            close = difflib.get_close_matches(name, known, n=5, cutoff=0.4)
+            if close:
+                hint = f"; closest known: {', '.join(close)}"
+            elif known:
+                hint = f"; known nodes: {', '.join(known[:10])}"
+            else:
+                hint = '; no node has been analysed yet'
+            raise UnknownNodeError(f"unknown node '{name}'{hint}")
+        expanded.update(ids)
+    return sorted(expanded)
 
 
 def _impact(system, changed, rate_aware):
@@ -63,7 +78,7 @@ def traditional_impact(system, changed):
 
 
 def impact_to_json(system, changed):
-    """The impact@1 contract (see the README)."""
+    """The impact@1 contract (see the README); `changed` are instance ids."""
     return {
         'schema': IMPACT_SCHEMA,
         'changed': sorted(changed),

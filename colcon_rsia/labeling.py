@@ -20,6 +20,7 @@ unpaced edges contains a loop-free path using a subset of them).
 from colcon_rsia import model
 from colcon_rsia.node_facts import handles_of
 from colcon_rsia.node_facts import resolve_namespace
+from colcon_rsia.node_facts import topic_param
 
 
 def find_roots(facts):
@@ -135,7 +136,8 @@ def label_publishers(facts):
             handle=publisher.handle_name,
             namespace=resolve_namespace(facts, publisher.nh),
             location=publisher.location,
-            publish_sites=sorted({s.location for s in sites}))
+            publish_sites=sorted({s.location for s in sites}),
+            topic_param=topic_param(facts, publisher))
         if not driven:
             evidence.append(model.Evidence(
                 'no_subscribers', publisher.location,

@@ -88,6 +88,7 @@ class PublisherFact:
     location: str
     class_id: Optional[str] = None
     nh: Optional[str] = None      # USR of the NodeHandle used, or a namespace marker
+    topic_handle: Optional[str] = None  # the variable holding a non-literal topic
 
 
 @dataclass
@@ -104,6 +105,19 @@ class SubscriberFact:
     location: str
     class_id: Optional[str] = None
     nh: Optional[str] = None
+    topic_handle: Optional[str] = None
+
+
+@dataclass
+class ParamRead:
+    """A parameter read into a variable (``nh.param("topic", t, "scan")``)."""
+
+    function: str
+    name: str
+    default: Optional[str]        # the default as written, when a literal
+    handle: Optional[str]         # the variable the value goes to
+    nh: Optional[str]
+    location: str
 
 
 @dataclass
@@ -220,6 +234,7 @@ class TuFacts:
     registrations: List[Registration] = field(default_factory=list)
     node_handles: List[NodeHandleFact] = field(default_factory=list)
     bindings: List[ParamBinding] = field(default_factory=list)
+    param_reads: List[ParamRead] = field(default_factory=list)
     plugin_exports: List[List[str]] = field(default_factory=list)
     diagnostics: List[str] = field(default_factory=list)
 
@@ -236,6 +251,7 @@ class TuFacts:
             'rates': RateObject, 'paced_loops': PacedLoop,
             'syncs': SyncFact, 'registrations': Registration,
             'node_handles': NodeHandleFact, 'bindings': ParamBinding,
+            'param_reads': ParamRead,
         }
         kwargs = {}
         for f in fields(cls):
@@ -264,6 +280,15 @@ class Evidence:
 
 
 @dataclass
+class TopicParam:
+    """A topic name taken from a parameter, with its default."""
+
+    name: str
+    default: Optional[str]
+    namespace: str                # of the NodeHandle that reads it
+
+
+@dataclass
 class LabelledPublisher:
     """A publisher of a node with its rate label."""
 
@@ -279,6 +304,7 @@ class LabelledPublisher:
     rate_hz: Optional[float]
     publish_sites: List[str] = field(default_factory=list)
     evidence: List[Evidence] = field(default_factory=list)
+    topic_param: Optional[TopicParam] = None
 
 
 @dataclass
@@ -292,6 +318,7 @@ class NodeSubscriber:
     callback: Optional[str]
     namespace: Optional[str]
     location: str
+    topic_param: Optional[TopicParam] = None
 
 
 @dataclass
@@ -392,13 +419,21 @@ def _node_from_dict(data):
     for p in data.get('publishers', []):
         p = dict(p)
         p['evidence'] = [Evidence(**e) for e in p.get('evidence', [])]
+        if p.get('topic_param'):
+            p['topic_param'] = TopicParam(**p['topic_param'])
         publishers.append(LabelledPublisher(**p))
+    subscribers = []
+    for s in data.get('subscribers', []):
+        s = dict(s)
+        if s.get('topic_param'):
+            s['topic_param'] = TopicParam(**s['topic_param'])
+        subscribers.append(NodeSubscriber(**s))
     return Node(
         id=data['id'], package=data['package'],
         executable=data['executable'], kind=data['kind'],
         sources=list(data.get('sources', [])),
         publishers=publishers,
-        subscribers=[NodeSubscriber(**s) for s in data.get('subscribers', [])],
+        subscribers=subscribers,
         timers=[NodeTimer(**t) for t in data.get('timers', [])],
         services=[NodeService(**s) for s in data.get('services', [])],
         actions=[NodeAction(**a) for a in data.get('actions', [])],

@@ -38,6 +38,8 @@ class NodeFacts:
     # handle USR -> the handles it may stand for (parameters bound by
     # calls and binds)
     aliases: Dict[str, set] = field(default_factory=dict)
+    # variable USR -> the parameter read into it
+    param_reads: Dict[str, model.ParamRead] = field(default_factory=dict)
 
 
 def unique(items):
@@ -128,6 +130,9 @@ def node_facts(facts, function_ids):
     result.syncs = unique(facts.syncs)
     result.namespaces = {h.handle: h.namespace for h in facts.node_handles}
     result.aliases = _parameter_aliases(functions, facts.bindings)
+    result.param_reads = {
+        r.handle: r for r in facts.param_reads
+        if r.handle and r.function in functions}
     _attach_filter_callbacks(result)
     return result
 
@@ -153,6 +158,17 @@ def _parameter_aliases(functions, bindings):
                     todo.append(handle)
         aliases[param] = seen
     return aliases
+
+
+def topic_param(facts, fact):
+    """The parameter a non-literal topic comes from, or None."""
+    read = facts.param_reads.get(fact.topic_handle) \
+        if fact.topic_handle else None
+    if read is None:
+        return None
+    return model.TopicParam(
+        name=read.name, default=read.default,
+        namespace=resolve_namespace(facts, read.nh))
 
 
 def handles_of(facts, handle):

@@ -4,7 +4,7 @@
 
 from colcon_rsia import model
 from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import check_changed
+from colcon_rsia.impact import expand_changed
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import rate_impact
 from colcon_rsia.impact import traditional_impact
@@ -101,6 +101,23 @@ def test_impact_all_leaves_out_leaf_nodes_and_reports_the_ratio():
 
 def test_unknown_node_names_the_closest_ones():
     with pytest.raises(UnknownNodeError) as info:
-        check_changed(_system(SYSTEM), ['p/aa'])
+        expand_changed(_system(SYSTEM), ['p/aa'])
     assert "unknown node 'p/aa'" in str(info.value)
     assert 'p/a' in str(info.value)
+
+
+def test_remaps_match_resolved_names_in_the_node_namespace():
+    remaps = [('scan', 'front/scan'), ('~out', '/global_out')]
+    assert resolve('scan', node_name='n', namespace='/r',
+                   remaps=remaps) == '/r/front/scan'
+    # the remap matches the resolved name, however it was written
+    assert resolve('/r/scan', node_name='n', namespace='/r',
+                   remaps=remaps) == '/r/front/scan'
+    assert resolve('out', node_name='n', namespace='/r',
+                   handle_namespace='~', remaps=remaps) == '/global_out'
+    # names that no remap matches are left alone
+    assert resolve('other', node_name='n', namespace='/r',
+                   remaps=remaps) == '/r/other'
+    # the last matching remap wins
+    assert resolve('a', node_name='n', remaps=[('a', 'b'), ('a', 'c')]) \
+        == '/c'

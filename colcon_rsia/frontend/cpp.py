@@ -640,8 +640,10 @@ class _Walker:
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
+        topic_handle = self._topic_handle(arguments, api, literal)
         for each_topic, each_type in topics:
             self.facts.publishers.append(model.PublisherFact(
+                topic_handle=topic_handle,
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
@@ -674,14 +676,46 @@ class _Walker:
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
+        topic_handle = self._topic_handle(arguments, api, literal)
         for each_topic, each_type in topics:
             self.facts.subscribers.append(model.SubscriberFact(
+                topic_handle=topic_handle,
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
                 callback=callback, location=self.location(cursor),
                 nh=self._namespace_of(cursor)))
+
+    def _topic_handle(self, arguments, api, literal):
+        """The variable a non-literal topic argument reads, if any."""
+        if literal:
+            return None
+        handle = first_handle(self._argument(arguments, api.name_arg))
+        return handle.get_usr() if handle is not None else None
+
+    def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
+        param, literal = self._topic(self._argument(arguments, 0))
+        if not literal:
+            return
+        written = [a for a in arguments
+                   if next(iter(a.get_tokens()), None) is not None]
+        if name.endswith('::param') and len(written) == 2:
+            # value = nh.param("name", default)
+            target = self._target(cursor, stack)
+            default_argument = written[1]
+        else:
+            # nh.param("name", variable, default) / getParam("name", var)
+            target = first_handle(written[1]) if len(written) > 1 else None
+            default_argument = written[2] if len(written) > 2 else None
+        default = None
+        if default_argument is not None:
+            default, is_literal = self._topic(default_argument)
+            default = default if is_literal else None
+        self.facts.param_reads.append(model.ParamRead(
+            function=ctx.function, name=param, default=default,
+            handle=target.get_usr() if target is not None else None,
+            nh=self._namespace_of(cursor), location=self.location(cursor)))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
         callback, _ = self._resolve_callback(

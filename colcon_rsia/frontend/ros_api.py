@@ -30,6 +30,7 @@ ACTION_CLIENT = 'action_client'
 NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
 PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
 PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
+PARAM_READ = 'param_read'          # reads a parameter into a variable
 
 # special argument positions
 FIRST_STRING = 'first_string'      # the first argument of string type
@@ -74,6 +75,11 @@ CALLS = {
     NH + 'createSteadyTimer': Api(TIMER, callback_arg=1, period_arg=0),
     NH + 'advertiseService': Api(SERVICE, name_arg=0, callback_arg=1),
     NH + 'NodeHandle': Api(NODE_HANDLE),
+    NH + 'param': Api(PARAM_READ, name_arg=0),
+    NH + 'getParam': Api(PARAM_READ, name_arg=0),
+    NH + 'getParamCached': Api(PARAM_READ, name_arg=0),
+    'ros::param::param': Api(PARAM_READ, name_arg=0),
+    'ros::param::get': Api(PARAM_READ, name_arg=0),
     'ros::Publisher::publish': Api(PUBLISH),
     'ros::Rate::Rate': Api(RATE, period_arg=0),
     'ros::WallRate::WallRate': Api(RATE, period_arg=0),

@@ -2,6 +2,7 @@
 # Licensed under the Apache License, Version 2.0
 
 import os
+import sys
 
 from colcon_core.package_selection import add_arguments \
     as add_packages_arguments
@@ -75,35 +76,61 @@ def add_workspace_arguments(parser):
     add_packages_arguments(parser)
 
 
-def load_selected_summaries(args, logger):
+def add_system_arguments(parser):
+    """Add the workspace arguments and --launch."""
+    add_workspace_arguments(parser)
+    parser.add_argument(
+        '--launch', nargs='+', metavar='ARG',
+        help='The deployed system: a launch file (FILE or PKG FILE) and its '
+             'name:=value arguments; without it every analysed node runs '
+             'once in the root namespace')
+
+
+def load_workspace(args, logger):
     """Read the summaries of the selected packages.
 
     Packages that were not analysed are skipped; an unusable summary is
     reported in one line and skipped, never hiding the others.
 
-    :returns: the summaries and the names of the selected packages
+    :returns: the summaries and {package name: source path} of the
+      packages found under the base paths
     """
-    selected = selected_package_names(args)
+    try:
+        decorators = get_packages(args)
+    except RuntimeError as e:
+        logger.warning(str(e))
+        decorators = []
+    package_paths = {
+        d.descriptor.name: str(d.descriptor.path) for d in decorators}
+    selected = {d.descriptor.name for d in decorators if d.selected}
     found = find_summaries(os.path.abspath(args.build_base))
     summaries = []
     for name, path in sorted(found.items()):
-        if selected is not None and name not in selected:
+        # with no package found under the base paths, take every summary
+        if decorators and name not in selected:
             continue
         try:
             summaries.append(read_summary(path))
         except SummaryError as e:
             logger.warning(str(e))
-    return summaries
+    return summaries, package_paths
 
 
-def selected_package_names(args):
-    """Names of the selected packages, or None to take every summary."""
+def load_system_from_args(args, logger):
+    """The system graph the arguments describe, or an error message."""
+    from colcon_rsia.system import LaunchArgumentError
+    from colcon_rsia.system import load_system
+    launch = getattr(args, 'launch', None)
+    expected_errors = (LaunchArgumentError,)
+    if launch:
+        from colcon_rsia.launch import LaunchError
+        expected_errors += (LaunchError,)
+    summaries, package_paths = load_workspace(args, logger)
     try:
-        decorators = get_packages(args)
-    except RuntimeError:
-        return None
-    names = {d.descriptor.name for d in decorators if d.selected}
-    if not names and not decorators:
-        # no package found under the base paths: use every summary
-        return None
-    return names
+        system = load_system(
+            summaries, launch=launch, package_paths=package_paths)
+    except expected_errors as e:
+        return None, str(e)
+    for note in system.notes:
+        print(f'note: {note}', file=sys.stderr)
+    return system, None

@@ -5,12 +5,11 @@ import json
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.graph import build_graph
 from colcon_rsia.graph import graph_to_dot
 from colcon_rsia.graph import graph_to_json
 from colcon_rsia.graph import graph_to_text
-from colcon_rsia.subverb import add_workspace_arguments
-from colcon_rsia.subverb import load_selected_summaries
+from colcon_rsia.subverb import add_system_arguments
+from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 
 logger = colcon_logger.getChild(__name__)
@@ -25,14 +24,16 @@ class GraphRsiaSubverb(RsiaSubverbExtensionPoint):
             RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
 
     def add_arguments(self, *, parser):  # noqa: D102
-        add_workspace_arguments(parser)
+        add_system_arguments(parser)
         parser.add_argument(
             '--format', choices=('text', 'json', 'dot'), default='text',
             help='Output format (default: text)')
 
     def main(self, *, context):  # noqa: D102
         args = context.args
-        system = build_graph(load_selected_summaries(args, logger))
+        system, error = load_system_from_args(args, logger)
+        if error:
+            return error
         if args.format == 'json':
             print(json.dumps(graph_to_json(system), indent=2, sort_keys=True))
         elif args.format == 'dot':

@@ -5,13 +5,12 @@ import json
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import check_changed
+from colcon_rsia.impact import expand_changed
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
 from colcon_rsia.impact import UnknownNodeError
-from colcon_rsia.subverb import add_workspace_arguments
-from colcon_rsia.subverb import load_selected_summaries
+from colcon_rsia.subverb import add_system_arguments
+from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 
 logger = colcon_logger.getChild(__name__)
@@ -26,7 +25,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
 
     def add_arguments(self, *, parser):  # noqa: D102
-        add_workspace_arguments(parser)
+        add_system_arguments(parser)
         group = parser.add_mutually_exclusive_group(required=True)
         group.add_argument(
             '--changed', nargs='+', metavar='PKG/EXE',
@@ -45,7 +44,9 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def main(self, *, context):  # noqa: D102
         args = context.args
-        system = build_graph(load_selected_summaries(args, logger))
+        system, error = load_system_from_args(args, logger)
+        if error:
+            return error
         if args.all:
             result = impact_all(system)
             if args.format == 'json':
@@ -54,10 +55,10 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
                 print(_all_text(result), end='')
             return 0
         try:
-            check_changed(system, args.changed)
+            changed = expand_changed(system, args.changed)
         except UnknownNodeError as e:
             return str(e)
-        result = impact_to_json(system, args.changed)
+        result = impact_to_json(system, changed)
         if args.format == 'json':
             print(json.dumps(result, indent=2, sort_keys=True))
         else:

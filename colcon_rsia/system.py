@@ -1,0 +1,108 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The deployed system: summaries plus, optionally, a launch file."""
+
+import os
+
+from colcon_rsia.graph import build_graph
+from colcon_rsia.graph import Instance
+
+
+class LaunchArgumentError(ValueError):
+    """The --launch arguments do not name a launch file."""
+
+
+def split_launch_arguments(words, package_paths):
+    """Read ``FILE [name:=value …]`` or ``PKG FILE [name:=value …]``.
+
+    :returns: (path of the launch file, {name: value})
+    :raises LaunchArgumentError: when no launch file is found
+    """
+    positional = [w for w in words if ':=' not in w]
+    arguments = dict(w.split(':=', 1) for w in words if ':=' in w)
+    if len(positional) == 1 and os.path.isfile(positional[0]):
+        return os.path.abspath(positional[0]), arguments
+    if len(positional) == 2:
+        package, name = positional
+        if package not in package_paths:
+            raise LaunchArgumentError(
+                f"unknown package '{package}' for --launch (the packages "
+                'found under --base-paths are searched)')
+        found = find_launch_file(package_paths[package], name)
+        if found is None:
+            raise LaunchArgumentError(
+                f"no launch file '{name}' in package '{package}'")
+        return found, arguments
+    raise LaunchArgumentError(
+        '--launch takes FILE or PKG FILE, then any name:=value arguments; '
+        f'got {" ".join(words)!r}')
+
+
+def find_launch_file(package_path, name):
+    """A launch file of a package, as ``roslaunch pkg file`` finds it."""
+    direct = os.path.join(package_path, name)
+    if os.path.isfile(direct):
+        return direct
+    for directory in ('launch', ''):
+        candidate = os.path.join(package_path, directory, name)
+        if os.path.isfile(candidate):
+            return candidate
+    for root, dirs, files in os.walk(package_path):
+        dirs[:] = [d for d in dirs if not d.startswith('.')]
+        if os.path.basename(name) in files:
+            return os.path.join(root, os.path.basename(name))
+    return None
+
+
+def launch_instances(summaries, result):
+    """Match launched node instances with the analysed nodes.
+
+    :param result: a :class:`colcon_rsia.launch.LaunchResult`
+    :returns: the instances and notes on what could not be matched
+    """
+    nodes = {}
+    for summary in summaries:
+        for node in summary.nodes:
+            nodes[(node.package, node.executable)] = node
+            nodes[(node.package, node.id)] = node
+    instances = []
+    notes = list(result.unresolved)
+    for launched in result.instances:
+        if launched.kind in ('nodelet_manager', 'container'):
+            continue  # they host nodes; they publish nothing of their own
+        node = nodes.get((launched.package, launched.executable))
+        name = launched.name or launched.executable.split('/')[-1]
+        instance = Instance(
+            id='', node=node, package=launched.package,
+            executable=launched.executable, name=name,
+            namespace=launched.namespace or '/',
+            remaps=list(launched.remaps), params=dict(launched.params),
+            location=launched.location)
+        instance.id = instance.fqn
+        if node is None:
+            notes.append(
+                f'{instance.id} ({launched.package}/{launched.executable}, '
+                f'{launched.location}): not analysed; assumed to read and '
+                'write its remapped topics')
+        for note in launched.unresolved:
+            notes.append(f'{instance.id}: {note}')
+        instances.append(instance)
+    return instances, notes
+
+
+def load_system(summaries, *, launch=None, package_paths=None):
+    """Build the system graph, from a launch file when one is given.
+
+    :param launch: the ``--launch`` words, or None
+    :raises LaunchArgumentError: for --launch words naming no file
+    :raises colcon_rsia.launch.LaunchError: for a launch file that cannot
+      be read
+    """
+    if not launch:
+        return build_graph(summaries)
+    from colcon_rsia.launch import load_launch
+    path, arguments = split_launch_arguments(launch, package_paths or {})
+    result = load_launch(
+        path, arguments=arguments, package_paths=package_paths or {})
+    instances, notes = launch_instances(summaries, result)
+    return build_graph(summaries, instances=instances, notes=notes)
