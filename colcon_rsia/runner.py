@@ -10,18 +10,25 @@ import ast
 from dataclasses import dataclass
 import os
 import re
+import time
 import traceback
 from typing import Optional
 
+from colcon_rsia import store
 from colcon_rsia.analysis import AnalysisError
 from colcon_rsia.analysis import analyze_package
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.nodes import find_executables
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
     'cmake', 'ros.catkin', 'ros.cmake', 'ros.ament_cmake'})
+# package types whose nodes are Python only
+PYTHON_PACKAGE_TYPES = frozenset({'ros.ament_python'})
+# package types that may also install Python nodes (scripts)
+MIXED_PACKAGE_TYPES = frozenset({'ros.catkin', 'ros.ament_cmake'})
 
 EXPORT_FLAG = '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'
 
@@ -103,22 +110,10 @@ def recorded_cmake_args(build_base):
 def analyze(*, name, package_type, path, build_base, cmake_args=None,
             jobs=None):
     """Analyse one package; return an :class:`Outcome`, never raise."""
-    if package_type not in CPP_PACKAGE_TYPES:
-        return Outcome(
-            name, warning=f"package type '{package_type}' is not analysed "
-                          'by this version; skipped', skipped=True)
-    has_database = os.path.isfile(
-        os.path.join(build_base, COMPILE_DB_FILENAME))
-    if not has_database and not exports_compile_commands(build_base):
-        if cmake_args is None:
-            cmake_args = recorded_cmake_args(build_base)
-        return Outcome(name, warning=missing_compile_db_message(cmake_args))
     try:
-        # CMake asked for a database but wrote none: nothing is compiled
-        # (a header-only package), so the package has no nodes
-        summary = analyze_package(
-            name=name, path=path, build_base=build_base, jobs=jobs,
-            nothing_compiled=not has_database)
+        return _analyze(
+            name=name, package_type=package_type, path=path,
+            build_base=build_base, cmake_args=cmake_args, jobs=jobs)
     except AnalysisError as e:
         return Outcome(name, error=str(e))
     except Exception as e:  # noqa: B902
@@ -126,4 +121,45 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
         detail = traceback.format_exc().strip().splitlines()[-1]
         return Outcome(name, error=f'internal error ({type(e).__name__}: '
                                    f'{detail}); please report it')
+
+
+def _analyze(*, name, package_type, path, build_base, cmake_args, jobs):
+    # imported here: most colcon calls never analyse anything
+    from colcon_rsia.python_analysis import analyze_python_package
+    from colcon_rsia.python_analysis import build_python_summary
+    from colcon_rsia.python_nodes import find_python_nodes
+    if package_type in PYTHON_PACKAGE_TYPES:
+        return Outcome(name, summary=analyze_python_package(
+            name=name, path=path, build_base=build_base))
+    if package_type not in CPP_PACKAGE_TYPES:
+        return Outcome(
+            name, warning=f"package type '{package_type}' is not analysed "
+                          'by this version; skipped', skipped=True)
+    has_python = package_type in MIXED_PACKAGE_TYPES and \
+        bool(find_python_nodes(path).nodes)
+    has_database = os.path.isfile(
+        os.path.join(build_base, COMPILE_DB_FILENAME))
+    if not has_database and not exports_compile_commands(build_base):
+        if has_python and not find_executables(
+                package_path=path, build_base=build_base):
+            # a package of Python scripts needs no compile database
+            return Outcome(name, summary=analyze_python_package(
+                name=name, path=path, build_base=build_base))
+        if cmake_args is None:
+            cmake_args = recorded_cmake_args(build_base)
+        return Outcome(name, warning=missing_compile_db_message(cmake_args))
+    # CMake asked for a database but wrote none: nothing is compiled (a
+    # header-only or launch-only package), so it has no C++ nodes
+    summary = analyze_package(
+        name=name, path=path, build_base=build_base, jobs=jobs,
+        nothing_compiled=not has_database)
+    if has_python:
+        started = time.monotonic()
+        python = build_python_summary(name=name, path=path)
+        summary.nodes = sorted(summary.nodes + python.nodes,
+                               key=lambda n: n.id)
+        summary.diagnostics += python.diagnostics
+        summary.seconds = round(
+            summary.seconds + time.monotonic() - started, 3)
+        store.write_summary(build_base, summary)
     return Outcome(name, summary=summary)

@@ -128,7 +128,7 @@ def test_runner_never_raises(tmp_path):
         outcome = analyze(name='p', package_type='ros.catkin',
                           path=str(tmp_path), build_base=str(tmp_path))
     assert 'internal error' in outcome.error
-    skipped = analyze(name='p', package_type='ros.ament_python',
+    skipped = analyze(name='p', package_type='cargo',
                       path=str(tmp_path), build_base=str(tmp_path))
     assert skipped.skipped
 
@@ -161,11 +161,11 @@ def test_event_handler_warns_once_per_package_without_database(
         command_name='colcon', args=SimpleNamespace(verb_name='build'))
     handler((JobEnded('pkg', 0), _job(tmp_path)))
     handler((JobEnded('failed', 1), _job(tmp_path, name='failed')))
-    handler((JobEnded('py', 0), _job(tmp_path, name='py',
-                                     package_type='ros.ament_python')))
+    handler((JobEnded('rs', 0), _job(tmp_path, name='rs',
+                                     package_type='cargo')))
     handler((EventReactorShutdown(), None))
     out = capsys.readouterr().out
     assert out.count('rsia: pkg: no compile_commands.json') == 1
     assert '--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON' in out
-    assert 'failed' not in out and 'rsia: py' not in out
+    assert 'failed' not in out and 'rsia: rs' not in out
     assert 'rsia: analysed 0 of 1 packages' in out

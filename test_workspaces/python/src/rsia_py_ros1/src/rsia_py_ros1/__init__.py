@@ -1,0 +1,1 @@
+"""Helpers shared by the rsia_py_ros1 scripts."""
