@@ -70,18 +70,20 @@ def launch_instances(summaries, result):
     for launched in result.instances:
         if launched.kind in ('nodelet_manager', 'container'):
             continue  # they host nodes; they publish nothing of their own
-        node = nodes.get((launched.package, launched.executable))
-        name = launched.name or launched.executable.split('/')[-1]
+        package = launched.package or '?'
+        executable = launched.executable or '?'
+        node = nodes.get((package, executable))
+        name = launched.name or executable.split('/')[-1]
         instance = Instance(
-            id='', node=node, package=launched.package,
-            executable=launched.executable, name=name,
+            id='', node=node, package=package,
+            executable=executable, name=name,
             namespace=launched.namespace or '/',
             remaps=list(launched.remaps), params=dict(launched.params),
             location=launched.location)
         instance.id = instance.fqn
         if node is None:
             notes.append(
-                f'{instance.id} ({launched.package}/{launched.executable}, '
+                f'{instance.id} ({package}/{executable}, '
                 f'{launched.location}): not analysed; assumed to read and '
                 'write its remapped topics')
         for note in launched.unresolved:

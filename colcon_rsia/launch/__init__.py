@@ -1,0 +1,117 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Launch files -> the node instances a deployed system runs.
+
+Launch files are read, never executed: XML through defusedxml, YAML through
+``yaml.safe_load``, Python launch files through the stdlib ``ast`` (an
+interpreter of a small subset that only builds launch actions), and
+``$(eval …)`` in a small safe expression subset.
+"""
+
+import os
+
+from colcon_rsia.launch.common import Loader
+from colcon_rsia.launch.common import parse_xml
+from colcon_rsia.launch.model import LaunchError
+from colcon_rsia.launch.model import LaunchResult
+from colcon_rsia.launch.model import NodeInstance
+
+__all__ = ['LaunchError', 'LaunchResult', 'NodeInstance', 'file_kind',
+           'load_launch']
+
+# substitutions only ROS 1 launch files use
+_ROS1_SUBSTITUTIONS = ('$(find ', '$(arg ', '$(optenv ')
+# elements only ROS 2 XML launch files use
+_ROS2_ELEMENTS = frozenset((
+    'let', 'push-ros-namespace', 'push_ros_namespace', 'node_container',
+    'set_remap', 'set_parameter', 'load_composable_node'))
+
+
+def file_kind(path, text, root=None):
+    """Which front end reads a launch file.
+
+    :param root: the parsed XML (an ``Elem``), when already parsed
+    :returns: 'python', 'yaml', 'ros1' (ROS 1 XML) or 'ros2' (ROS 2 XML)
+    """
+    name = os.path.basename(str(path)).lower()
+    if name.endswith('.py'):
+        return 'python'
+    if name.endswith(('.yaml', '.yml')):
+        return 'yaml'
+    if root is None:
+        try:
+            root = parse_xml(text, path)
+        except LaunchError:
+            root = None
+    ros1, ros2 = _xml_markers(root) if root is not None else (False, False)
+    if ros1:
+        return 'ros1'
+    if ros2:
+        return 'ros2'
+    return 'ros1' if name.endswith('.launch') else 'ros2'
+
+
+def _xml_markers(root):
+    """Whether ROS 1 only and ROS 2 only constructs are used."""
+    ros1 = ros2 = False
+    stack = [root]
+    while stack:
+        elem = stack.pop()
+        if elem.tag == 'node':
+            ros1 = ros1 or 'type' in elem.attrs
+            ros2 = ros2 or 'exec' in elem.attrs
+        ros1 = ros1 or elem.tag == 'rosparam'
+        ros2 = ros2 or elem.tag in _ROS2_ELEMENTS
+        for value in elem.attrs.values():
+            if '$(' in value:
+                ros1 = ros1 or any(m in value for m in _ROS1_SUBSTITUTIONS)
+                ros2 = ros2 or '$(var ' in value or '$(find-pkg-' in value
+        if ros1:
+            break
+        stack.extend(elem.children)
+    return ros1, ros2
+
+
+def load_launch(path, *, arguments=None, package_paths=None, environ=None):
+    """Read a launch file and what it includes, without executing anything.
+
+    :param path: the top-level launch file (ROS 1 XML, ROS 2 XML, YAML or
+      Python)
+    :param dict arguments: ``name:=value`` command-line arguments
+    :param dict package_paths: package name -> source directory, for
+      ``$(find pkg)`` and its ROS 2 relatives; installed packages are looked
+      for under ``/opt/ros/*/share`` and ``/usr/share`` otherwise
+    :param dict environ: the environment for ``$(env)``/``$(optenv)``;
+      default: this process's environment
+    :returns: a :class:`LaunchResult`
+    :raises LaunchError: when the top-level file cannot be read, or a file
+      is malformed or refused (DTD entities, external references)
+    """
+    path = os.fspath(path)
+    loader = Loader(arguments=arguments, package_paths=package_paths,
+                    environ=environ)
+    if not os.path.isfile(path):
+        raise LaunchError(f'{path}: launch file not found.')
+    try:
+        text = loader.read_text(path)
+        root = None
+        if not path.lower().endswith(('.py', '.yaml', '.yml')):
+            root = parse_xml(text, path)
+        kind = file_kind(path, text, root)
+        loader.include_stack.append(os.path.realpath(path))
+        if kind == 'ros1':
+            from colcon_rsia.launch.ros1 import Ros1Reader
+            Ros1Reader(loader).read_top(path, root)
+        else:
+            from colcon_rsia.launch.ros2 import Ros2Executor
+            Ros2Executor(loader).run_top(path, kind, text, root)
+    except LaunchError:
+        raise
+    except RecursionError:
+        raise LaunchError(f'{path}: launch files nested too deeply to '
+                          'analyse.')
+    except Exception as e:  # a bug of ours must not stop the caller
+        raise LaunchError(
+            f'{path}: internal error of the launch analysis '
+            f'({type(e).__name__}: {e}); please report it.') from e
+    return loader.result

@@ -1,0 +1,1783 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""ROS 2 Python launch files, read with the stdlib ``ast`` (never run).
+
+A small interpreter walks ``generate_launch_description()`` (and the module
+functions it calls) over a subset of Python: assignments, lists, dicts,
+tuples, f-strings, arithmetic on known values, ``if`` on known values,
+``for`` over known sequences, and the launch / launch_ros API, which builds
+the actions of :mod:`colcon_rsia.launch.ros2`. Module-level code other than
+imports, constants and definitions is never interpreted. Calls to anything
+else give an unknown value with a note; an ``if`` whose condition is not
+known runs both branches and marks what they create; a loop over an unknown
+sequence runs its body once and marks what it creates.
+"""
+
+import ast
+import builtins
+from dataclasses import dataclass
+import os
+import re
+import string
+
+from colcon_rsia.launch.common import location
+from colcon_rsia.launch.common import shorten
+from colcon_rsia.launch.model import LaunchError
+from colcon_rsia.launch.ros2 import Action
+from colcon_rsia.launch.ros2 import BoolOp
+from colcon_rsia.launch.ros2 import ComposableNodeAction
+from colcon_rsia.launch.ros2 import Cond
+from colcon_rsia.launch.ros2 import DeclareArgument
+from colcon_rsia.launch.ros2 import EnvVar
+from colcon_rsia.launch.ros2 import Group
+from colcon_rsia.launch.ros2 import Ignored
+from colcon_rsia.launch.ros2 import Include
+from colcon_rsia.launch.ros2 import LaunchConfig
+from colcon_rsia.launch.ros2 import LoadComposable
+from colcon_rsia.launch.ros2 import NodeAction
+from colcon_rsia.launch.ros2 import Opaque
+from colcon_rsia.launch.ros2 import PackagePath
+from colcon_rsia.launch.ros2 import ParamDict
+from colcon_rsia.launch.ros2 import ParamItem
+from colcon_rsia.launch.ros2 import PathJoin
+from colcon_rsia.launch.ros2 import PushNamespace
+from colcon_rsia.launch.ros2 import PyExpr
+from colcon_rsia.launch.ros2 import SetConfiguration
+from colcon_rsia.launch.ros2 import SetEnv
+from colcon_rsia.launch.ros2 import SetParameter
+from colcon_rsia.launch.ros2 import SetRemap
+from colcon_rsia.launch.ros2 import ThisFile
+from colcon_rsia.launch.ros2 import TypedValue
+from colcon_rsia.launch.ros2 import UnknownValue
+from colcon_rsia.launch.safe_eval import Unresolved
+
+# AST nodes evaluated for one file: a launch file takes a few thousand;
+# loops and calls must not make the analysis run away
+MAX_STEPS = 200000
+# ... and for all the Python launch files of one load
+MAX_TOTAL_STEPS = 2000000
+# iterations of one interpreted loop (and elements of a range())
+MAX_LOOP = 1000
+# nested calls of module functions (recursion ends here)
+MAX_CALL_DEPTH = 16
+# nesting of interpreted statements, expressions and calls together; the
+# Python stack (a few frames per level) stays well below its limit
+MAX_NESTING = 100
+# elements of a list or characters of a string the interpreter builds
+MAX_SIZE = 100000
+
+_MISSING = object()
+_SCALARS = (str, int, float, bool, type(None))
+# modules whose classes and functions are recognised by their last name
+_LAUNCH_MODULES = ('launch', 'launch_ros', 'launch_xml', 'launch_yaml',
+                   'ament_index_python')
+
+
+class _Budget(Exception):
+    pass
+
+
+class _Return(Exception):
+
+    def __init__(self, value):
+        super().__init__()
+        self.value = value
+
+
+class _Break(Exception):
+    pass
+
+
+class _Continue(Exception):
+    pass
+
+
+@dataclass
+class _Ref:
+    """A module or a name imported from one."""
+
+    qualname: str
+
+
+@dataclass
+class _Function:
+    """A function defined in the launch file (or a lambda)."""
+
+    node: object
+    defaults: list
+    kw_defaults: dict
+    closure: list  # the environments it was defined in (innermost first)
+    name: str
+
+
+@dataclass
+class _Bound:
+    """A method of a value, such as ``nodes.append`` or ``ld.add_action``."""
+
+    obj: object
+    name: str
+
+
+@dataclass
+class _LaunchDescription:
+    entities: list
+
+
+@dataclass
+class _Source:
+    path: object
+
+
+@dataclass
+class _EventHandler:
+    actions: list
+    what: str
+
+
+@dataclass
+class _Frame:
+    env: dict
+    conditional_returns: list
+    base: int  # unknown branches entered before the call
+
+
+class _BranchEnd(Exception):
+    """A return inside a branch whose condition is not known."""
+
+
+def read_python_launch(path, text, loader):
+    """The ROS 2 actions of a Python launch file.
+
+    :raises LaunchError: when the file is not valid Python
+    """
+    try:
+        tree = ast.parse(text, filename=path)
+    except SyntaxError as e:
+        raise LaunchError(f'{path}: not valid Python (line {e.lineno}: '
+                          f'{e.msg}).')
+    except (ValueError, RecursionError, MemoryError) as e:
+        raise LaunchError(f'{path}: cannot be parsed as Python '
+                          f'({type(e).__name__}).')
+    interpreter = _Interpreter(path, loader)
+    return interpreter.launch_description(tree)
+
+
+class _Interpreter:
+
+    def __init__(self, path, loader):
+        self.path = path
+        self.loader = loader
+        self.globals = {'__file__': os.path.abspath(path),
+                        '__name__': '__launch__'}
+        self.frames = []
+        self.uncertain = []  # notes of the unknown branches we are in
+        self.steps = 0
+        self.nesting = 0
+
+    # helpers
+
+    def loc(self, node):
+        return location(self.path, getattr(node, 'lineno', 0))
+
+    def note(self, node, text):
+        self.loader.note(f'{self.loc(node)}: {text}')
+
+    def unknown(self, node, text):
+        """An unknown value, noted once at file level."""
+        self.note(node, text)
+        return UnknownValue(f'{self.loc(node)}: {text}')
+
+    def step(self):
+        self.steps += 1
+        self.loader.python_steps += 1
+        if self.steps > MAX_STEPS or \
+                self.loader.python_steps > MAX_TOTAL_STEPS:
+            raise _Budget()
+
+    # the module
+
+    def launch_description(self, tree):
+        try:
+            self.module(tree)
+            function = self.globals.get('generate_launch_description')
+            if not isinstance(function, _Function):
+                self.loader.note(f'{self.path}: no generate_launch_'
+                                 'description() function; nothing launched')
+                return []
+            node = function.node
+            value = self.call_function(function, [], {}, node)
+        except _Budget:
+            self.loader.note(f'{self.path}: the launch file takes too many '
+                             'steps to interpret; the rest is not read')
+            return []
+        if isinstance(value, _LaunchDescription):
+            return value.entities
+        if isinstance(value, UnknownValue):
+            self.loader.note(f'{self.path}: generate_launch_description() '
+                             f'does not give a known launch description '
+                             f'({value.reason})')
+        else:
+            self.loader.note(f'{self.path}: generate_launch_description() '
+                             'does not return a LaunchDescription')
+        return []
+
+    def module(self, tree):
+        for stmt in tree.body:
+            if isinstance(stmt, (ast.Import, ast.ImportFrom)):
+                self.import_(stmt, self.globals)
+            elif isinstance(stmt, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                self.define(stmt, self.globals, [self.globals])
+            elif isinstance(stmt, (ast.Assign, ast.AnnAssign)):
+                self.frames.append(_Frame(self.globals, [], 0))
+                try:
+                    self.statement(stmt, self.globals)
+                finally:
+                    self.frames.pop()
+            elif isinstance(stmt, ast.Expr) and isinstance(
+                    stmt.value, ast.Constant):
+                continue  # a docstring
+            elif isinstance(stmt, ast.If) and _is_main_guard(stmt.test):
+                continue  # never runs under launch
+            elif isinstance(stmt, ast.Try):
+                for inner in stmt.body:
+                    if isinstance(inner, (ast.Import, ast.ImportFrom)):
+                        self.import_(inner, self.globals)
+                    else:
+                        self.note(inner, 'module-level statement in try: '
+                                  'not interpreted')
+            else:
+                self.note(stmt, f'module-level {type(stmt).__name__} '
+                          'statement not interpreted')
+
+    def import_(self, stmt, env):
+        if isinstance(stmt, ast.Import):
+            for alias in stmt.names:
+                if alias.asname:
+                    env[alias.asname] = _Ref(alias.name)
+                else:
+                    top = alias.name.split('.')[0]
+                    env[top] = _Ref(top)
+            return
+        module = '.' * stmt.level + (stmt.module or '')
+        for alias in stmt.names:
+            if alias.name == '*':
+                self.note(stmt, f'from {module} import * not followed')
+                continue
+            env[alias.asname or alias.name] = _Ref(f'{module}.{alias.name}')
+
+    def define(self, stmt, env, closure):
+        args = stmt.args
+        defaults = [self.eval(d, env) for d in args.defaults]
+        kw_defaults = {}
+        for arg, default in zip(args.kwonlyargs, args.kw_defaults):
+            if default is not None:
+                kw_defaults[arg.arg] = self.eval(default, env)
+        env[stmt.name] = _Function(stmt, defaults, kw_defaults,
+                                   list(closure), stmt.name)
+
+    # calls of module functions
+
+    def call_function(self, function, args, kwargs, call_node):
+        if len(self.frames) >= MAX_CALL_DEPTH:
+            return self.unknown(call_node, f'calls nested deeper than '
+                                f'{MAX_CALL_DEPTH} (recursion?)')
+        node = function.node
+        env = {}
+        try:
+            self.bind(function, args, kwargs, env)
+        except TypeError as e:
+            return self.unknown(call_node, f'call of {function.name}() not '
+                                f'understood ({e})')
+        frame = _Frame(env, [], len(self.uncertain))
+        self.frames.append(frame)
+        closure = function.closure
+        try:
+            if isinstance(node, ast.Lambda):
+                return self.eval(node.body, env, closure)
+            value = None
+            try:
+                self.block(node.body, env, closure)
+            except _Return as r:
+                value = r.value
+            except (_Break, _Continue, _BranchEnd):
+                pass
+            if frame.conditional_returns:
+                value = self.merge_returns(frame.conditional_returns, value,
+                                           call_node)
+            return value
+        finally:
+            self.frames.pop()
+
+    def bind(self, function, args, kwargs, env):
+        spec = function.node.args
+        positional = [a.arg for a in spec.posonlyargs + spec.args]
+        defaults = dict(zip(positional[len(positional) -
+                                       len(function.defaults):],
+                            function.defaults))
+        args = list(args)
+        for name in positional:
+            if args:
+                env[name] = args.pop(0)
+            elif name in kwargs:
+                env[name] = kwargs.pop(name)
+            elif name in defaults:
+                env[name] = defaults[name]
+            else:
+                raise TypeError(f'missing argument {name}')
+        if spec.vararg:
+            env[spec.vararg.arg] = list(args)
+        elif args:
+            raise TypeError('too many arguments')
+        for arg in spec.kwonlyargs:
+            if arg.arg in kwargs:
+                env[arg.arg] = kwargs.pop(arg.arg)
+            elif arg.arg in function.kw_defaults:
+                env[arg.arg] = function.kw_defaults[arg.arg]
+            else:
+                raise TypeError(f'missing argument {arg.arg}')
+        if spec.kwarg:
+            env[spec.kwarg.arg] = dict(kwargs)
+        elif kwargs:
+            raise TypeError(f'unexpected argument {next(iter(kwargs))}')
+
+    def merge_returns(self, conditional, final, node):
+        values = [v for v, _ in conditional] + [final]
+        if not all(isinstance(v, _LaunchDescription) for v in values):
+            return self.unknown(node, 'the function returns different '
+                                'values depending on conditions not known '
+                                'statically')
+        entities = []
+        notes = []
+        for value, note in conditional:
+            entities.append(Group(actions=value.entities, scoped=False,
+                                  notes=[note], location=self.loc(node)))
+            notes.append(note)
+        entities.append(Group(
+            actions=final.entities, scoped=False, location=self.loc(node),
+            notes=[f'{self.loc(node)}: returned only when an earlier return '
+                   f'does not happen ({"; ".join(notes)})']))
+        return _LaunchDescription(entities)
+
+    # statements
+
+    def block(self, body, env, closure=None):
+        for stmt in body:
+            self.statement(stmt, env, closure)
+
+    def statement(self, stmt, env, closure=None):
+        self.step()
+        kind = type(stmt).__name__
+        method = getattr(self, 'stmt_' + kind, None)
+        if method is None:
+            self.note(stmt, f'{kind} statement not interpreted')
+            return
+        if self.nesting >= MAX_NESTING:
+            self.note(stmt, 'code nested too deeply to interpret')
+            return
+        self.nesting += 1
+        try:
+            method(stmt, env, closure)
+        finally:
+            self.nesting -= 1
+
+    def stmt_Expr(self, stmt, env, closure):  # noqa: N802
+        self.eval(stmt.value, env, closure)
+
+    def stmt_Pass(self, stmt, env, closure):  # noqa: N802
+        pass
+
+    def stmt_Import(self, stmt, env, closure):  # noqa: N802
+        self.import_(stmt, env)
+
+    stmt_ImportFrom = stmt_Import  # noqa: N815
+
+    def stmt_FunctionDef(self, stmt, env, closure):  # noqa: N802
+        self.define(stmt, env, [env] + list(closure or [self.globals]))
+
+    def stmt_Return(self, stmt, env, closure):  # noqa: N802
+        value = None if stmt.value is None else self.eval(stmt.value, env,
+                                                          closure)
+        frame = self.frames[-1] if self.frames else None
+        if frame is not None and len(self.uncertain) > frame.base:
+            frame.conditional_returns.append((value, self.uncertain[-1]))
+            raise _BranchEnd()  # ends this branch only
+        raise _Return(value)
+
+    def stmt_Break(self, stmt, env, closure):  # noqa: N802
+        raise _Break()
+
+    def stmt_Continue(self, stmt, env, closure):  # noqa: N802
+        raise _Continue()
+
+    def stmt_Assign(self, stmt, env, closure):  # noqa: N802
+        value = self.eval(stmt.value, env, closure)
+        for target in stmt.targets:
+            self.assign(target, value, env, closure)
+
+    def stmt_AnnAssign(self, stmt, env, closure):  # noqa: N802
+        if stmt.value is not None:
+            self.assign(stmt.target, self.eval(stmt.value, env, closure),
+                        env, closure)
+
+    def stmt_AugAssign(self, stmt, env, closure):  # noqa: N802
+        current = self.eval(stmt.target, env, closure)
+        value = self.eval(stmt.value, env, closure)
+        if isinstance(current, list) and isinstance(stmt.op, ast.Add):
+            if isinstance(value, (list, tuple)):
+                self._grow(current, value, stmt)
+                return
+        result = self.binary(stmt.op, current, value, stmt)
+        self.assign(stmt.target, result, env, closure)
+
+    def stmt_If(self, stmt, env, closure):  # noqa: N802
+        test = self.truth(self.eval(stmt.test, env, closure))
+        if test is True:
+            self.block(stmt.body, env, closure)
+        elif test is False:
+            self.block(stmt.orelse, env, closure)
+        else:
+            text = shorten(_source(stmt.test), 50)
+            self.note(stmt, f'condition "{text}" not known statically; both '
+                      'branches are read and what they start is marked')
+            self.branches(
+                env, closure,
+                [(stmt.body, f'{self.loc(stmt)}: only when "{text}" '
+                  'is true, which is not known statically'),
+                 (stmt.orelse, f'{self.loc(stmt)}: only when "{text}" '
+                  'is false, which is not known statically')])
+
+    def branches(self, env, closure, alternatives):
+        """Run alternative blocks from the same state; merge what differs."""
+        before = dict(env)
+        results = []
+        for body, note in alternatives:
+            env.clear()
+            env.update(before)
+            self.uncertain.append(note)
+            try:
+                self.block(body, env, closure)
+            except (_Break, _Continue, _BranchEnd):
+                pass
+            finally:
+                self.uncertain.pop()
+            results.append(dict(env))
+        env.clear()
+        names = set(before)
+        for result in results:
+            names.update(result)
+        notes = [note for _, note in alternatives]
+        for name in names:
+            values = [r.get(name, before.get(name, _MISSING))
+                      for r in results]
+            first = values[0]
+            if all(_same(first, v) for v in values[1:]):
+                if first is not _MISSING:
+                    env[name] = first
+            else:
+                env[name] = _alternatives(name, values, notes)
+
+    def stmt_For(self, stmt, env, closure):  # noqa: N802
+        iterable = self.eval(stmt.iter, env, closure)
+        items = self.sequence(iterable)
+        if items is None:
+            text = shorten(_source(stmt.iter), 50)
+            note = (f'{self.loc(stmt)}: created in a loop over "{text}", '
+                    'which is not known statically (listed once)')
+            self.note(stmt, f'loop over "{text}" not known statically; its '
+                      'body is read once and what it starts is marked')
+            self.assign(stmt.target, UnknownValue(note), env, closure)
+            self.branches(env, closure, [(stmt.body, note), ([], note)])
+            return
+        for item in items:
+            self.step()
+            self.assign(stmt.target, item, env, closure)
+            try:
+                self.block(stmt.body, env, closure)
+            except _Continue:
+                continue
+            except _Break:
+                return
+        self.block(stmt.orelse, env, closure)
+
+    def stmt_While(self, stmt, env, closure):  # noqa: N802
+        test = self.truth(self.eval(stmt.test, env, closure))
+        if test is False:
+            self.block(stmt.orelse, env, closure)
+            return
+        note = (f'{self.loc(stmt)}: created in a while loop (listed once, '
+                'it may run any number of times)')
+        self.note(stmt, 'while loop read once; what it starts is marked')
+        self.branches(env, closure, [(stmt.body, note), ([], note)])
+
+    def stmt_With(self, stmt, env, closure):  # noqa: N802
+        for item in stmt.items:
+            self.eval(item.context_expr, env, closure)
+            if item.optional_vars is not None:
+                self.assign(item.optional_vars,
+                            self.unknown(stmt, 'value of a with statement'),
+                            env, closure)
+        self.block(stmt.body, env, closure)
+
+    def stmt_Try(self, stmt, env, closure):  # noqa: N802
+        self.block(stmt.body, env, closure)
+        self.block(stmt.orelse, env, closure)
+        self.block(stmt.finalbody, env, closure)
+
+    def stmt_Assert(self, stmt, env, closure):  # noqa: N802
+        pass
+
+    def stmt_Raise(self, stmt, env, closure):  # noqa: N802
+        self.note(stmt, 'raise not interpreted')
+
+    def stmt_Global(self, stmt, env, closure):  # noqa: N802
+        pass
+
+    stmt_Nonlocal = stmt_Global  # noqa: N815
+
+    def stmt_Delete(self, stmt, env, closure):  # noqa: N802
+        for target in stmt.targets:
+            if isinstance(target, ast.Name):
+                env.pop(target.id, None)
+
+    # assignment
+
+    def assign(self, target, value, env, closure):
+        if isinstance(target, ast.Name):
+            env[target.id] = value
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            items = self.sequence(value)
+            names = target.elts
+            if items is None or len(items) != len(names) or any(
+                    isinstance(n, ast.Starred) for n in names):
+                for name in names:
+                    inner = name.value if isinstance(name, ast.Starred) \
+                        else name
+                    self.assign(inner, UnknownValue(
+                        f'{self.loc(target)}: unpacking of a value not '
+                        'known statically'), env, closure)
+                return
+            for name, item in zip(names, items):
+                self.assign(name, item, env, closure)
+        elif isinstance(target, ast.Subscript):
+            container = self.eval(target.value, env, closure)
+            key = self.eval(target.slice, env, closure)
+            if isinstance(container, dict) and _hashable(key):
+                container[key] = value
+            elif isinstance(container, list) and isinstance(key, int) and \
+                    -len(container) <= key < len(container):
+                container[key] = value
+            else:
+                self.note(target, 'assignment to an item not interpreted')
+        else:
+            self.note(target, f'assignment to {type(target).__name__} not '
+                      'interpreted')
+
+    # expressions
+
+    def lookup(self, name, env, closure):
+        if name in env:
+            return env[name]
+        for scope in closure or ():
+            if name in scope:
+                return scope[name]
+        if name in self.globals:
+            return self.globals[name]
+        if name in _PYTHON_BUILTINS:
+            return _Ref('builtins.' + name)  # few are interpreted
+        return _MISSING
+
+    def eval(self, node, env, closure=None, depth=0):
+        self.step()
+        if self.nesting >= MAX_NESTING:
+            return self.unknown(node, 'code nested too deeply to interpret')
+        method = getattr(self, 'ex_' + type(node).__name__, None)
+        if method is None:
+            return self.unknown(
+                node, f'{type(node).__name__} expression not interpreted')
+        self.nesting += 1
+        try:
+            return method(node, env, closure, depth + 1)
+        finally:
+            self.nesting -= 1
+
+    def ex_Constant(self, node, env, closure, depth):  # noqa: N802
+        if isinstance(node.value, _SCALARS):
+            return node.value
+        return UnknownValue(f'{self.loc(node)}: constant of type '
+                            f'{type(node.value).__name__}')
+
+    def ex_Name(self, node, env, closure, depth):  # noqa: N802
+        value = self.lookup(node.id, env, closure)
+        if value is _MISSING:
+            return self.unknown(node, f"name '{node.id}' is not defined in "
+                                'the launch file')
+        return value
+
+    def ex_Attribute(self, node, env, closure, depth):  # noqa: N802
+        obj = self.eval(node.value, env, closure, depth)
+        if isinstance(obj, _Ref):
+            return _Ref(f'{obj.qualname}.{node.attr}')
+        if isinstance(obj, UnknownValue):
+            return obj
+        if node.attr.startswith('_'):
+            return self.unknown(node, f'attribute {node.attr} not '
+                                'interpreted')
+        return _Bound(obj, node.attr)
+
+    def ex_Call(self, node, env, closure, depth):  # noqa: N802
+        func = self.eval(node.func, env, closure, depth)
+        args = []
+        for a in node.args:
+            if isinstance(a, ast.Starred):
+                value = self.eval(a.value, env, closure, depth)
+                items = self.sequence(value)
+                if items is None:
+                    return self.unknown(node, 'call with *arguments not '
+                                        'known statically')
+                args.extend(items)
+            else:
+                args.append(self.eval(a, env, closure, depth))
+        kwargs = {}
+        for k in node.keywords:
+            value = self.eval(k.value, env, closure, depth)
+            if k.arg is None:
+                if not isinstance(value, dict):
+                    return self.unknown(node, 'call with **arguments not '
+                                        'known statically')
+                kwargs.update({str(key): v for key, v in value.items()})
+            else:
+                kwargs[k.arg] = value
+        return self.call(func, args, kwargs, node)
+
+    def ex_BinOp(self, node, env, closure, depth):  # noqa: N802
+        left = self.eval(node.left, env, closure, depth)
+        right = self.eval(node.right, env, closure, depth)
+        return self.binary(node.op, left, right, node)
+
+    def ex_UnaryOp(self, node, env, closure, depth):  # noqa: N802
+        value = self.eval(node.operand, env, closure, depth)
+        if isinstance(node.op, ast.Not):
+            truth = self.truth(value)
+            if truth is None:
+                return UnknownValue(f'{self.loc(node)}: not of a value not '
+                                    'known statically')
+            return not truth
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            if isinstance(node.op, ast.USub):
+                return -value
+            if isinstance(node.op, ast.UAdd):
+                return value
+        return UnknownValue(f'{self.loc(node)}: operator not interpreted')
+
+    def ex_BoolOp(self, node, env, closure, depth):  # noqa: N802
+        value = None
+        for operand in node.values:
+            value = self.eval(operand, env, closure, depth)
+            truth = self.truth(value)
+            if truth is None:
+                return UnknownValue(f'{self.loc(node)}: '
+                                    f'"{shorten(_source(node), 50)}" is not '
+                                    'known statically')
+            if isinstance(node.op, ast.And) and not truth:
+                return value
+            if isinstance(node.op, ast.Or) and truth:
+                return value
+        return value
+
+    def ex_Compare(self, node, env, closure, depth):  # noqa: N802
+        left = self.eval(node.left, env, closure, depth)
+        for op, right_node in zip(node.ops, node.comparators):
+            right = self.eval(right_node, env, closure, depth)
+            result = _compare(op, left, right)
+            if result is None:
+                return UnknownValue(
+                    f'{self.loc(node)}: comparison '
+                    f'"{shorten(_source(node), 50)}" not known statically')
+            if not result:
+                return False
+            left = right
+        return True
+
+    def ex_IfExp(self, node, env, closure, depth):  # noqa: N802
+        truth = self.truth(self.eval(node.test, env, closure, depth))
+        if truth is True:
+            return self.eval(node.body, env, closure, depth)
+        if truth is False:
+            return self.eval(node.orelse, env, closure, depth)
+        text = shorten(_source(node.test), 50)
+        notes = [f'{self.loc(node)}: only when "{text}" is true, which is '
+                 'not known statically',
+                 f'{self.loc(node)}: only when "{text}" is false, which is '
+                 'not known statically']
+        values = []
+        for branch, note in zip((node.body, node.orelse), notes):
+            self.uncertain.append(note)
+            try:
+                values.append(self.eval(branch, env, closure, depth))
+            finally:
+                self.uncertain.pop()
+        if _same(values[0], values[1]):
+            return values[0]
+        if all(isinstance(v, Action) or v is None for v in values):
+            self.note(node, f'condition "{text}" not known statically; both '
+                      'alternatives are read and marked')
+            return Group(actions=[
+                Group(actions=[v], scoped=False, notes=[note])
+                for v, note in zip(values, notes) if v is not None],
+                scoped=False, location=self.loc(node))
+        return self.unknown(node, f'value depends on "{text}", which is not '
+                            'known statically')
+
+    def ex_JoinedStr(self, node, env, closure, depth):  # noqa: N802
+        parts = []
+        for value in node.values:
+            if isinstance(value, ast.Constant):
+                parts.append(str(value.value))
+                continue
+            item = self.eval(value.value, env, closure, depth)
+            if not isinstance(item, _SCALARS):
+                return self.unknown(node, 'f-string of a value not known '
+                                    'before launch (use a list of '
+                                    'substitutions)')
+            spec = ''
+            if value.format_spec is not None:
+                spec = self.eval(value.format_spec, env, closure, depth)
+                if not isinstance(spec, str) or not _safe_spec(spec):
+                    return self.unknown(node, 'format spec not interpreted')
+            if value.conversion == ord('r'):
+                item = repr(item)
+            try:
+                parts.append(format(item, spec))
+            except (ValueError, TypeError):
+                return self.unknown(node, 'f-string format not understood')
+        return self.limit(''.join(parts), node)
+
+    def ex_FormattedValue(self, node, env, closure, depth):  # noqa: N802
+        return self.ex_JoinedStr(ast.JoinedStr(values=[node]), env, closure,
+                                 depth)
+
+    def ex_List(self, node, env, closure, depth):  # noqa: N802
+        out = []
+        for elt in node.elts:
+            if isinstance(elt, ast.Starred):
+                items = self.sequence(self.eval(elt.value, env, closure,
+                                                depth))
+                if items is None:
+                    out.append(self.unknown(elt, 'unpacking of a value not '
+                                            'known statically'))
+                else:
+                    self._grow(out, items, node)
+            else:
+                out.append(self.eval(elt, env, closure, depth))
+        return out
+
+    def ex_Tuple(self, node, env, closure, depth):  # noqa: N802
+        return tuple(self.ex_List(node, env, closure, depth))
+
+    def ex_Set(self, node, env, closure, depth):  # noqa: N802
+        return self.ex_List(node, env, closure, depth)
+
+    def ex_Dict(self, node, env, closure, depth):  # noqa: N802
+        out = {}
+        for key, value in zip(node.keys, node.values):
+            item = self.eval(value, env, closure, depth)
+            if key is None:
+                if isinstance(item, dict):
+                    out.update(item)
+                else:
+                    out[f'<unknown {len(out)}>'] = self.unknown(
+                        node, 'dictionary unpacking not known statically')
+                continue
+            k = self.eval(key, env, closure, depth)
+            if not _hashable(k):
+                k = _HashableValue(k)
+            out[k] = item
+        return out
+
+    def ex_Subscript(self, node, env, closure, depth):  # noqa: N802
+        container = self.eval(node.value, env, closure, depth)
+        key = self.eval(node.slice, env, closure, depth)
+        if isinstance(container, _Ref) and container.qualname == \
+                'os.environ':
+            return self.environ(key, None, node, required=True)
+        if isinstance(container, (list, tuple, str, dict)) and (
+                _hashable(key) or isinstance(key, slice)):
+            try:
+                return container[key]
+            except (KeyError, IndexError, TypeError):
+                pass
+        return self.unknown(node, f'"{shorten(_source(node), 50)}" not '
+                            'known statically')
+
+    def ex_Slice(self, node, env, closure, depth):  # noqa: N802
+        parts = [None if p is None else self.eval(p, env, closure, depth)
+                 for p in (node.lower, node.upper, node.step)]
+        if all(p is None or isinstance(p, int) for p in parts):
+            return slice(*parts)
+        return UnknownValue(f'{self.loc(node)}: slice not known')
+
+    def ex_Lambda(self, node, env, closure, depth):  # noqa: N802
+        defaults = [self.eval(d, env, closure, depth)
+                    for d in node.args.defaults]
+        return _Function(node, defaults, {}, [env] + list(closure or []),
+                         'lambda')
+
+    def ex_NamedExpr(self, node, env, closure, depth):  # noqa: N802
+        value = self.eval(node.value, env, closure, depth)
+        self.assign(node.target, value, env, closure)
+        return value
+
+    def ex_ListComp(self, node, env, closure, depth):  # noqa: N802
+        out = []
+        self.comprehension(node, node.generators, 0, dict(env), closure,
+                           depth, lambda e: out.append(
+                               self.eval(node.elt, e, closure, depth)))
+        return out
+
+    ex_SetComp = ex_ListComp  # noqa: N815
+    ex_GeneratorExp = ex_ListComp  # noqa: N815
+
+    def ex_DictComp(self, node, env, closure, depth):  # noqa: N802
+        out = {}
+
+        def add(e):
+            key = self.eval(node.key, e, closure, depth)
+            out[key if _hashable(key) else _HashableValue(key)] = self.eval(
+                node.value, e, closure, depth)
+        self.comprehension(node, node.generators, 0, dict(env), closure,
+                           depth, add)
+        return out
+
+    def comprehension(self, node, generators, index, env, closure, depth,
+                      emit):
+        if index == len(generators):
+            emit(env)
+            return
+        generator = generators[index]
+        items = self.sequence(self.eval(generator.iter, env, closure, depth))
+        if items is None:
+            note = (f'{self.loc(node)}: created in a comprehension over a '
+                    'value not known statically (listed once)')
+            self.note(node, 'comprehension over a value not known '
+                      'statically; its element is read once and marked')
+            self.uncertain.append(note)
+            try:
+                self.assign(generator.target, UnknownValue(note), env,
+                            closure)
+                self.comprehension(node, generators, index + 1, env,
+                                   closure, depth, emit)
+            finally:
+                self.uncertain.pop()
+            return
+        for item in items:
+            self.step()
+            self.assign(generator.target, item, env, closure)
+            keep = True
+            for condition in generator.ifs:
+                truth = self.truth(self.eval(condition, env, closure, depth))
+                if truth is None:
+                    note = (f'{self.loc(node)}: only when '
+                            f'"{shorten(_source(condition), 50)}", which is '
+                            'not known statically')
+                    self.uncertain.append(note)
+                    try:
+                        self.comprehension(node, generators, index + 1, env,
+                                           closure, depth, emit)
+                    finally:
+                        self.uncertain.pop()
+                    keep = False
+                    break
+                if not truth:
+                    keep = False
+                    break
+            if keep:
+                self.comprehension(node, generators, index + 1, env, closure,
+                                   depth, emit)
+
+    # value helpers
+
+    def limit(self, value, node):
+        if isinstance(value, (str, list, tuple)) and len(value) > MAX_SIZE:
+            return self.unknown(node, 'value too large')
+        if isinstance(value, int) and value.bit_length() > 4000:
+            return self.unknown(node, 'number too large')
+        return value
+
+    def _grow(self, target, items, node):
+        if len(target) + len(items) > MAX_SIZE:
+            target.append(self.unknown(node, 'list too large'))
+            return
+        target.extend(self.mark(items))
+
+    def mark(self, items):
+        """Actions added in an unknown branch carry the branch's note."""
+        if not self.uncertain:
+            return list(items)
+        return [self.marked(i) for i in items]
+
+    def marked(self, item):
+        if not self.uncertain or not isinstance(item, Action):
+            return item
+        return Group(actions=[item], scoped=False,
+                     notes=[self.uncertain[-1]], location=item.location)
+
+    def truth(self, value):
+        """True/False for known values, None otherwise."""
+        if isinstance(value, (str, int, float, bool, type(None), list,
+                              tuple, dict)):
+            if isinstance(value, (list, tuple, dict)) and any(
+                    isinstance(v, UnknownValue) for v in value):
+                return bool(value) or None
+            return bool(value)
+        return None
+
+    def sequence(self, value):
+        """The items of a known sequence, None when not known."""
+        if isinstance(value, (list, tuple, str)):
+            items = list(value)
+        elif isinstance(value, dict):
+            items = list(value)
+        else:
+            return None
+        if len(items) > MAX_LOOP:
+            return None
+        return items
+
+    def binary(self, op, left, right, node):
+        ok = (str, int, float, bool, list, tuple)
+        if not isinstance(left, ok) or not isinstance(right, ok):
+            if isinstance(left, UnknownValue):
+                return left
+            if isinstance(right, UnknownValue):
+                return right
+            return self.unknown(node, f'"{shorten(_source(node), 50)}" '
+                                'combines values not known before launch')
+        if isinstance(op, ast.Mod) and isinstance(left, str):
+            return self.unknown(node, '%-formatting not interpreted')
+        if isinstance(op, ast.Mult):
+            for seq, count in ((left, right), (right, left)):
+                if isinstance(seq, (str, list, tuple)) and isinstance(
+                        count, int) and len(seq) * max(count, 0) > MAX_SIZE:
+                    return self.unknown(node, 'value too large')
+        if isinstance(op, ast.Pow):
+            if abs(right) > 64 if isinstance(right, (int, float)) else True:
+                return self.unknown(node, 'power not interpreted')
+        function = _BINARY.get(type(op))
+        if function is None:
+            return self.unknown(node, 'operator not interpreted')
+        try:
+            value = function(left, right)
+        except (TypeError, ValueError, ArithmeticError) as e:
+            return self.unknown(node, f'operation fails ({e})')
+        return self.limit(value, node)
+
+    # calls
+
+    def call(self, func, args, kwargs, node):
+        if isinstance(func, UnknownValue):
+            return func
+        if isinstance(func, _Function):
+            return self.call_function(func, args, kwargs, node)
+        if isinstance(func, _Bound):
+            return self.method(func, args, kwargs, node)
+        if isinstance(func, _Ref):
+            return self.library(func.qualname, args, kwargs, node)
+        return self.unknown(node, f'call of a {type(func).__name__} not '
+                            'interpreted')
+
+    def method(self, bound, args, kwargs, node):
+        obj, name = bound.obj, bound.name
+        if isinstance(obj, _LaunchDescription) and name in (
+                'add_action', 'add_entity') and len(args) == 1:
+            obj.entities.extend(self.mark(args))
+            return None
+        if isinstance(obj, list):
+            if name == 'append' and len(args) == 1:
+                if len(obj) >= MAX_SIZE:
+                    return self.unknown(node, 'list too large')
+                obj.append(self.marked(args[0]))
+                return None
+            if name == 'extend' and len(args) == 1:
+                items = self.sequence(args[0]) if not isinstance(
+                    args[0], (list, tuple)) else list(args[0])
+                if items is None:
+                    obj.append(self.unknown(node, 'extend with a value not '
+                                            'known statically'))
+                else:
+                    self._grow(obj, items, node)
+                return None
+            if name == 'insert' and len(args) == 2 and isinstance(
+                    args[0], int):
+                obj.insert(args[0], self.marked(args[1]))
+                return None
+            if name == 'copy' and not args:
+                return list(obj)
+        if isinstance(obj, dict):
+            if name == 'items' and not args:
+                return [(k, v) for k, v in obj.items()]
+            if name == 'keys' and not args:
+                return list(obj)
+            if name == 'values' and not args:
+                return list(obj.values())
+            if name == 'get' and 1 <= len(args) <= 2 and _hashable(args[0]):
+                return obj.get(args[0], args[1] if len(args) > 1 else None)
+            if name == 'update' and len(args) == 1 and isinstance(
+                    args[0], dict):
+                obj.update(args[0])
+                return None
+            if name == 'copy' and not args:
+                return dict(obj)
+        if isinstance(obj, str) and name in _STR_METHODS:
+            return self.str_method(obj, name, args, kwargs, node)
+        return self.unknown(node, f'method {name}() of a '
+                            f'{type(obj).__name__} not interpreted')
+
+    def str_method(self, text, name, args, kwargs, node):
+        if name == 'format':
+            if not all(isinstance(a, _SCALARS) for a in
+                       list(args) + list(kwargs.values())):
+                return self.unknown(node, 'format() of values not known '
+                                    'before launch')
+            try:
+                fields = [(f, spec or '') for _, f, spec, _ in
+                          string.Formatter().parse(text) if f is not None]
+            except ValueError:
+                return self.unknown(node, 'malformed format string')
+            if any(not (f == '' or f.isidentifier() or f.isdigit()) or
+                   not _safe_spec(spec) for f, spec in fields):
+                return self.unknown(node, 'format fields other than names '
+                                    'and positions not interpreted')
+            try:
+                return self.limit(text.format(*args, **kwargs), node)
+            except (IndexError, KeyError, ValueError) as e:
+                return self.unknown(node, f'format() fails ({e})')
+        if name == 'join' and len(args) == 1 and not kwargs:
+            items = self.sequence(args[0])
+            if items is None or not all(isinstance(i, str) for i in items):
+                return self.unknown(node, 'join() of values not known '
+                                    'statically')
+            if sum(map(len, items)) + len(text) * len(items) > MAX_SIZE:
+                return self.unknown(node, 'value too large')
+            return self.limit(text.join(items), node)
+        if name == 'replace' and len(args) >= 2 and all(
+                isinstance(a, str) for a in args[:2]):
+            count = text.count(args[0]) if args[0] else len(text) + 1
+            if len(text) + count * len(args[1]) > MAX_SIZE:
+                return self.unknown(node, 'value too large')
+        if kwargs or not all(isinstance(a, (str, int)) or a is None
+                             for a in args):
+            return self.unknown(node, f'{name}() arguments not known')
+        try:
+            value = getattr(text, name)(*args)
+        except (TypeError, ValueError) as e:
+            return self.unknown(node, f'{name}() fails ({e})')
+        return self.limit(value, node)
+
+    def environ(self, name, default, node, *, required=False):
+        if not isinstance(name, str):
+            return self.unknown(node, 'environment variable name not known')
+        if name in self.loader.environ:
+            return self.loader.environ[name]
+        if required:
+            return self.unknown(node, f'environment variable {name} is not '
+                                'set')
+        return default
+
+    def library(self, qualname, args, kwargs, node):
+        module, _, name = qualname.rpartition('.')
+        top = qualname.split('.')[0]
+        if qualname.startswith('builtins.'):
+            return self.builtin(name, args, kwargs, node)
+        if top in _LAUNCH_MODULES:
+            handler = _LAUNCH_API.get(name)
+            if handler is not None:
+                try:
+                    return handler(self, _Args(args, kwargs), node)
+                except _ArgError as e:
+                    return self.unknown(node, f'{name}(): {e}')
+            return self.unknown(node, f'{qualname}() not interpreted')
+        if qualname in ('os.path.join', 'os.path.dirname',
+                        'os.path.basename', 'os.path.abspath',
+                        'os.path.normpath'):
+            if kwargs or not all(isinstance(a, str) for a in args) or (
+                    not args):
+                return self.unknown(node, f'{qualname}() of values not '
+                                    'known statically')
+            return self.limit(getattr(os.path, name)(*args), node)
+        if qualname in ('os.environ.get', 'os.getenv'):
+            default = args[1] if len(args) > 1 else kwargs.get('default')
+            return self.environ(args[0] if args else None, default, node)
+        return self.unknown(node, f'call of {qualname}() not interpreted')
+
+    def builtin(self, name, args, kwargs, node):
+        if name in ('str', 'int', 'float', 'bool') and len(args) <= 1 and \
+                not kwargs:
+            if not args:
+                return {'str': '', 'int': 0, 'float': 0.0,
+                        'bool': False}[name]
+            if isinstance(args[0], _SCALARS):
+                try:
+                    return self.limit(
+                        {'str': str, 'int': int, 'float': float,
+                         'bool': bool}[name](args[0]), node)
+                except (TypeError, ValueError) as e:
+                    return self.unknown(node, f'{name}() fails ({e})')
+        if name in ('list', 'tuple') and len(args) <= 1 and not kwargs:
+            items = self.sequence(args[0]) if args else []
+            if items is not None:
+                return items if name == 'list' else tuple(items)
+        if name == 'dict' and not args:
+            return dict(kwargs)
+        if name == 'len' and len(args) == 1 and isinstance(
+                args[0], (str, list, tuple, dict)):
+            return len(args[0])
+        if name == 'range' and 1 <= len(args) <= 3 and all(
+                isinstance(a, int) for a in args):
+            try:
+                values = range(*args)
+            except ValueError as e:
+                return self.unknown(node, f'range() fails ({e})')
+            if len(values) > MAX_LOOP:
+                return self.unknown(node, 'range() too long')
+            return list(values)
+        if name in ('enumerate', 'zip', 'sorted', 'reversed') and \
+                not kwargs:
+            sequences = [self.sequence(a) for a in args]
+            if args and all(s is not None for s in sequences):
+                if name == 'enumerate' and len(args) == 1:
+                    return list(enumerate(sequences[0]))
+                if name == 'zip':
+                    return list(zip(*sequences))
+                if name == 'reversed' and len(args) == 1:
+                    return list(reversed(sequences[0]))
+                if name == 'sorted' and len(args) == 1 and all(
+                        isinstance(v, str) for v in sequences[0]):
+                    return sorted(sequences[0])
+        if name == 'print':
+            return None
+        return self.unknown(node, f'{name}() not interpreted')
+
+
+def _alternatives(name, values, notes):
+    """One value for a variable set differently in unknown branches.
+
+    Actions, and lists of actions, are kept: each alternative in a group
+    marked with its branch's note. Anything else is unknown.
+    """
+    def actions(value):
+        if value is None or value is _MISSING:
+            return []
+        if isinstance(value, Action):
+            return [value]
+        if isinstance(value, list) and all(
+                isinstance(v, Action) for v in value):
+            return list(value)
+        return None
+
+    kept = [actions(v) for v in values]
+    if all(k is not None for k in kept):
+        # what every alternative starts with is not conditional
+        common = 0
+        while all(len(k) > common and k[common] is kept[0][common]
+                  for k in kept):
+            common += 1
+        groups = list(kept[0][:common]) + [
+            Group(actions=k[common:], scoped=False, notes=[note])
+            for k, note in zip(kept, notes) if k[common:]]
+        if any(isinstance(v, list) for v in values):
+            return groups
+        return Group(actions=groups, scoped=False)
+    return UnknownValue(f'{name} depends on a condition not known '
+                        f'statically ({notes[0]})')
+
+
+def _is_main_guard(test):
+    return isinstance(test, ast.Compare) and isinstance(
+        test.left, ast.Name) and test.left.id == '__name__'
+
+
+def _source(node):
+    try:
+        return ast.unparse(node)
+    except Exception:  # ast.unparse of a synthetic node
+        return type(node).__name__
+
+
+def _safe_spec(spec):
+    """A format spec without nested fields or huge widths."""
+    if '{' in spec or '}' in spec:
+        return False
+    return all(len(digits) <= 4 for digits in re.findall(r'\d+', spec))
+
+
+def _hashable(value):
+    return isinstance(value, (str, int, float, bool, type(None)))
+
+
+class _HashableValue:
+    """A dictionary key that is not a plain scalar (a substitution)."""
+
+    def __init__(self, value):
+        self.value = value
+
+
+def _same(a, b):
+    if a is b:
+        return True
+    if isinstance(a, _SCALARS) and isinstance(b, _SCALARS):
+        return type(a) is type(b) and a == b
+    return False
+
+
+def _compare(op, left, right):
+    ok = (str, int, float, bool, type(None), list, tuple)
+    if not isinstance(left, ok) or not isinstance(right, ok):
+        return None
+    if any(isinstance(v, UnknownValue) for v in (
+            left if isinstance(left, (list, tuple)) else [left])):
+        return None
+    try:
+        if isinstance(op, ast.Eq):
+            return left == right
+        if isinstance(op, ast.NotEq):
+            return left != right
+        if isinstance(op, ast.Lt):
+            return left < right
+        if isinstance(op, ast.LtE):
+            return left <= right
+        if isinstance(op, ast.Gt):
+            return left > right
+        if isinstance(op, ast.GtE):
+            return left >= right
+        if isinstance(op, ast.In):
+            return left in right
+        if isinstance(op, ast.NotIn):
+            return left not in right
+        if isinstance(op, (ast.Is, ast.IsNot)):
+            if left is not None and right is not None:
+                return None
+            same = left is right
+            return same if isinstance(op, ast.Is) else not same
+    except (TypeError, RecursionError):
+        return None
+    return None
+
+
+_BINARY = {
+    ast.Add: lambda a, b: a + b,
+    ast.Sub: lambda a, b: a - b,
+    ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b,
+    ast.FloorDiv: lambda a, b: a // b,
+    ast.Mod: lambda a, b: a % b,
+    ast.Pow: lambda a, b: a ** b,
+}
+
+_PYTHON_BUILTINS = frozenset(dir(builtins))
+
+_STR_METHODS = frozenset((
+    'format', 'join', 'replace', 'lower', 'upper', 'strip', 'lstrip',
+    'rstrip', 'split', 'startswith', 'endswith'))
+
+
+# the launch API
+
+
+class _ArgError(Exception):
+    pass
+
+
+class _Args:
+    """Positional and keyword arguments of a launch API call."""
+
+    def __init__(self, args, kwargs):
+        self.args = list(args)
+        self.kwargs = dict(kwargs)
+
+    def get(self, index, *names, default=None):
+        for name in names:
+            if name in self.kwargs:
+                return self.kwargs[name]
+        if index is not None and index < len(self.args):
+            return self.args[index]
+        return default
+
+    def has(self, index, *names):
+        return any(n in self.kwargs for n in names) or (
+            index is not None and index < len(self.args))
+
+
+def _text_value(value):
+    """A value usable where launch expects text or substitutions."""
+    if isinstance(value, tuple):
+        return list(value)
+    return value
+
+
+def _conditions(interp, args, node):
+    condition = args.get(None, 'condition')
+    if condition is None:
+        return []
+    if isinstance(condition, Cond):
+        return [condition]
+    return [Cond('unknown', [f'{interp.loc(node)}: condition not '
+                             'understood'])]
+
+
+def _common(interp, args, node):
+    notes = list(interp.uncertain)
+    return {'location': interp.loc(node),
+            'conditions': _conditions(interp, args, node), 'notes': notes}
+
+
+def _entities(interp, value, node, active=None):
+    if value is None:
+        return []
+    if isinstance(value, (list, tuple)):
+        active = active if active is not None else set()
+        if id(value) in active or len(active) > MAX_NESTING:
+            return [UnknownValue(f'{interp.loc(node)}: a list that contains '
+                                 'itself')]
+        active.add(id(value))
+        out = []
+        for item in value:
+            if isinstance(item, (list, tuple)):
+                out.extend(_entities(interp, item, node, active))
+            else:
+                out.append(item)
+        active.discard(id(value))
+        return out
+    if isinstance(value, _LaunchDescription):
+        return list(value.entities)
+    if isinstance(value, UnknownValue):
+        return [value]
+    return [UnknownValue(f'{interp.loc(node)}: actions not known '
+                         'statically')]
+
+
+def _launch_description(interp, args, node):
+    return _LaunchDescription(_entities(
+        interp, args.get(0, 'initial_entities'), node))
+
+
+def _declare(interp, args, node):
+    has_default = args.has(1, 'default_value')
+    return DeclareArgument(name=args.get(0, 'name'),
+                           default=_text_value(args.get(1, 'default_value')),
+                           has_default=has_default,
+                           **_common(interp, args, node))
+
+
+def _set_configuration(interp, args, node):
+    return SetConfiguration(name=args.get(0, 'name'),
+                            value=_text_value(args.get(1, 'value')),
+                            **_common(interp, args, node))
+
+
+def _remappings(interp, value, node):
+    if value is None:
+        return []
+    items = value if isinstance(value, (list, tuple)) else None
+    if items is None:
+        return [UnknownValue(f'{interp.loc(node)}: remappings not known '
+                             'statically')]
+    out = []
+    for item in items:
+        if isinstance(item, (list, tuple)) and len(item) == 2:
+            out.append((_text_value(item[0]), _text_value(item[1])))
+        else:
+            out.append(UnknownValue(f'{interp.loc(node)}: a remapping not '
+                                    'known statically'))
+    return out
+
+
+def _parameters(interp, value, node):
+    if value is None:
+        return []
+    if not isinstance(value, (list, tuple)):
+        return [ParamItem('unknown', value=f'{interp.loc(node)}: parameters '
+                          'not known statically')]
+    out = []
+    for item in value:
+        if isinstance(item, dict):
+            out.append(ParamItem('dict', value=_param_dict(item)))
+        elif isinstance(item, _ParameterFile):
+            out.append(ParamItem('file', value=item.path,
+                                 allow_substs=item.allow_substs))
+        elif isinstance(item, (str, list, PathJoin, LaunchConfig,
+                               PackagePath, EnvVar, PyExpr, ThisFile)):
+            out.append(ParamItem('file', value=_text_value(item)))
+        elif isinstance(item, UnknownValue):
+            out.append(ParamItem('unknown', value=item.reason))
+        else:
+            out.append(ParamItem('unknown', value=f'{interp.loc(node)}: a '
+                                 'parameter entry not understood'))
+    return out
+
+
+def _param_dict(data):
+    pairs = []
+    for key, value in data.items():
+        if isinstance(key, _HashableValue):
+            key = _text_value(key.value)
+        pairs.append((key, _param_dict(value) if isinstance(value, dict)
+                      else value))
+    return ParamDict(pairs)
+
+
+@dataclass
+class _ParameterFile:
+    path: object
+    allow_substs: bool
+
+
+def _node(interp, args, node, kind='node'):
+    def get(*names):
+        return _text_value(args.get(None, *names))
+    action = NodeAction(
+        package=get('package'),
+        executable=get('executable', 'node_executable'),
+        name=get('name', 'node_name'),
+        namespace=get('namespace', 'node_namespace'),
+        remaps=_remappings(interp, args.get(None, 'remappings'), node),
+        params=_parameters(interp, args.get(None, 'parameters'), node),
+        arguments=_list_value(interp, args.get(None, 'arguments'), node),
+        ros_arguments=_list_value(interp, args.get(None, 'ros_arguments'),
+                                  node),
+        kind=kind, **_common(interp, args, node))
+    if kind == 'container':
+        action.composables = _composables(
+            interp, args.get(None, 'composable_node_descriptions'), node)
+    return action
+
+
+def _list_value(interp, value, node):
+    if value is None:
+        return []
+    if isinstance(value, (list, tuple)):
+        return [_text_value(v) for v in value]
+    return UnknownValue(f'{interp.loc(node)}: arguments not known '
+                        'statically')
+
+
+def _container(interp, args, node):
+    return _node(interp, args, node, kind='container')
+
+
+def _composables(interp, value, node):
+    if value is None:
+        return []
+    if not isinstance(value, (list, tuple)):
+        interp.note(node, 'composable node descriptions not known '
+                    'statically')
+        return []
+    out = []
+    for item in value:
+        if isinstance(item, ComposableNodeAction):
+            out.append(item)
+        else:
+            interp.note(node, 'a composable node description not '
+                        'understood')
+    return out
+
+
+def _composable(interp, args, node):
+    def get(*names):
+        return _text_value(args.get(None, *names))
+    return ComposableNodeAction(
+        package=get('package'), plugin=get('plugin'),
+        name=get('name'), namespace=get('namespace'),
+        remaps=_remappings(interp, args.get(None, 'remappings'), node),
+        params=_parameters(interp, args.get(None, 'parameters'), node),
+        **_common(interp, args, node))
+
+
+def _load_composables(interp, args, node):
+    return LoadComposable(composables=_composables(
+        interp, args.get(None, 'composable_node_descriptions'), node),
+        **_common(interp, args, node))
+
+
+def _include(interp, args, node):
+    source = args.get(0, 'launch_description_source')
+    if isinstance(source, _Source):
+        path = source.path
+    elif isinstance(source, (str, list, PathJoin, PackagePath, LaunchConfig,
+                             ThisFile)):
+        path = _text_value(source)
+    else:
+        return interp.unknown(node, 'included launch description not known '
+                              'statically')
+    raw = args.get(1, 'launch_arguments')
+    arguments = []
+    if isinstance(raw, dict):
+        raw = list(raw.items())
+    if raw is not None:
+        if not isinstance(raw, (list, tuple)):
+            interp.note(node, 'include arguments not known statically')
+        else:
+            for pair in raw:
+                if isinstance(pair, (list, tuple)) and len(pair) == 2:
+                    key = pair[0].value if isinstance(
+                        pair[0], _HashableValue) else pair[0]
+                    arguments.append((_text_value(key),
+                                      _text_value(pair[1])))
+                else:
+                    interp.note(node, 'an include argument not understood')
+    return Include(path=path, arguments=arguments,
+                   **_common(interp, args, node))
+
+
+def _source_of(interp, args, node):
+    return _Source(_text_value(args.get(0, 'launch_file_path')))
+
+
+def _group(interp, args, node):
+    configurations = []
+    raw = args.get(None, 'launch_configurations')
+    if isinstance(raw, dict):
+        configurations = [
+            (k.value if isinstance(k, _HashableValue) else k, v)
+            for k, v in raw.items()]
+    scoped = args.get(1, 'scoped', default=True)
+    forwarding = args.get(2, 'forwarding', default=True)
+    return Group(actions=_entities(interp, args.get(0, 'actions'), node),
+                 scoped=scoped if isinstance(scoped, bool) else True,
+                 forwarding=forwarding is not False,
+                 configurations=configurations,
+                 **_common(interp, args, node))
+
+
+def _timer(interp, args, node):
+    return Group(actions=_entities(interp, args.get(1, 'actions'), node),
+                 scoped=False, **_common(interp, args, node))
+
+
+def _push_namespace(interp, args, node):
+    return PushNamespace(namespace=_text_value(args.get(0, 'namespace')),
+                         **_common(interp, args, node))
+
+
+def _set_remap(interp, args, node):
+    return SetRemap(source=_text_value(args.get(0, 'src')),
+                    target=_text_value(args.get(1, 'dst')),
+                    **_common(interp, args, node))
+
+
+def _set_parameter(interp, args, node):
+    return SetParameter(name=_text_value(args.get(0, 'name')),
+                        value=args.get(1, 'value'),
+                        **_common(interp, args, node))
+
+
+def _set_env(interp, args, node):
+    return SetEnv(name=_text_value(args.get(0, 'name')),
+                  value=_text_value(args.get(1, 'value', default='')),
+                  **_common(interp, args, node))
+
+
+def _unset_env(interp, args, node):
+    return SetEnv(name=_text_value(args.get(0, 'name')), value=None,
+                  **_common(interp, args, node))
+
+
+def _opaque(what):
+    def build(interp, args, node):
+        return Opaque(note=f'{what}; not analysed',
+                      **_common(interp, args, node))
+    return build
+
+
+def _ignored(interp, args, node):
+    return Ignored(location=interp.loc(node))
+
+
+def _event_handler(keyword, what):
+    def build(interp, args, node):
+        value = args.get(None, keyword)
+        if isinstance(value, _Function) or value is None:
+            return _EventHandler([UnknownValue(
+                f'{interp.loc(node)}: actions of {what} not known '
+                'statically')], what)
+        return _EventHandler(_entities(interp, value, node), what)
+    return build
+
+
+def _register_event_handler(interp, args, node):
+    handler = args.get(0, 'event_handler')
+    if not isinstance(handler, _EventHandler):
+        return interp.unknown(node, 'event handler not understood')
+    common = _common(interp, args, node)
+    common['notes'] = common['notes'] + [
+        f'{interp.loc(node)}: started by an event handler ({handler.what})']
+    return Group(actions=handler.actions, scoped=False, **common)
+
+
+def _launch_configuration(interp, args, node):
+    return LaunchConfig(_text_value(args.get(0, 'variable_name')),
+                        _text_value(args.get(1, 'default')))
+
+
+def _text_substitution(interp, args, node):
+    text = args.get(0, 'text', default='')
+    return text if isinstance(text, str) else _text_value(text)
+
+
+def _path_join(interp, args, node):
+    parts = args.get(0, 'substitutions')
+    if not isinstance(parts, (list, tuple)):
+        return interp.unknown(node, 'PathJoinSubstitution of a value not '
+                              'known statically')
+    return PathJoin([_text_value(p) for p in parts])
+
+
+def _package_path(kind):
+    def build(interp, args, node):
+        return PackagePath(_text_value(args.get(0, 'package')), kind)
+    return build
+
+
+def _package_directory(kind):
+    def build(interp, args, node):
+        package = args.get(0, 'package_name')
+        if not isinstance(package, str):
+            return interp.unknown(node, 'package name not known statically')
+        try:
+            return interp.loader.find_package(package, kind)
+        except Unresolved as e:
+            return interp.unknown(node, str(e))
+    return build
+
+
+def _environment_variable(interp, args, node):
+    return EnvVar(_text_value(args.get(0, 'name')),
+                  _text_value(args.get(1, 'default_value')))
+
+
+def _python_expression(interp, args, node):
+    value = args.get(0, 'expression')
+    return PyExpr(list(value) if isinstance(value, (list, tuple))
+                  else [value])
+
+
+def _this_file(directory):
+    def build(interp, args, node):
+        return ThisFile(directory)
+    return build
+
+
+def _not_static(what):
+    def build(interp, args, node):
+        return interp.unknown(node, f'{what} is only known at run time')
+    return build
+
+
+def _anon_name(interp, args, node):
+    name = args.get(0, 'name')
+    if not isinstance(name, str):
+        return interp.unknown(node, 'AnonName of a value not known')
+    return UnknownValue(f'{interp.loc(node)}: AnonName({name!r}) is a '
+                        'unique name chosen at run time')
+
+
+def _bool_sub(op):
+    def build(interp, args, node):
+        return BoolOp(op, [_text_value(a) for a in args.args] +
+                      [_text_value(v) for v in args.kwargs.values()])
+    return build
+
+
+def _condition(kind):
+    def build(interp, args, node):
+        return Cond(kind, [_text_value(args.get(0, 'predicate_expression'))])
+    return build
+
+
+def _config_equals(kind):
+    def build(interp, args, node):
+        return Cond(kind, [_text_value(args.get(0, 'launch_configuration_'
+                                                'name')),
+                           _text_value(args.get(1, 'expected_value'))])
+    return build
+
+
+def _parameter_file(interp, args, node):
+    allow = args.get(1, 'allow_substs', default=False)
+    return _ParameterFile(_text_value(args.get(0, 'param_file')),
+                          allow is True)
+
+
+def _parameter_value(interp, args, node):
+    value = args.get(0, 'value')
+    value_type = args.get(None, 'value_type')
+    if isinstance(value_type, _Ref) and value_type.qualname == \
+            'builtins.str':
+        return TypedValue(_text_value(value))
+    return _text_value(value)
+
+
+_LAUNCH_API = {
+    'LaunchDescription': _launch_description,
+    'DeclareLaunchArgument': _declare,
+    'SetLaunchConfiguration': _set_configuration,
+    'Node': _node,
+    'LifecycleNode': _node,
+    'ComposableNodeContainer': _container,
+    'ComposableNode': _composable,
+    'LoadComposableNodes': _load_composables,
+    'IncludeLaunchDescription': _include,
+    'PythonLaunchDescriptionSource': _source_of,
+    'XMLLaunchDescriptionSource': _source_of,
+    'YAMLLaunchDescriptionSource': _source_of,
+    'AnyLaunchDescriptionSource': _source_of,
+    'FrontendLaunchDescriptionSource': _source_of,
+    'GroupAction': _group,
+    'TimerAction': _timer,
+    'PushRosNamespace': _push_namespace,
+    'PushROSNamespace': _push_namespace,
+    'SetRemap': _set_remap,
+    'SetParameter': _set_parameter,
+    'SetEnvironmentVariable': _set_env,
+    'UnsetEnvironmentVariable': _unset_env,
+    'ExecuteProcess': _opaque('ExecuteProcess runs a process that is not a '
+                              'ROS node description'),
+    'OpaqueFunction': _opaque('OpaqueFunction runs Python code at launch '
+                              'time'),
+    'SetParametersFromFile': _opaque('SetParametersFromFile'),
+    'LogInfo': _ignored,
+    'EmitEvent': _ignored,
+    'Shutdown': _ignored,
+    'RegisterEventHandler': _register_event_handler,
+    'OnProcessStart': _event_handler('on_start', 'OnProcessStart'),
+    'OnProcessExit': _event_handler('on_exit', 'OnProcessExit'),
+    'OnExecutionComplete': _event_handler('on_completion',
+                                          'OnExecutionComplete'),
+    'OnShutdown': _event_handler('on_shutdown', 'OnShutdown'),
+    'LaunchConfiguration': _launch_configuration,
+    'TextSubstitution': _text_substitution,
+    'PathJoinSubstitution': _path_join,
+    'FindPackageShare': _package_path('share'),
+    'FindPackagePrefix': _package_path('prefix'),
+    'get_package_share_directory': _package_directory('share'),
+    'get_package_prefix': _package_directory('prefix'),
+    'EnvironmentVariable': _environment_variable,
+    'PythonExpression': _python_expression,
+    'ThisLaunchFileDir': _this_file(True),
+    'ThisLaunchFile': _this_file(False),
+    'Command': _not_static('the output of Command'),
+    'FindExecutable': _not_static('FindExecutable'),
+    'ExecutableInPackage': _not_static('ExecutableInPackage'),
+    'AnonName': _anon_name,
+    'NotSubstitution': _bool_sub('not'),
+    'AndSubstitution': _bool_sub('and'),
+    'OrSubstitution': _bool_sub('or'),
+    'EqualsSubstitution': _bool_sub('equals'),
+    'NotEqualsSubstitution': _bool_sub('not_equals'),
+    'IfElseSubstitution': _bool_sub('if_else'),
+    'IfCondition': _condition('if'),
+    'UnlessCondition': _condition('unless'),
+    'LaunchConfigurationEquals': _config_equals('equals'),
+    'LaunchConfigurationNotEquals': _config_equals('not_equals'),
+    'ParameterFile': _parameter_file,
+    'ParameterValue': _parameter_value,
+}

@@ -1,0 +1,228 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""A tiny expression evaluator for ``$(eval …)`` and ``PythonExpression``.
+
+The expression is parsed with :func:`ast.parse` and only a small subset is
+interpreted: literals, arithmetic, comparisons, ``and``/``or``/``not``,
+conditional expressions, string concatenation, the conversions ``str``,
+``int``, ``float`` and ``bool``, bare argument names and a few lookup
+functions (``arg('x')``…) supplied by the caller. Nothing is ever handed to
+Python's ``eval``.
+"""
+
+import ast
+import math
+import operator
+
+
+class Unresolved(Exception):
+    """A value that cannot be determined statically (the message says why)."""
+
+
+# an expression longer than this is not a launch-file expression; the
+# limit also keeps ast.parse far from its nesting limits
+MAX_EXPRESSION_LENGTH = 2000
+# nesting depth of the evaluated tree; the Python stack stays well below its
+# own limit
+MAX_DEPTH = 100
+# longest string an expression may build ('x' * 10 ** 9 must not run)
+MAX_STRING_LENGTH = 100000
+# largest magnitude of a number an expression may build
+MAX_NUMBER = 10 ** 308
+
+_BINARY = {
+    ast.Add: operator.add,
+    ast.Sub: operator.sub,
+    ast.Mult: operator.mul,
+    ast.Div: operator.truediv,
+    ast.FloorDiv: operator.floordiv,
+    ast.Mod: operator.mod,
+    ast.Pow: operator.pow,
+}
+
+_COMPARE = {
+    ast.Eq: operator.eq,
+    ast.NotEq: operator.ne,
+    ast.Lt: operator.lt,
+    ast.LtE: operator.le,
+    ast.Gt: operator.gt,
+    ast.GtE: operator.ge,
+    ast.In: lambda a, b: operator.contains(b, a),
+    ast.NotIn: lambda a, b: not operator.contains(b, a),
+}
+
+_SCALARS = (str, int, float, bool, type(None))
+# conversions between the scalar types (no other built-in is reachable)
+_CONVERSIONS = {'str': str, 'int': int, 'float': float, 'bool': bool}
+
+
+def evaluate(expression, *, lookup=None, functions=None):
+    """Evaluate an expression of the safe subset.
+
+    :param str expression: the expression text
+    :param lookup: callable name -> value for bare names (raises
+      :class:`Unresolved` for unknown ones); None: no names are known
+    :param dict functions: name -> callable for calls such as ``arg('x')``
+    :returns: the value (str, int, float, bool or None)
+    :raises Unresolved: for anything outside the subset or not known
+    """
+    if not isinstance(expression, str):
+        raise Unresolved('the expression is not a string')
+    text = expression.strip()
+    if len(text) > MAX_EXPRESSION_LENGTH:
+        raise Unresolved('the expression is too long to evaluate')
+    try:
+        tree = ast.parse(text, mode='eval')
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        raise Unresolved(f'not a valid expression: {_short(text)}')
+    evaluator = _Evaluator(lookup, functions or {})
+    return evaluator.eval(tree.body, 0)
+
+
+def to_text(value):
+    """The text an evaluated expression substitutes (``str()`` of it)."""
+    try:
+        text = str(value)
+    except ValueError:  # an int beyond Python's str conversion limit
+        raise Unresolved('the expression value is too large')
+    return text
+
+
+def _short(text, limit=60):
+    return text if len(text) <= limit else text[:limit] + '…'
+
+
+def _check(value):
+    if isinstance(value, str) and len(value) > MAX_STRING_LENGTH:
+        raise Unresolved('the expression builds a string that is too long')
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if isinstance(value, float) and math.isnan(value):
+            return value
+        if abs(value) > MAX_NUMBER:
+            raise Unresolved('the expression builds a number that is too large')
+    if not isinstance(value, _SCALARS):
+        raise Unresolved('the expression builds an unsupported value')
+    return value
+
+
+class _Evaluator:
+
+    def __init__(self, lookup, functions):
+        self.lookup = lookup
+        self.functions = functions
+
+    def eval(self, node, depth):
+        if depth > MAX_DEPTH:
+            raise Unresolved('the expression is nested too deeply')
+        method = getattr(self, '_' + type(node).__name__, None)
+        if method is None:
+            raise Unresolved(
+                f'{type(node).__name__} is not supported in expressions')
+        return _check(method(node, depth + 1))
+
+    def _Constant(self, node, depth):  # noqa: N802
+        if not isinstance(node.value, _SCALARS):
+            raise Unresolved('only text, numbers and booleans are supported')
+        return node.value
+
+    def _Name(self, node, depth):  # noqa: N802
+        if self.lookup is None:
+            raise Unresolved(f"unknown name '{node.id}'")
+        return self.lookup(node.id)
+
+    def _BinOp(self, node, depth):  # noqa: N802
+        op = _BINARY.get(type(node.op))
+        if op is None:
+            raise Unresolved('operator not supported in expressions')
+        left = self.eval(node.left, depth)
+        right = self.eval(node.right, depth)
+        if isinstance(node.op, ast.Mod) and isinstance(left, str):
+            raise Unresolved('string formatting is not supported')
+        if isinstance(node.op, ast.Mult):
+            _check_repeat(left, right)
+            _check_repeat(right, left)
+        if isinstance(node.op, ast.Pow):
+            _check_power(left, right)
+        try:
+            return op(left, right)
+        except (TypeError, ValueError, ArithmeticError) as e:
+            raise Unresolved(f'the expression fails: {e}')
+
+    def _UnaryOp(self, node, depth):  # noqa: N802
+        value = self.eval(node.operand, depth)
+        if isinstance(node.op, ast.Not):
+            return not value
+        if isinstance(value, str) or value is None:
+            raise Unresolved('unary sign of a non-number')
+        if isinstance(node.op, ast.USub):
+            return -value
+        if isinstance(node.op, ast.UAdd):
+            return +value
+        raise Unresolved('operator not supported in expressions')
+
+    def _BoolOp(self, node, depth):  # noqa: N802
+        value = None
+        for operand in node.values:
+            value = self.eval(operand, depth)
+            if isinstance(node.op, ast.And) and not value:
+                return value
+            if isinstance(node.op, ast.Or) and value:
+                return value
+        return value
+
+    def _Compare(self, node, depth):  # noqa: N802
+        left = self.eval(node.left, depth)
+        for op_node, right_node in zip(node.ops, node.comparators):
+            op = _COMPARE.get(type(op_node))
+            if op is None:
+                raise Unresolved('comparison not supported in expressions')
+            right = self.eval(right_node, depth)
+            try:
+                result = op(left, right)
+            except TypeError as e:
+                raise Unresolved(f'the comparison fails: {e}')
+            if not result:
+                return False
+            left = right
+        return True
+
+    def _IfExp(self, node, depth):  # noqa: N802
+        if self.eval(node.test, depth):
+            return self.eval(node.body, depth)
+        return self.eval(node.orelse, depth)
+
+    def _Call(self, node, depth):  # noqa: N802
+        if not isinstance(node.func, ast.Name) or node.keywords:
+            raise Unresolved('only simple calls such as arg(…) are supported')
+        function = self.functions.get(node.func.id,
+                                      _CONVERSIONS.get(node.func.id))
+        if function is None:
+            raise Unresolved(f"unknown function '{node.func.id}'")
+        args = []
+        for a in node.args:
+            if isinstance(a, ast.Starred):
+                raise Unresolved('unpacking is not supported')
+            args.append(self.eval(a, depth))
+        try:
+            return function(*args)
+        except (TypeError, ValueError, ArithmeticError) as e:
+            raise Unresolved(f'{node.func.id}() fails: {e}')
+
+
+def _check_repeat(text, count):
+    if isinstance(text, str) and isinstance(count, int):
+        if count > 0 and len(text) * count > MAX_STRING_LENGTH:
+            raise Unresolved('the expression builds a string that is too long')
+
+
+def _check_power(base, exponent):
+    if not all(isinstance(v, (int, float)) for v in (base, exponent)):
+        return
+    if base in (0, 1, -1) or exponent == 0:
+        return
+    try:
+        magnitude = abs(float(exponent)) * math.log10(abs(float(base)))
+    except (OverflowError, ValueError):
+        raise Unresolved('the power is too large')
+    if magnitude > 308:
+        raise Unresolved('the power is too large')

@@ -1,0 +1,154 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The paper's Fig. 2 system, deployed by ROS 1 and ROS 2 launch files."""
+
+import json
+
+from colcon_rsia.graph import graph_to_json
+from colcon_rsia.impact import expand_changed
+from colcon_rsia.impact import impact_to_json
+from colcon_rsia.store import find_summaries
+from colcon_rsia.store import read_summary
+from colcon_rsia.system import load_system
+from conftest import build_workspace
+from conftest import WORKSPACES
+import pytest
+import yaml
+
+FIG2 = WORKSPACES / 'fig2'
+EXPECTED = yaml.safe_load((FIG2 / 'expected.yaml').read_text())
+LAUNCH_FILES = EXPECTED['launch']['files']
+PACKAGE = EXPECTED['launch']['package']
+
+
+@pytest.fixture(scope='session')
+def fig2_workspace(tmp_path_factory):
+    workspace = build_workspace(FIG2 / 'src', tmp_path_factory.mktemp('fig2'))
+    assert workspace.returncode == 0, workspace.stdout + workspace.stderr
+    return workspace
+
+
+@pytest.fixture(scope='session')
+def fig2_summaries(fig2_workspace):
+    return [read_summary(path) for path in
+            find_summaries(str(fig2_workspace.build_base)).values()]
+
+
+def _package_paths():
+    return {p.name: str(p) for p in (FIG2 / 'src').iterdir()}
+
+
+def _system(summaries, launch_file, args):
+    words = [PACKAGE, launch_file] + [f'{k}:={v}' for k, v in args.items()]
+    return load_system(summaries, launch=words,
+                       package_paths=_package_paths())
+
+
+def _instances(system):
+    graph = graph_to_json(system)
+    view = {}
+    for node in graph['nodes']:
+        entry = {
+            'node': f"{node['package']}/{node['executable']}",
+            'publishes': {p['resolved']: p['label']
+                          for p in node['publishers']},
+            'subscribes': sorted(s['resolved'] for s in node['subscribers']),
+        }
+        if node['kind'] == 'unknown':
+            entry['unknown'] = True
+            topics = {t['name']: t for t in graph['topics']}
+            entry['publishes'] = {
+                name: 'dependent' for name, t in topics.items()
+                if node['id'] in t['publishers']}
+            entry['subscribes'] = sorted(
+                name for name, t in topics.items()
+                if node['id'] in t['subscribers'])
+        view[node['id']] = entry
+    return view
+
+
+def _expected_instances(variant=None):
+    instances = {k: dict(v) for k, v in EXPECTED['instances'].items()}
+    for entry in instances.values():
+        entry['subscribes'] = sorted(entry['subscribes'])
+        entry['publishes'] = dict(entry['publishes'])
+    if variant:
+        for removed in variant.get('removed', []):
+            instances.pop(removed)
+        for name, entry in (variant.get('instances') or {}).items():
+            entry = dict(entry)
+            entry['subscribes'] = sorted(entry['subscribes'])
+            instances[name] = entry
+    return instances
+
+
+VARIANTS = [None] + EXPECTED.get('launch_args', [])
+
+
+@pytest.mark.parametrize('launch_file', LAUNCH_FILES)
+@pytest.mark.parametrize(
+    'variant', VARIANTS,
+    ids=['defaults'] + [
+        ','.join(f'{k}={v}' for k, v in v['args'].items())
+        for v in VARIANTS[1:]])
+def test_instances_and_topics(fig2_summaries, launch_file, variant):
+    args = variant['args'] if variant else {}
+    system = _system(fig2_summaries, launch_file, args)
+    assert _instances(system) == _expected_instances(variant)
+
+
+def _impact_cases():
+    cases = []
+    for variant in VARIANTS:
+        args = variant['args'] if variant else {}
+        impacts = variant['impact'] if variant else EXPECTED['impact']
+        for case in impacts:
+            for launch_file in LAUNCH_FILES:
+                name = '+'.join(case['changed']) + (
+                    f' with {args}' if args else '')
+                cases.append(pytest.param(
+                    launch_file, args, case, id=f'{launch_file}:{name}'))
+    return cases
+
+
+@pytest.mark.parametrize('launch_file, args, case', _impact_cases())
+def test_impact_sets(fig2_summaries, launch_file, args, case):
+    system = _system(fig2_summaries, launch_file, args)
+    result = impact_to_json(system, expand_changed(system, case['changed']))
+    assert result['rate_impact'] == case['rate_impact']
+    assert result['traditional_impact'] == case['traditional_impact']
+
+
+def test_fig2_traditional_19_rate_aware_about_half(fig2_summaries):
+    system = _system(fig2_summaries, 'robot.launch', {})
+    result = impact_to_json(system, ['/sensors/laser_front'])
+    assert len(result['traditional_impact']) == 19
+    assert len(result['rate_impact']) <= 10
+
+
+def test_cli_launch_pkg_file_with_arguments(fig2_workspace):
+    result = fig2_workspace.colcon(
+        'rsia', 'impact', '--base-paths', str(fig2_workspace.src),
+        '--launch', PACKAGE, 'robot.launch', 'use_rviz:=false',
+        '--changed', '/sensors/laser_front', '--format', 'json', check=True)
+    data = json.loads(result.stdout)
+    assert data['changed'] == ['/sensors/laser_front']
+    assert '/ui/rviz' not in data['traditional_impact']
+    graph = fig2_workspace.colcon(
+        'rsia', 'graph', '--base-paths', str(fig2_workspace.src),
+        '--launch', PACKAGE, 'robot.launch', '--format', 'json', check=True)
+    nodes = {n['id']: n for n in json.loads(graph.stdout)['nodes']}
+    assert nodes['/ui/rviz']['kind'] == 'unknown'
+    assert nodes['/sensors/laser_front']['package'] == 'cob_sensors'
+    assert nodes['/sensors/laser_front']['executable'] == 'laser_scanner'
+    assert 'not analysed' in graph.stderr
+
+
+def test_cli_launch_errors_are_one_message(fig2_workspace):
+    result = fig2_workspace.colcon(
+        'rsia', 'graph', '--base-paths', str(fig2_workspace.src),
+        '--launch', PACKAGE, 'missing.launch')
+    assert result.returncode != 0
+    assert "no launch file 'missing.launch' in package 'cob_bringup'" in \
+        result.stderr
+    assert 'Traceback' not in result.stderr
