@@ -122,10 +122,13 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
     facts.diagnostics = [
         f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)]
+    includes = sorted({
+        os.path.abspath(i.include.name) for i in tu.get_includes()
+        if i.include is not None})
+    facts.files = [relative] + [
+        os.path.relpath(i, package_path) for i in includes
+        if _inside(i, package_path)]
     if cache_file is not None:
-        includes = sorted({
-            i.include.name for i in tu.get_includes()
-            if i.include is not None})
         _write_cache(cache_file, entry, [entry.file] + includes, facts)
     return facts, list(facts.diagnostics)
 
@@ -236,6 +239,8 @@ def _node(package, executable, kind, sources, path, merged, seeds,
         id=node_id or f'{package}/{executable}', package=package,
         executable=executable, kind=kind,
         sources=sorted(os.path.relpath(s, path) for s in sources),
+        files=sorted(set(merged.files) | {
+            os.path.relpath(s, path) for s in sources}),
         publishers=sorted(publishers, key=lambda p: (p.location, p.topic or '')),
         subscribers=sorted((
             model.NodeSubscriber(

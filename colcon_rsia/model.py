@@ -236,6 +236,8 @@ class TuFacts:
     bindings: List[ParamBinding] = field(default_factory=list)
     param_reads: List[ParamRead] = field(default_factory=list)
     plugin_exports: List[List[str]] = field(default_factory=list)
+    # the package's own files the unit read (its source and headers)
+    files: List[str] = field(default_factory=list)
     diagnostics: List[str] = field(default_factory=list)
 
     def to_dict(self):  # noqa: D102
@@ -371,6 +373,9 @@ class Node:
     executable: str
     kind: str                      # executable | nodelet
     sources: List[str] = field(default_factory=list)
+    # every file of the package the node's code is read from (sources,
+    # headers, modules): what a change must touch to change the node
+    files: List[str] = field(default_factory=list)
     publishers: List[LabelledPublisher] = field(default_factory=list)
     subscribers: List[NodeSubscriber] = field(default_factory=list)
     timers: List[NodeTimer] = field(default_factory=list)
@@ -432,6 +437,7 @@ def _node_from_dict(data):
         id=data['id'], package=data['package'],
         executable=data['executable'], kind=data['kind'],
         sources=list(data.get('sources', [])),
+        files=list(data.get('files', [])),
         publishers=publishers,
         subscribers=subscribers,
         timers=[NodeTimer(**t) for t in data.get('timers', [])],

@@ -148,7 +148,7 @@ def extract_python_facts(path, *, package_path, module_name,
     """
     package_path = os.path.abspath(package_path)
     relpath = os.path.relpath(os.path.abspath(path), package_path)
-    facts = model.TuFacts(source=relpath)
+    facts = model.TuFacts(source=relpath, files=[relpath])
     modules = dict(package_modules)
     modules[module_name] = path
     project = _Project(package_path, modules)
