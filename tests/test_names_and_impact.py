@@ -9,6 +9,7 @@ from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import rate_impact
 from colcon_rsia.impact import traditional_impact
 from colcon_rsia.impact import UnknownNodeError
+from colcon_rsia.names import join
 from colcon_rsia.names import resolve
 import pytest
 
@@ -121,3 +122,51 @@ def test_remaps_match_resolved_names_in_the_node_namespace():
     # the last matching remap wins
     assert resolve('a', node_name='n', remaps=[('a', 'b'), ('a', 'c')]) \
         == '/c'
+
+
+_NAME_PART = '[a-z][a-z0-9_]{0,5}'
+
+
+def _names():
+    from hypothesis import strategies as st
+    part = st.from_regex(f'\\A{_NAME_PART}\\Z')
+    relative = st.lists(part, min_size=1, max_size=4).map('/'.join)
+    return st.one_of(
+        relative, relative.map(lambda n: '/' + n),
+        relative.map(lambda n: '~' + n), relative.map(lambda n: '~/' + n))
+
+
+def _namespaces():
+    from hypothesis import strategies as st
+    part = st.from_regex(f'\\A{_NAME_PART}\\Z')
+    return st.lists(part, max_size=3).map(lambda p: '/' + '/'.join(p))
+
+
+def test_resolution_properties():
+    from hypothesis import given
+    from hypothesis import settings
+    from hypothesis import strategies as st
+
+    @settings(max_examples=300, derandomize=True, deadline=None)
+    @given(name=_names(), namespace=_namespaces(),
+           node=st.from_regex(f'\\A{_NAME_PART}\\Z'),
+           handle=st.sampled_from(['', '~', 'sub', '/abs', '~priv']))
+    def check(name, namespace, node, handle):
+        resolved = resolve(name, node_name=node, namespace=namespace,
+                           handle_namespace=handle)
+        # always a normalised global name
+        assert resolved.startswith('/') and '//' not in resolved
+        assert not resolved.endswith('/') or resolved == '/'
+        # resolving a global name again changes nothing
+        assert resolve(resolved, node_name='other', namespace='/x',
+                       handle_namespace=handle) == resolved
+        # the relative part is kept at the end
+        assert resolved.endswith(name.lstrip('~').lstrip('/'))
+        # private names live under the node's full name
+        if name.startswith('~'):
+            assert resolved.startswith(join(namespace, node) + '/')
+        # a remap of the resolved name is applied, to a global target
+        assert resolve(name, node_name=node, namespace=namespace,
+                       handle_namespace=handle,
+                       remaps=[(resolved, '/remapped')]) == '/remapped'
+    check()
