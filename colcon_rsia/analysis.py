@@ -7,6 +7,7 @@ The event handler and ``colcon rsia analyze`` both call
 """
 
 from concurrent.futures import ThreadPoolExecutor
+import glob
 import hashlib
 import json
 import os
@@ -17,6 +18,7 @@ from colcon_rsia import model
 from colcon_rsia import store
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
+from colcon_rsia.frontend.compile_db import CompileEntry
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
@@ -39,9 +41,30 @@ def default_jobs():
     return max(1, os.cpu_count() or 1)
 
 
+HEADER_MODES = ('model', 'exact')
+
+"""Environment variable choosing the header mode of the event handler."""
+HEADER_MODE_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_HEADER_MODE'
+
+"""Environment variable with the C++ standard used without a build."""
+STD_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_CXX_STD'
+DEFAULT_STD = 'c++17'
+
+CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
+# directories whose sources are never a node's (tests, generated output)
+SKIPPED_DIRECTORIES = frozenset({
+    'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
+
+
 def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
-                    nothing_compiled=False):
-    """Analyse a C++ package from its compile database; store the summary.
+                    nothing_compiled=False, header_mode='exact',
+                    workspace_src_dirs=(), extra_arguments=()):
+    """Analyse a C++ package; store the summary.
+
+    The translation units and their flags come from the package's compile
+    database, or, when there is none (a package never built), from its
+    sources with flags made up from the workspace (see
+    :func:`synthesized_entries`).
 
     :param str name: the package name
     :param str path: the package source directory
@@ -50,21 +73,44 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     :param bool use_cache: reuse facts of unchanged translation units
     :param bool nothing_compiled: the package compiles no translation unit
       (CMake wrote no compile database): summarise it with no nodes
+    :param str header_mode: 'exact' parses with the headers the compiler
+      used; 'model' with the tool's model headers of the ROS API and
+      stand-ins for everything else (no ROS installation needed)
+    :param workspace_src_dirs: source directories of the workspace, whose
+      headers the model mode keeps
+    :param extra_arguments: more compiler arguments for every TU
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
     :rtype: colcon_rsia.model.PackageSummary
     :raises AnalysisError: when the package cannot be analysed at all
     """
+    if header_mode not in HEADER_MODES:
+        raise AnalysisError(
+            f"unknown header mode '{header_mode}' (one of "
+            f"{', '.join(HEADER_MODES)})")
     started = time.monotonic()
     path = os.path.abspath(path)
     db_path = os.path.join(build_base, COMPILE_DB_FILENAME)
-    try:
-        entries = [] if nothing_compiled else load_compile_database(db_path)
-    except CompileDatabaseError as e:
-        raise AnalysisError(str(e)) from None
+    if nothing_compiled:
+        entries = []
+    elif os.path.isfile(db_path):
+        try:
+            entries = load_compile_database(db_path)
+        except CompileDatabaseError as e:
+            raise AnalysisError(str(e)) from None
+    else:
+        entries = synthesized_entries(
+            path, workspace_src_dirs=workspace_src_dirs,
+            with_system_ros=header_mode == 'exact')
     entries = [e for e in entries if _inside(e.file, path)]
+    for entry in entries:
+        entry.arguments = list(entry.arguments) + list(extra_arguments)
     resource_dir = find_resource_dir()
-    if resource_dir is None:
+    if resource_dir is None and entries:
         raise AnalysisError(RESOURCE_DIR_HINT)
+    if header_mode == 'model':
+        entries = _model_entries(
+            entries, path, workspace_src_dirs,
+            os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
 
     units, diagnostics = parse_units(
         entries, package_path=path, resource_dir=resource_dir,
@@ -72,10 +118,58 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         jobs=jobs or default_jobs())
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units)
+    summary.header_mode = header_mode
     summary.diagnostics = diagnostics + summary.diagnostics
     summary.seconds = round(time.monotonic() - started, 3)
     store.write_summary(build_base, summary)
     return summary
+
+
+def synthesized_entries(path, *, workspace_src_dirs=(), with_system_ros=True):
+    """Translation units and flags of a package that was never built.
+
+    Every C++ source of the package (tests and build output aside), with
+    the package's ``include/`` and source directories, the ``include/``
+    directories of the workspace's packages, and, for the exact mode, the
+    ROS include directories installed on the machine.
+    """
+    std = os.environ.get(STD_ENVIRONMENT_VARIABLE, DEFAULT_STD)
+    include_dirs = [os.path.join(path, 'include')]
+    for src in workspace_src_dirs:
+        include_dirs += sorted(glob.glob(os.path.join(src, '*', 'include')))
+        include_dirs += sorted(glob.glob(
+            os.path.join(src, '*', '*', 'include')))
+    if with_system_ros:
+        include_dirs += sorted(glob.glob('/opt/ros/*/include'))
+    include_dirs = [d for d in dict.fromkeys(include_dirs) if os.path.isdir(d)]
+    entries = []
+    for root, dirs, files in os.walk(path):
+        dirs[:] = sorted(
+            d for d in dirs
+            if d not in SKIPPED_DIRECTORIES and not d.startswith('.'))
+        for file in sorted(files):
+            if not file.endswith(CXX_EXTENSIONS):
+                continue
+            arguments = ['-x', 'c++', f'-std={std}', '-I', root]
+            for directory in include_dirs:
+                arguments += ['-I', directory]
+            entries.append(CompileEntry(
+                file=os.path.join(root, file), directory=path,
+                arguments=arguments))
+    return entries
+
+
+def _model_entries(entries, path, workspace_src_dirs, stub_dir):
+    from colcon_rsia.frontend.model_mode import prepare_model_arguments
+    model_entries = []
+    for entry in entries:
+        arguments = prepare_model_arguments(
+            source=entry.file, arguments=entry.arguments,
+            package_path=path, workspace_src_dirs=list(workspace_src_dirs),
+            stub_dir=stub_dir, directory=entry.directory)
+        model_entries.append(CompileEntry(
+            file=entry.file, directory=entry.directory, arguments=arguments))
+    return model_entries
 
 
 def _inside(file, directory):
@@ -129,7 +223,9 @@ def _unit_facts(entry, package_path, resource_dir, cache):
         os.path.relpath(i, package_path) for i in includes
         if _inside(i, package_path)]
     if cache_file is not None:
-        _write_cache(cache_file, entry, [entry.file] + includes, facts)
+        # stand-ins only grow as other TUs are prepared: not an input
+        inputs = [i for i in includes if f'/{store.RSIA_DIRNAME}/stubs/' not in i]
+        _write_cache(cache_file, entry, [entry.file] + inputs, facts)
     return facts, list(facts.diagnostics)
 
 
@@ -149,9 +245,15 @@ def _frontend_digest():
     if not _FRONTEND_DIGEST:
         digest = hashlib.sha1()
         here = os.path.dirname(os.path.abspath(__file__))
-        for relative in ('model.py', 'frontend/cpp.py',
-                         'frontend/const_eval.py', 'frontend/ros_api.py'):
-            with open(os.path.join(here, relative), 'rb') as h:
+        files = [os.path.join(here, relative) for relative in (
+            'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
+            'frontend/ros_api.py', 'frontend/model_mode.py')]
+        for root, dirs, names in sorted(os.walk(
+                os.path.join(here, 'frontend', 'model_headers'))):
+            dirs.sort()
+            files += [os.path.join(root, n) for n in sorted(names)]
+        for file in files:
+            with open(file, 'rb') as h:
                 digest.update(h.read())
         _FRONTEND_DIGEST.append(digest.hexdigest())
     return _FRONTEND_DIGEST[0]

@@ -17,6 +17,7 @@ from typing import Optional
 from colcon_rsia import store
 from colcon_rsia.analysis import AnalysisError
 from colcon_rsia.analysis import analyze_package
+from colcon_rsia.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
@@ -31,6 +32,10 @@ PYTHON_PACKAGE_TYPES = frozenset({'ros.ament_python'})
 MIXED_PACKAGE_TYPES = frozenset({'ros.catkin', 'ros.ament_cmake'})
 
 EXPORT_FLAG = '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'
+
+# the header mode of packages with a compile database, unless asked
+# otherwise (see the README's measurements)
+DEFAULT_HEADER_MODE = 'exact'
 
 
 @dataclass
@@ -107,13 +112,28 @@ def recorded_cmake_args(build_base):
     return value if isinstance(value, list) else None
 
 
+def default_header_mode():
+    """The header mode when none is asked for (environment, else default)."""
+    return os.environ.get(HEADER_MODE_ENVIRONMENT_VARIABLE) or \
+        DEFAULT_HEADER_MODE
+
+
 def analyze(*, name, package_type, path, build_base, cmake_args=None,
-            jobs=None):
-    """Analyse one package; return an :class:`Outcome`, never raise."""
+            jobs=None, header_mode=None, workspace_src_dirs=(),
+            without_build=False):
+    """Analyse one package; return an :class:`Outcome`, never raise.
+
+    :param header_mode: 'model' or 'exact'; None: :func:`default_header_mode`
+    :param workspace_src_dirs: the workspace's source directories
+    :param bool without_build: analyse a package that has no compile
+      database from its sources (else: warn how to get the database)
+    """
     try:
         return _analyze(
             name=name, package_type=package_type, path=path,
-            build_base=build_base, cmake_args=cmake_args, jobs=jobs)
+            build_base=build_base, cmake_args=cmake_args, jobs=jobs,
+            header_mode=header_mode, workspace_src_dirs=workspace_src_dirs,
+            without_build=without_build)
     except AnalysisError as e:
         return Outcome(name, error=str(e))
     except Exception as e:  # noqa: B902
@@ -123,7 +143,8 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
                                    f'{detail}); please report it')
 
 
-def _analyze(*, name, package_type, path, build_base, cmake_args, jobs):
+def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
+             header_mode, workspace_src_dirs, without_build):
     # imported here: most colcon calls never analyse anything
     from colcon_rsia.python_analysis import analyze_python_package
     from colcon_rsia.python_analysis import build_python_summary
@@ -139,20 +160,25 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs):
         bool(find_python_nodes(path).nodes)
     has_database = os.path.isfile(
         os.path.join(build_base, COMPILE_DB_FILENAME))
-    if not has_database and not exports_compile_commands(build_base):
-        if has_python and not find_executables(
-                package_path=path, build_base=build_base):
+    exported = exports_compile_commands(build_base)
+    has_cpp = bool(find_executables(package_path=path, build_base=build_base))
+    if not has_database and not exported and not without_build:
+        if has_python and not has_cpp:
             # a package of Python scripts needs no compile database
             return Outcome(name, summary=analyze_python_package(
                 name=name, path=path, build_base=build_base))
         if cmake_args is None:
             cmake_args = recorded_cmake_args(build_base)
         return Outcome(name, warning=missing_compile_db_message(cmake_args))
+    if header_mode is None:
+        # without a build the real ROS headers may not even be installed
+        header_mode = default_header_mode() if has_database else 'model'
     # CMake asked for a database but wrote none: nothing is compiled (a
     # header-only or launch-only package), so it has no C++ nodes
     summary = analyze_package(
         name=name, path=path, build_base=build_base, jobs=jobs,
-        nothing_compiled=not has_database)
+        nothing_compiled=exported and not has_database,
+        header_mode=header_mode, workspace_src_dirs=workspace_src_dirs)
     if has_python:
         started = time.monotonic()
         python = build_python_summary(name=name, path=path)

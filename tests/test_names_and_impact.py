@@ -170,3 +170,26 @@ def test_resolution_properties():
                        handle_namespace=handle,
                        remaps=[(resolved, '/remapped')]) == '/remapped'
     check()
+
+
+def test_impact_all_agrees_with_one_traversal_per_node():
+    import random
+    rng = random.Random(7)
+    for _ in range(20):
+        names = [f'n{i}' for i in range(12)]
+        topics = [f't{i}' for i in range(6)]
+        spec = {
+            name: ([(rng.choice(topics), rng.choice([I, D]))
+                    for _ in range(rng.randint(0, 2))],
+                   [rng.choice(topics) for _ in range(rng.randint(0, 2))])
+            for name in names}
+        system = _system(spec)
+        rows = {r['id']: r for r in impact_all(system)['nodes']}
+        for node_id in sorted(system.instances):
+            traditional = traditional_impact(system, [node_id])
+            if not traditional:
+                assert node_id not in rows
+                continue
+            assert rows[node_id]['traditional_impact'] == len(traditional)
+            assert rows[node_id]['rate_impact'] == \
+                len(rate_impact(system, [node_id]))

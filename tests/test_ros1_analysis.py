@@ -2,9 +2,11 @@
 # Licensed under the Apache License, Version 2.0
 """The analysis of the ROS 1 test workspace against hand-written files."""
 
+import json
 from pathlib import Path
 import re
 
+from conftest import run_colcon
 from conftest import WORKSPACES
 from projection import project_nodes
 import pytest
@@ -76,3 +78,26 @@ def test_every_label_has_evidence_pointing_at_code(ros1_workspace):
                         publisher['publish_sites']:
                     assert 'path' in kinds, publisher
     assert checked > 0
+
+
+@pytest.fixture(scope='module')
+def unbuilt_model_summaries(tmp_path_factory):
+    """The ros1 workspace analysed without a build, with the model headers."""
+    root = tmp_path_factory.mktemp('ros1_unbuilt')
+    result = run_colcon(
+        ['rsia', 'analyze', '--base-paths', str(WORKSPACES / 'ros1' / 'src'),
+         '--header-mode', 'model'], cwd=root, check=True)
+    assert 'Traceback' not in result.stdout + result.stderr
+    return root / 'build'
+
+
+@pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
+def test_unbuilt_workspace_in_model_mode_matches_expected_file(
+        unbuilt_model_summaries, path):
+    expected = _expected(path)
+    summary = json.loads((
+        unbuilt_model_summaries / expected['package'] / 'rsia' /
+        'summary.json').read_text())
+    assert summary['header_mode'] == 'model'
+    assert project_nodes(summary['nodes']) == \
+        project_nodes(expected.get('nodes') or [])

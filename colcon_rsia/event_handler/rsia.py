@@ -2,6 +2,7 @@
 # Licensed under the Apache License, Version 2.0
 
 from concurrent.futures import ThreadPoolExecutor
+import os
 import time
 
 from colcon_core.event.job import JobEnded
@@ -64,10 +65,12 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
                 max_workers=self.PACKAGE_WORKERS,
                 thread_name_prefix='rsia')
             self._started = time.monotonic()
+        base_paths = getattr(self.context.args, 'base_paths', None) or ['.']
         self._pending.append(self._pool.submit(
             analyze, name=pkg.name, package_type=pkg.type,
             path=str(pkg.path), build_base=args.build_base,
-            cmake_args=getattr(args, 'cmake_args', None)))
+            cmake_args=getattr(args, 'cmake_args', None),
+            workspace_src_dirs=[os.path.abspath(p) for p in base_paths]))
 
     def _report_finished(self):
         still_running = []

@@ -205,6 +205,29 @@ def first_function(cursor):
     return None
 
 
+def _overload_candidate(call):
+    """The callee of a call libclang left unresolved, when unambiguous.
+
+    A broken argument (a field a stand-in lacks) leaves the call's
+    overload set unresolved; when every candidate has the same qualified
+    name, the call is still that API.
+    """
+    children = _children(call)
+    if not children:
+        return None
+    for current in [children[0]] + list(_walk_preorder(children[0])):
+        if current.kind != CK.OVERLOADED_DECL_REF:
+            continue
+        count = ci.conf.lib.clang_getNumOverloadedDecls(current)
+        candidates = [ci.conf.lib.clang_getOverloadedDecl(current, i)
+                      for i in range(count)]
+        names = {qualified_name(c) for c in candidates}
+        if candidates and len(names) == 1:
+            return candidates[0]
+        return None
+    return None
+
+
 def _call_object(call):
     """The object expression of a member call, or None."""
     children = _children(call)
@@ -445,6 +468,8 @@ class _Walker:
 
     def _call(self, cursor, ctx, stack):
         ref = cursor.referenced
+        if ref is None:
+            ref = _overload_candidate(cursor)
         if ref is None:
             return
         if ref.kind in FUNCTION_KINDS and self.in_package(ref):

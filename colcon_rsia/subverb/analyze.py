@@ -25,6 +25,13 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
     def add_arguments(self, *, parser):  # noqa: D102
         add_workspace_arguments(parser)
         parser.add_argument(
+            '--header-mode', choices=('model', 'exact'), default=None,
+            help='model: parse with the model headers of the ROS API and '
+                 'stand-ins for the rest (fast, needs no ROS installation); '
+                 'exact: with the headers the compiler used. Default: the '
+                 'COLCON_RSIA_HEADER_MODE environment variable, else exact '
+                 'for built packages and model for packages never built')
+        parser.add_argument(
             '--jobs', type=int, default=None,
             help='Translation units parsed in parallel (default: the number '
                  'of CPUs)')
@@ -32,6 +39,9 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
     def main(self, *, context):  # noqa: D102
         args = context.args
         decorators = [d for d in get_packages(args) if d.selected]
+        workspace_src_dirs = sorted({
+            os.path.abspath(p) for p in (getattr(args, 'base_paths', None) or
+                                         ['.'])})
         build_base = os.path.abspath(args.build_base)
         started = time.monotonic()
         analysed = 0
@@ -42,7 +52,8 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             outcome = analyze(
                 name=pkg.name, package_type=pkg.type, path=str(pkg.path),
                 build_base=os.path.join(build_base, pkg.name),
-                jobs=args.jobs)
+                jobs=args.jobs, header_mode=args.header_mode,
+                workspace_src_dirs=workspace_src_dirs, without_build=True)
             print(outcome.line(), flush=True)
             analysed += outcome.summary is not None
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '

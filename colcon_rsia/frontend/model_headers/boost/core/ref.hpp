@@ -1,0 +1,2 @@
+// colcon-rsia model of <boost/core/ref.hpp>.
+#include <boost/ref.hpp>

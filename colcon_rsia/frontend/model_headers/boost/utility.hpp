@@ -1,0 +1,2 @@
+// colcon-rsia model of <boost/utility.hpp>.
+#include <boost/noncopyable.hpp>

@@ -1,0 +1,2 @@
+// colcon-rsia model of <ros/datatypes.h>.
+#include <ros/types.h>

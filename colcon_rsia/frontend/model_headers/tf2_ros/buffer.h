@@ -1,0 +1,47 @@
+// colcon-rsia model of <tf2_ros/buffer.h>: tf2_ros::Buffer (the timeout forms
+// of lookupTransform/canTransform, and those of tf2::BufferCore by `using`).
+#ifndef RSIA_MODEL_TF2_ROS_BUFFER_H
+#define RSIA_MODEL_TF2_ROS_BUFFER_H
+
+#include <string>
+
+#include <ros/ros.h>
+#include <tf2/buffer_core.h>
+#include <tf2_ros/buffer_interface.h>
+
+namespace tf2_ros
+{
+
+class Buffer : public BufferInterface, public tf2::BufferCore
+{
+public:
+  using tf2::BufferCore::lookupTransform;
+  using tf2::BufferCore::canTransform;
+
+  Buffer(ros::Duration cache_time = ros::Duration(BufferCore::DEFAULT_CACHE_TIME), bool debug = false);
+
+  virtual geometry_msgs::TransformStamped lookupTransform(const std::string& target_frame,
+                                                          const std::string& source_frame,
+                                                          const ros::Time& time,
+                                                          const ros::Duration timeout) const;
+  virtual geometry_msgs::TransformStamped lookupTransform(const std::string& target_frame,
+                                                          const ros::Time& target_time,
+                                                          const std::string& source_frame,
+                                                          const ros::Time& source_time,
+                                                          const std::string& fixed_frame,
+                                                          const ros::Duration timeout) const;
+  virtual bool canTransform(const std::string& target_frame, const std::string& source_frame,
+                            const ros::Time& target_time, const ros::Duration timeout,
+                            std::string* errstr = NULL) const;
+  virtual bool canTransform(const std::string& target_frame, const ros::Time& target_time,
+                            const std::string& source_frame, const ros::Time& source_time,
+                            const std::string& fixed_frame, const ros::Duration timeout,
+                            std::string* errstr = NULL) const;
+};
+
+static const std::string threading_error = "Do not call canTransform or lookupTransform with a timeout "
+                                           "unless another thread populates the buffer.";
+
+}  // namespace tf2_ros
+
+#endif  // RSIA_MODEL_TF2_ROS_BUFFER_H

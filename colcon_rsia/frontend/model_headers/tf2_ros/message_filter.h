@@ -1,0 +1,81 @@
+// colcon-rsia model of <tf2_ros/message_filter.h>: a message filter (no topic of its
+// own) whose registerCallback is message_filters::SimpleFilter's.
+#ifndef RSIA_MODEL_TF2_ROS_MESSAGE_FILTER_H
+#define RSIA_MODEL_TF2_ROS_MESSAGE_FILTER_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <boost/function.hpp>
+#include <boost/shared_ptr.hpp>
+#include <message_filters/connection.h>
+#include <message_filters/simple_filter.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <tf2/buffer_core.h>
+
+namespace tf2_ros
+{
+
+namespace filter_failure_reasons
+{
+
+enum FilterFailureReason
+{
+  Unknown,
+  OutTheBack,
+  EmptyFrameID,
+};
+
+}  // namespace filter_failure_reasons
+typedef filter_failure_reasons::FilterFailureReason FilterFailureReason;
+
+class MessageFilterBase
+{
+public:
+  typedef std::vector<std::string> V_string;
+
+  virtual ~MessageFilterBase();
+  virtual void clear() = 0;
+  virtual void setTargetFrame(const std::string& target_frame) = 0;
+  virtual void setTargetFrames(const V_string& target_frames) = 0;
+  virtual void setTolerance(const ros::Duration& tolerance) = 0;
+};
+
+template <class M>
+class MessageFilter : public MessageFilterBase, public message_filters::SimpleFilter<M>
+{
+public:
+  typedef boost::shared_ptr<M const> MConstPtr;
+  typedef ros::MessageEvent<M const> MEvent;
+  typedef boost::function<void(const MConstPtr&, FilterFailureReason)> FailureCallback;
+
+  MessageFilter(tf2::BufferCore& bc, const std::string& target_frame, uint32_t queue_size, const ros::NodeHandle& nh);
+  template <class F>
+  MessageFilter(F& f, tf2::BufferCore& bc, const std::string& target_frame, uint32_t queue_size,
+                const ros::NodeHandle& nh);
+  MessageFilter(tf2::BufferCore& bc, const std::string& target_frame, uint32_t queue_size,
+                ros::CallbackQueueInterface* cbqueue);
+  template <class F>
+  MessageFilter(F& f, tf2::BufferCore& bc, const std::string& target_frame, uint32_t queue_size,
+                ros::CallbackQueueInterface* cbqueue);
+  ~MessageFilter();
+
+  template <class F>
+  void connectInput(F& f);
+  void setTargetFrame(const std::string& target_frame);
+  void setTargetFrames(const V_string& target_frames);
+  std::string getTargetFramesString();
+  void setTolerance(const ros::Duration& tolerance);
+  void clear();
+  void add(const MEvent& evt);
+  void add(const MConstPtr& message);
+  message_filters::Connection registerFailureCallback(const FailureCallback& callback);
+  virtual void setQueueSize(uint32_t new_queue_size);
+  virtual uint32_t getQueueSize();
+};
+
+}  // namespace tf2_ros
+
+#endif  // RSIA_MODEL_TF2_ROS_MESSAGE_FILTER_H

@@ -1,0 +1,2 @@
+// colcon-rsia model of <xmlrpcpp/XmlRpc.h>.
+#include <xmlrpcpp/XmlRpcValue.h>
