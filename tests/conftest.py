@@ -69,10 +69,11 @@ def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S):
 
 
 def build_workspace(src, root, *, handler=True, compile_commands=True,
-                    extra=()):
+                    extra=(), log_base=None):
     """colcon build a workspace whose sources are `src` into `root`."""
     root.mkdir(parents=True, exist_ok=True)
-    args = ['build', '--base-paths', str(src)]
+    args = ['--log-base', log_base] if log_base else []
+    args += ['build', '--base-paths', str(src)]
     if handler:
         args += ['--event-handlers', 'rsia+']
     cmake_args = list(CMAKE_ARGS) if compile_commands else CMAKE_ARGS[1:]

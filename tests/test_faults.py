@@ -198,11 +198,30 @@ def test_missing_compiler_does_not_matter(bad_sources):
     assert node['publishers'][0]['topic'] == 'out'
 
 
-def test_unresolvable_include_is_named(bad_sources):
+def test_unresolvable_include_gets_a_stand_in_in_model_mode(bad_sources):
     root, _ = bad_sources
     summary = _summary(root, 'noinclude')
+    assert summary['header_mode'] == 'model'
+    [node] = summary['nodes']
+    assert node['publishers'][0]['topic'] == 'out'
+    stand_in = root / 'build' / 'noinclude' / 'rsia' / 'stubs'
+    assert list(stand_in.rglob('missing.h'))
+    assert not list((root / 'src').rglob('missing.h'))
+
+
+def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
+    _package(tmp_path, 'noinclude', {
+        'n.cpp': '#include <acme/missing.h>\n' + GOOD_NODE})
+    result = run_colcon(
+        ['rsia', 'analyze', '--base-paths', str(tmp_path / 'src'),
+         '--build-base', str(tmp_path / 'build'), '--header-mode', 'exact'],
+        cwd=tmp_path)
+    assert result.returncode == 0
+    _no_traceback(result)
+    summary = _summary(tmp_path, 'noinclude')
     assert any("'acme/missing.h' file not found" in d
                for d in summary['diagnostics'])
+    assert 'rsia: noinclude: 0 nodes' not in result.stdout
 
 
 def test_five_megabyte_source_is_analysed(bad_sources):
@@ -307,10 +326,13 @@ def test_two_concurrent_builds_with_the_handler(tmp_path):
     assert first.returncode == 0, first.stderr
     results = []
 
-    def build():
+    def build(number):
+        # colcon's own 'latest' log symlink races between two runs sharing
+        # a log base: give each its own, the builds share everything else
         results.append(build_workspace(FAULTS, root, extra=[
-            '--packages-select', 'fault_good', 'fault_scripts']))
-    threads = [threading.Thread(target=build) for _ in range(2)]
+            '--packages-select', 'fault_good', 'fault_scripts'],
+            log_base=f'log{number}'))
+    threads = [threading.Thread(target=build, args=(n,)) for n in range(2)]
     for thread in threads:
         thread.start()
     for thread in threads:

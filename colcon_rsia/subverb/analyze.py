@@ -29,8 +29,7 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             help='model: parse with the model headers of the ROS API and '
                  'stand-ins for the rest (fast, needs no ROS installation); '
                  'exact: with the headers the compiler used. Default: the '
-                 'COLCON_RSIA_HEADER_MODE environment variable, else exact '
-                 'for built packages and model for packages never built')
+                 'COLCON_RSIA_HEADER_MODE environment variable, else model')
         parser.add_argument(
             '--jobs', type=int, default=None,
             help='Translation units parsed in parallel (default: the number '
