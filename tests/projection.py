@@ -3,6 +3,8 @@
 """Project a summary onto the fields of the hand-written expected files."""
 
 import json
+from pathlib import Path
+import re
 
 PUBLISHER_FIELDS = ('topic', 'msg_type', 'api', 'label', 'pattern', 'rate_hz')
 SUBSCRIBER_FIELDS = ('topic', 'msg_type', 'api', 'callback')
@@ -42,3 +44,40 @@ def project_node(node):
 def project_nodes(nodes):
     """{node id: view} of a list of nodes."""
     return {node['id']: project_node(node) for node in nodes}
+
+
+def _source_line(package_path, location):
+    file, _, line = location.rpartition(':')
+    lines = (Path(package_path) / file).read_text().splitlines()
+    return lines[int(line) - 1]
+
+
+def check_evidence(summary, publish_words):
+    """Assert every label's evidence points at the code that decided it.
+
+    :returns: the number of publish sites checked
+    """
+    checked = 0
+    for node in summary['nodes']:
+        for publisher in node['publishers']:
+            assert publisher['evidence'], publisher
+            for site in publisher['publish_sites']:
+                text = _source_line(summary['path'], site)
+                assert publish_words.search(text), (site, text)
+                checked += 1
+            kinds = {e['kind'] for e in publisher['evidence']}
+            pattern = publisher['pattern']
+            if pattern in ('timer', 'mixed'):
+                assert 'timer' in kinds, publisher
+            if pattern in ('rate_loop', 'mixed'):
+                assert 'rate_loop' in kinds, publisher
+                for e in publisher['evidence']:
+                    if e['kind'] == 'rate_loop':
+                        text = _source_line(summary['path'], e['location'])
+                        assert re.search(r'\b(while|for|do)\b', text), text
+            if pattern == 'no_subscribers':
+                assert 'no_subscribers' in kinds
+            if publisher['label'] == 'dependent' and \
+                    publisher['publish_sites']:
+                assert 'path' in kinds, publisher
+    return checked

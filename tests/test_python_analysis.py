@@ -5,7 +5,6 @@
 Nothing is built: the Python front end reads the sources where they are.
 """
 
-from pathlib import Path
 import re
 import shutil
 
@@ -14,6 +13,7 @@ from colcon_rsia.python_nodes import find_python_nodes
 from colcon_rsia.store import read_summary
 from conftest import build_workspace
 from conftest import WORKSPACES
+from projection import check_evidence
 from projection import project_nodes
 import pytest
 import yaml
@@ -64,39 +64,12 @@ def test_expected_files_cover_every_package():
     assert packages == {_expected(p)['package'] for p in EXPECTED}
 
 
-def _source_line(package_path, location):
-    file, _, line = location.rpartition(':')
-    lines = (Path(package_path) / file).read_text().splitlines()
-    return lines[int(line) - 1]
-
-
 def test_every_label_has_evidence_pointing_at_code(tmp_path):
     checked = 0
     for path in EXPECTED:
         package = _expected(path)['package']
         summary = _analyse(SRC / package, tmp_path / package)
-        for node in summary['nodes']:
-            for publisher in node['publishers']:
-                assert publisher['evidence'], publisher
-                for site in publisher['publish_sites']:
-                    text = _source_line(summary['path'], site)
-                    assert PUBLISH_WORDS.search(text), (site, text)
-                    checked += 1
-                kinds = {e['kind'] for e in publisher['evidence']}
-                pattern = publisher['pattern']
-                if pattern in ('timer', 'mixed'):
-                    assert 'timer' in kinds, publisher
-                if pattern in ('rate_loop', 'mixed'):
-                    assert 'rate_loop' in kinds, publisher
-                    for e in publisher['evidence']:
-                        if e['kind'] == 'rate_loop':
-                            text = _source_line(summary['path'], e['location'])
-                            assert re.search(r'\b(while|for)\b', text), text
-                if pattern == 'no_subscribers':
-                    assert 'no_subscribers' in kinds
-                if publisher['label'] == 'dependent' and \
-                        publisher['publish_sites']:
-                    assert 'path' in kinds, publisher
+        checked += check_evidence(summary, PUBLISH_WORDS)
     assert checked > 0
 
 
