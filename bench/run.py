@@ -159,31 +159,47 @@ def analysis_seconds(output):
 
 
 def synthetic_system(nodes, seed=1):
-    """A random system graph of `nodes` nodes.
+    """A random robot-like system graph of `nodes` nodes.
 
-    Each node has 3 publishers and 3 subscriptions over nodes/2 topics; a
-    third of the publisher edges are independent.
+    Nodes sit in layers (sensors, perception, planning, control, drivers
+    feeding back odometry); each node subscribes to 1-3 topics of the
+    layer before it (or of feedback topics) and publishes 1-3 topics, a
+    third of them independent (timers, rate loops).
     """
     rng = random.Random(seed)
-    topics = [f'/t{i}' for i in range(nodes // 2)]
+    layers = 6
+    per_layer = max(1, nodes // layers)
+    topics_by_layer = [[] for _ in range(layers)]
     summary_nodes = []
     for index in range(nodes):
-        publishers = [model.LabelledPublisher(
-            topic=rng.choice(topics), topic_is_literal=True, msg_type='m',
-            api='a', handle='h', namespace='', location='f:1',
-            label=rng.choice([model.INDEPENDENT, model.DEPENDENT,
-                              model.DEPENDENT]),
-            pattern='none', rate_hz=None) for _ in range(3)]
-        subscribers = [model.NodeSubscriber(
-            topic=rng.choice(topics), topic_is_literal=True, msg_type='m',
-            api='a', callback='cb', namespace='', location='f:2')
-            for _ in range(3)]
-        summary_nodes.append(model.Node(
+        layer = min(index // per_layer, layers - 1)
+        publishers = []
+        for number in range(rng.randint(1, 3)):
+            topic = f'/l{layer}/n{index}/t{number}'
+            topics_by_layer[layer].append(topic)
+            publishers.append(model.LabelledPublisher(
+                topic=topic, topic_is_literal=True, msg_type='m', api='a',
+                handle='h', namespace='', location='f:1',
+                label=rng.choice([model.INDEPENDENT, model.DEPENDENT,
+                                  model.DEPENDENT]),
+                pattern='none', rate_hz=None))
+        summary_nodes.append((layer, model.Node(
             id=f'p/n{index}', package='p', executable=f'n{index}',
-            kind='executable', publishers=publishers,
-            subscribers=subscribers))
+            kind='executable', publishers=publishers)))
+    for layer, node in summary_nodes:
+        if layer == 0:
+            continue  # sensors subscribe to nothing
+        sources = topics_by_layer[layer - 1]
+        if layer == 1:
+            # feedback: odometry of the drivers reaches perception
+            sources = sources + topics_by_layer[layers - 1][:20]
+        node.subscribers = [model.NodeSubscriber(
+            topic=rng.choice(sources), topic_is_literal=True, msg_type='m',
+            api='a', callback='cb', namespace='', location='f:2')
+            for _ in range(rng.randint(1, 3))]
     return build_graph([model.PackageSummary(
-        package='p', path='/p', tool_version='0', nodes=summary_nodes)])
+        package='p', path='/p', tool_version='0',
+        nodes=[node for _, node in summary_nodes])])
 
 
 def measure_memory(src, build_base):
