@@ -248,3 +248,87 @@ class _Parser:
         if value is None:
             raise ValueError(f'not a number: {token}')
         return value
+
+
+# --- std::chrono durations ---------------------------------------------------
+
+# the suffixes of the std::chrono literal operators, in seconds
+_CHRONO_SUFFIXES = {
+    'h': 3600.0, 'min': 60.0, 's': 1.0, 'ms': 1e-3, 'us': 1e-6, 'ns': 1e-9}
+_CHRONO_LITERAL = re.compile(
+    r'^((?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)(h|min|s|ms|us|ns)$')
+_RATIO = re.compile(r'std::(?:__1::)?ratio<\s*(\d+)[lLuU]*\s*(?:,\s*(\d+)[lLuU]*\s*)?>')
+
+
+def is_chrono_duration(type_):
+    """Whether a libclang type is a ``std::chrono::duration``."""
+    canonical = type_.get_canonical().spelling
+    return 'std::chrono::duration<' in canonical or \
+        'std::__1::chrono::duration<' in canonical
+
+
+def _duration_unit(type_):
+    """Seconds per tick of a std::chrono::duration type, or None."""
+    canonical = type_.get_canonical().spelling
+    start = canonical.find('chrono::duration<')
+    if start < 0:
+        return None
+    match = _RATIO.search(canonical, start)
+    if match is None:
+        return 1.0  # duration<Rep>: seconds
+    numerator = float(match.group(1))
+    denominator = float(match.group(2) or 1)
+    return numerator / denominator
+
+
+def evaluate_duration_seconds(cursor, depth=0):
+    """Seconds of a constant std::chrono duration expression, or None.
+
+    Reads ``100ms`` (the literal operators), ``std::chrono::milliseconds(
+    100)`` and other duration constructors (the period ratio comes from the
+    type), conversions between durations and constant variables holding one.
+    """
+    if cursor is None or depth > MAX_DEPTH:
+        return None
+    tokens = [t.spelling for t in source_tokens(cursor)]
+    if len(tokens) == 1:
+        match = _CHRONO_LITERAL.match(tokens[0])
+        if match:
+            return float(match.group(1)) * _CHRONO_SUFFIXES[match.group(2)]
+    kind = cursor.kind
+    children = [c for c in cursor.get_children()
+                if c.kind not in _NOT_EXPRESSIONS]
+    if kind == CK.DECL_REF_EXPR:
+        declaration = cursor.referenced
+        if declaration is None or declaration.kind != CK.VAR_DECL:
+            return None
+        tokens = [t.spelling for t in declaration.get_tokens()]
+        if not (declaration.type.is_const_qualified() or
+                'constexpr' in tokens):
+            return None
+        inits = [c for c in declaration.get_children()
+                 if c.kind not in _NOT_EXPRESSIONS]
+        return evaluate_duration_seconds(inits[-1], depth + 1) \
+            if inits else None
+    if kind == CK.CALL_EXPR and cursor.referenced is not None and \
+            cursor.referenced.kind == CK.CONSTRUCTOR and \
+            is_chrono_duration(cursor.type):
+        arguments = list(cursor.get_arguments())
+        if len(arguments) != 1:
+            return None
+        if is_chrono_duration(arguments[0].type):
+            return evaluate_duration_seconds(arguments[0], depth + 1)
+        value = evaluate_number(arguments[0], depth + 1)
+        unit = _duration_unit(cursor.type)
+        return value * unit if value is not None and unit else None
+    if kind == CK.BINARY_OPERATOR and len(children) == 2:
+        left = evaluate_duration_seconds(children[0], depth + 1)
+        right = evaluate_number(children[1], depth + 1)
+        operator = _operator_between(cursor, children[0])
+        if left is not None and right is not None and operator in ('*', '/'):
+            return _apply(operator, left, right)
+        return None
+    if len(children) == 1:
+        # implicit conversions, parentheses, temporaries
+        return evaluate_duration_seconds(children[0], depth + 1)
+    return None

@@ -14,7 +14,9 @@ import re
 import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.const_eval import evaluate_number
+from colcon_rsia.frontend.const_eval import is_chrono_duration
 from colcon_rsia.frontend.const_eval import source_tokens
 
 CK = ci.CursorKind
@@ -112,7 +114,8 @@ def qualified_name(cursor):
 
 _MSG_ALLOCATOR = re.compile(r'(\w+)_<\s*(?:class\s+)?std::allocator<void>\s*>')
 _MSG_WRAPPER = re.compile(
-    r'^(?:(?:boost|std)::shared_ptr|ros::MessageEvent)<(.*)>$')
+    r'^(?:(?:boost|std)::(?:shared_ptr|unique_ptr)|ros::MessageEvent)'
+    r'<(.*?)(?:,std::default_delete<.*>)?>$')
 
 
 def normalize_msg_type(spelling):
@@ -129,7 +132,10 @@ def normalize_msg_type(spelling):
             break
         text = match.group(1)
     text = text.replace(' ', '')
-    text = re.sub(r'::(?:ConstPtr|Ptr)$', '', text)
+    # ROS 2 pointer aliases too: `M::SharedPtr`, `M::ConstSharedPtr`, ...
+    text = re.sub(
+        r'::(?:ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr|'
+        r'ConstUniquePtr)$', '', text)
     return text or None
 
 
@@ -598,9 +604,14 @@ class _Walker:
                 if callback:
                     found.append(callback)
             return found
-        callback, _ = self._resolve_callback(
-            self._argument(arguments, position))
-        return [callback] if callback else []
+        positions = position if isinstance(position, tuple) else (position,)
+        found = []
+        for each in positions:
+            callback, _ = self._resolve_callback(
+                self._argument(arguments, each))
+            if callback:
+                found.append(callback)
+        return found
 
     def _callback_msg_type(self, declaration):
         if declaration is None:
@@ -795,7 +806,9 @@ class _Walker:
         argument = self._argument(arguments, api.period_arg)
         rate_hz = None
         if argument is not None:
-            if 'Duration' in argument.type.spelling:
+            if is_chrono_duration(argument.type):
+                rate_hz = _period_rate_hz(argument)
+            elif 'Duration' in argument.type.spelling:
                 rate_hz = _period_rate_hz(argument)
             else:
                 rate_hz = evaluate_number(argument)
@@ -918,7 +931,15 @@ def _period_rate_hz(argument):
     """Hz of a period argument (``ros::Duration(0.1)``, ``Rate(10)``, 5.0)."""
     if argument is None:
         return None
+    seconds = evaluate_duration_seconds(argument)
+    if seconds:
+        return _round(1.0 / seconds)
     for current in [argument] + list(_walk_preorder(argument)):
+        if current.kind == CK.CALL_EXPR and current.referenced is not None \
+                and qualified_name(current.referenced) == \
+                'rclcpp::Duration::from_seconds':
+            values = [evaluate_number(a) for a in current.get_arguments()]
+            return _round(1.0 / values[0]) if values and values[0] else None
         if current.kind != CK.CALL_EXPR or current.referenced is None or \
                 current.referenced.kind != CK.CONSTRUCTOR:
             continue

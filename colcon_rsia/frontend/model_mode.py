@@ -735,6 +735,9 @@ def _printable(text):
 def _stand_ins_for(include, codes):
     """{include name: content} of the stand-in(s) for one include."""
     parts = include.split('/')
+    if len(parts) == 3 and parts[1] in _ROS2_INTERFACE_DIRS and \
+            parts[2].endswith('.hpp') and _PACKAGE.match(parts[0]):
+        return {include: _ros2_interface_stub(*parts, codes)}
     if len(parts) != 2 or not parts[1].endswith('.h'):
         return {include: _empty_stub(include)}
     package, name = parts[0], parts[1][:-2]
@@ -789,6 +792,71 @@ def _stand_ins_for(include, codes):
             f'struct {name}Response_;', ''],
         typedefs=[('Request', f'{name}Request_<ContainerAllocator>'),
                   ('Response', f'{name}Response_<ContainerAllocator>')])}
+
+
+# ROS 2 interfaces: `<pkg/msg/laser_scan.hpp>` declares
+# `pkg::msg::LaserScan_<ContainerAllocator>` and `pkg::msg::LaserScan`
+_ROS2_INTERFACE_DIRS = frozenset({'msg', 'srv', 'action'})
+
+
+def _ros2_type_name(package, kind, file_stem, codes):
+    """The CamelCase name a snake_case interface header declares."""
+    wanted = file_stem.replace('_', '').lower()
+    pattern = re.compile(
+        r'\b' + re.escape(package) + r'\s*::\s*' + kind +
+        r'\s*::\s*([A-Z]\w*)')
+    for code in codes:
+        for match in pattern.finditer(code):
+            if match.group(1).lower() == wanted:
+                return match.group(1)
+    return ''.join(p[:1].upper() + p[1:] for p in file_stem.split('_'))
+
+
+def _ros2_interface_stub(package, kind, file_name, codes):
+    stem = file_name[:-len('.hpp')]
+    if '__' in stem or not _PACKAGE.match(stem):
+        return _empty_stub(f'{package}/{kind}/{file_name}')
+    name = _ros2_type_name(package, kind, stem, codes)
+    guard = f'RSIA_STUB_{package}_{kind}_{stem}_HPP'
+    lines = [
+        f'{_STUB_MARKER} kind=ros2_{kind}: <{package}/{kind}/{file_name}>',
+        '// a ROS 2 interface the model mode cannot read: the name, template',
+        '// shape and pointer aliases of a generated rosidl header, its fields',
+        '// the catch-all rsia_model::Fields',
+        f'#ifndef {guard}', f'#define {guard}', '',
+        '#include <memory>', '#include <rsia_model/message.h>', '',
+        f'namespace {package}', '{', f'namespace {kind}', '{', '']
+
+    def struct(struct_name):
+        return [
+            'template <class ContainerAllocator>',
+            f'struct {struct_name}_ : ::rsia_model::Fields',
+            '{',
+            f'  using Type = {struct_name}_<ContainerAllocator>;',
+            f'  using SharedPtr = std::shared_ptr<{struct_name}_>;',
+            f'  using ConstSharedPtr = std::shared_ptr<const {struct_name}_>;',
+            f'  using UniquePtr = std::unique_ptr<{struct_name}_>;',
+            f'  using ConstUniquePtr = std::unique_ptr<const {struct_name}_>;',
+            f'  using WeakPtr = std::weak_ptr<{struct_name}_>;',
+            '};',
+            f'using {struct_name} = {struct_name}_<std::allocator<void>>;', '']
+    if kind == 'msg':
+        lines += struct(name)
+    elif kind == 'srv':
+        lines += struct(name + '_Request') + struct(name + '_Response')
+        lines += [f'struct {name}', '{',
+                  f'  using Request = {name}_Request;',
+                  f'  using Response = {name}_Response;', '};', '']
+    else:
+        parts = ('Goal', 'Result', 'Feedback')
+        for part in parts:
+            lines += struct(f'{name}_{part}')
+        lines += [f'struct {name}', '{']
+        lines += [f'  using {part} = {name}_{part};' for part in parts]
+        lines += ['};', '']
+    lines += [f'}}  // namespace {kind}', f'}}  // namespace {package}', '',
+              f'#endif  // {guard}', '']
+    return '\n'.join(lines)
 
 
 def _guard(package, name):

@@ -64,6 +64,24 @@ class Api:
 
 
 NH = 'ros::NodeHandle::'
+
+
+def _ros2_node_methods(prefix):
+    """The create_* methods of rclcpp::Node and LifecycleNode."""
+    return {
+        prefix + 'create_publisher': Api(PUBLISHER, name_arg=0),
+        prefix + 'create_subscription': Api(
+            SUBSCRIBER, name_arg=0, callback_arg=2),
+        prefix + 'create_generic_publisher': Api(PUBLISHER, name_arg=0),
+        prefix + 'create_generic_subscription': Api(
+            SUBSCRIBER, name_arg=0, callback_arg=3),
+        prefix + 'create_wall_timer': Api(
+            TIMER, callback_arg=1, period_arg=0),
+        prefix + 'create_timer': Api(TIMER, callback_arg=1, period_arg=0),
+        prefix + 'create_service': Api(SERVICE, name_arg=0, callback_arg=1),
+    }
+
+
 IT = 'image_transport::ImageTransport::'
 
 CALLS = {
@@ -140,6 +158,27 @@ CALLS = {
         label='actionlib::SimpleActionClient'),
     'actionlib::ActionClient::ActionClient': Api(
         ACTION_CLIENT, name_arg=FIRST_STRING, label='actionlib::ActionClient'),
+    # rclcpp (ROS 2): Node and LifecycleNode share the method shapes
+    **_ros2_node_methods('rclcpp::Node::'),
+    **_ros2_node_methods('rclcpp_lifecycle::LifecycleNode::'),
+    'rclcpp::create_publisher': Api(PUBLISHER, name_arg=1),
+    'rclcpp::create_subscription': Api(SUBSCRIBER, name_arg=1, callback_arg=3),
+    # create_timer(node, clock, period, callback)
+    'rclcpp::create_timer': Api(TIMER, callback_arg=3, period_arg=2),
+    'rclcpp::Publisher::publish': Api(PUBLISH),
+    'rclcpp::GenericPublisher::publish': Api(PUBLISH),
+    'rclcpp_lifecycle::LifecyclePublisher::publish': Api(PUBLISH),
+    # Humble: Rate/WallRate are GenericRate<Clock>; Jazzy+: classes
+    'rclcpp::GenericRate::GenericRate': Api(RATE, period_arg=0),
+    'rclcpp::Rate::Rate': Api(RATE, period_arg=0),
+    'rclcpp::WallRate::WallRate': Api(RATE, period_arg=0),
+    'rclcpp::GenericRate::sleep': Api(RATE_SLEEP),
+    'rclcpp::Rate::sleep': Api(RATE_SLEEP),
+    'rclcpp::WallRate::sleep': Api(RATE_SLEEP),
+    # rclcpp_action::create_server<A>(node, name, goal, cancel, accepted)
+    'rclcpp_action::create_server': Api(
+        ACTION_SERVER, name_arg=1, callback_arg=(2, 3, 4)),
+    'rclcpp_action::create_client': Api(ACTION_CLIENT, name_arg=1),
     # nodelet handles
     'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),

@@ -3,6 +3,29 @@
 #ifndef RSIA_MODEL_TF2_ROS_STATIC_TRANSFORM_BROADCASTER_H
 #define RSIA_MODEL_TF2_ROS_STATIC_TRANSFORM_BROADCASTER_H
 
+// ROS 1 and ROS 2 share this include name: a ROS 2 TU includes
+// <rclcpp/rclcpp.hpp> first (directly or through its own headers),
+// which defines RSIA_MODEL_RCLCPP; then the ROS 2 class is declared.
+#ifdef RSIA_MODEL_RCLCPP
+#include <string>
+
+namespace tf2_ros
+{
+
+class StaticTransformBroadcaster
+{
+public:
+  template<class NodeT>
+  StaticTransformBroadcaster(NodeT && node);
+  template<class NodeT>
+  StaticTransformBroadcaster(NodeT && node, const rclcpp::QoS & qos);
+  template<class TransformT>
+  void sendTransform(const TransformT & transform);
+};
+
+}  // namespace tf2_ros
+#else  // ROS 1
+
 #include <vector>
 
 #include <geometry_msgs/TransformStamped.h>
@@ -21,5 +44,7 @@ public:
 };
 
 }  // namespace tf2_ros
+
+#endif  // RSIA_MODEL_RCLCPP
 
 #endif  // RSIA_MODEL_TF2_ROS_STATIC_TRANSFORM_BROADCASTER_H

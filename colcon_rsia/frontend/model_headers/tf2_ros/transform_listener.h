@@ -3,6 +3,27 @@
 #ifndef RSIA_MODEL_TF2_ROS_TRANSFORM_LISTENER_H
 #define RSIA_MODEL_TF2_ROS_TRANSFORM_LISTENER_H
 
+// ROS 1 and ROS 2 share this include name: a ROS 2 TU includes
+// <rclcpp/rclcpp.hpp> first (directly or through its own headers),
+// which defines RSIA_MODEL_RCLCPP; then the ROS 2 class is declared.
+#ifdef RSIA_MODEL_RCLCPP
+#include <string>
+
+namespace tf2_ros
+{
+
+class Buffer;
+class TransformListener
+{
+public:
+  explicit TransformListener(Buffer & buffer, bool spin_thread = true);
+  template<class NodeT>
+  TransformListener(Buffer & buffer, NodeT && node, bool spin_thread = true);
+};
+
+}  // namespace tf2_ros
+#else  // ROS 1
+
 #include <boost/thread.hpp>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
@@ -24,5 +45,7 @@ public:
 };
 
 }  // namespace tf2_ros
+
+#endif  // RSIA_MODEL_RCLCPP
 
 #endif  // RSIA_MODEL_TF2_ROS_TRANSFORM_LISTENER_H

@@ -1,0 +1,2 @@
+// colcon-rsia model of <tf2_ros/static_transform_broadcaster.hpp> (ROS 2 Jazzy+ name)
+#include <tf2_ros/static_transform_broadcaster.h>
