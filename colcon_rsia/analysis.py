@@ -28,6 +28,7 @@ from colcon_rsia.node_facts import node_facts
 from colcon_rsia.node_facts import resolve_namespace
 from colcon_rsia.node_facts import select_functions
 from colcon_rsia.node_facts import topic_param
+from colcon_rsia.nodes import find_components
 from colcon_rsia.nodes import find_executables
 from colcon_rsia.nodes import find_nodelets
 
@@ -316,10 +317,17 @@ def build_summary(*, name, path, build_base, units):
             name, executable, 'executable', sources, path,
             merge_facts(own + library), seeds))
     merged_library = merge_facts(library)
-    nodelets = find_nodelets(
-        package_path=path,
-        exported_classes=merge_facts(units.values()).plugin_exports)
-    for plugin, class_name in sorted(nodelets.items()):
+    exported = merge_facts(units.values()).plugin_exports
+    plugins = [
+        (plugin, class_name, 'nodelet') for plugin, class_name in sorted(
+            find_nodelets(package_path=path,
+                          exported_classes=exported).items())]
+    plugins += [
+        (executable, class_name, 'component')
+        for executable, class_name in sorted(find_components(
+            package_path=path, exported_classes=exported).items())]
+    # a nodelet or component runs its class's methods and what they call
+    for plugin, class_name, kind in plugins:
         seeds = {f.id for f in merged_library.functions
                  if f.name.startswith(class_name + '::')}
         sources = sorted({
@@ -327,7 +335,7 @@ def build_summary(*, name, path, build_base, units):
             for f in merged_library.functions if f.id in seeds})
         short = plugin.split('/')[-1]
         summary.nodes.append(_node(
-            name, short, 'nodelet', sources, path, merged_library, seeds,
+            name, short, kind, sources, path, merged_library, seeds,
             node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
     return summary
 

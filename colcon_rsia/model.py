@@ -371,7 +371,7 @@ class Node:
     id: str
     package: str
     executable: str
-    kind: str                      # executable | nodelet
+    kind: str                      # executable | nodelet | component
     sources: List[str] = field(default_factory=list)
     # every file of the package the node's code is read from (sources,
     # headers, modules): what a change must touch to change the node

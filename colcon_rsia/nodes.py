@@ -157,3 +157,43 @@ def _plugin_xml_files(package_path):
                 files.append(os.path.join(
                     package_path, plugin.replace('${prefix}', '').lstrip('/')))
     return files
+
+
+COMPONENT_BASE_CLASS = 'rclcpp::Node'
+_REGISTER_COMPONENT = re.compile(
+    r'rclcpp_components_register_nodes?\s*\(([^)]*)\)', re.IGNORECASE)
+
+
+def find_components(*, package_path, exported_classes):
+    """Return {node name: class name} of the package's ROS 2 components.
+
+    A component is registered with ``RCLCPP_COMPONENTS_REGISTER_NODE`` in
+    its source and/or ``rclcpp_components_register_node(target PLUGIN
+    "ns::Class" EXECUTABLE name)`` in CMakeLists.txt; it is named after the
+    executable when one is given, else after its class.
+    """
+    classes = {c.lstrip(':') for c, base in exported_classes
+               if base == COMPONENT_BASE_CLASS}
+    executables = {}
+    try:
+        with open(os.path.join(package_path, 'CMakeLists.txt'),
+                  encoding='utf-8', errors='replace') as h:
+            text = re.sub(r'#[^\n]*', '', h.read())
+    except OSError:
+        text = ''
+    for match in _REGISTER_COMPONENT.finditer(text):
+        words = [w.strip('"') for w in match.group(1).split()]
+        plugin = executable = None
+        for keyword, value in zip(words, words[1:]):
+            if keyword == 'PLUGIN':
+                plugin = value.lstrip(':')
+            elif keyword == 'EXECUTABLE':
+                executable = value
+        if match.group(0).lower().startswith('rclcpp_components_register_nodes'):
+            # the plural form lists plugin classes, no executables
+            classes.update(w.lstrip(':') for w in words[1:] if '::' in w)
+        elif plugin:
+            classes.add(plugin)
+            if executable:
+                executables[plugin] = executable
+    return {executables.get(c, c.split('::')[-1]): c for c in sorted(classes)}

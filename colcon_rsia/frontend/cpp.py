@@ -46,6 +46,10 @@ STATEMENT_KINDS = frozenset({
 EXPORT_MACRO = re.compile(
     r'\b(?:PLUGINLIB_EXPORT_CLASS|CLASS_LOADER_REGISTER_CLASS)\s*\(\s*'
     r'([\w:]+)\s*,\s*([\w:]+)\s*\)')
+COMPONENT_MACRO = re.compile(
+    r'\bRCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)')
+# the base recorded for a registered ROS 2 component
+COMPONENT_BASE = 'rclcpp::Node'
 
 # incomplete: we never need the TU's template instantiations at its end
 PARSE_OPTIONS = ci.TranslationUnit.PARSE_INCOMPLETE
@@ -342,6 +346,9 @@ class _Walker:
         for match in EXPORT_MACRO.finditer(text):
             self.facts.plugin_exports.append(
                 [match.group(1).lstrip(':'), match.group(2).lstrip(':')])
+        for match in COMPONENT_MACRO.finditer(text):
+            self.facts.plugin_exports.append(
+                [match.group(1).lstrip(':'), COMPONENT_BASE])
 
     def _class_id(self, cursor):
         parent = cursor.semantic_parent
