@@ -18,6 +18,7 @@ unpaced edges contains a loop-free path using a subset of them).
 """
 
 from colcon_rsia import model
+from colcon_rsia.frontend import ros_api
 from colcon_rsia.node_facts import handles_of
 from colcon_rsia.node_facts import resolve_namespace
 from colcon_rsia.node_facts import topic_param
@@ -35,9 +36,9 @@ def find_roots(facts):
             if previous is None or previous[0] == model.ROOT_TIMER:
                 roots[function] = (kind, location)
     for function in facts.functions.values():
-        if function.name == 'main':
+        if function.name == ros_api.MAIN_FUNCTION:
             add(function.id, model.ROOT_MAIN, function.location)
-        elif function.name.endswith('::onInit'):
+        elif function.name.endswith('::' + ros_api.NODELET_INIT_METHOD):
             add(function.id, model.ROOT_NODELET, function.location)
     for timer in facts.timers:
         add(timer.callback, model.ROOT_TIMER, timer.location)

@@ -8,27 +8,14 @@ in ``CMakeLists.txt``. Nodelets come from the plugin XML exported in
 ``package.xml`` and the ``PLUGINLIB_EXPORT_CLASS`` lines of the sources.
 """
 
-from dataclasses import dataclass
-from dataclasses import field
 import glob
 import json
 import os
 import re
-from typing import List
 
 import defusedxml.ElementTree as ElementTree
 
 NODELET_BASE_CLASS = 'nodelet::Nodelet'
-
-
-@dataclass
-class NodeSpec:
-    """One node of a package before its facts are known."""
-
-    executable: str
-    kind: str                       # executable | nodelet
-    sources: List[str] = field(default_factory=list)  # absolute paths
-    class_name: str = ''            # nodelets: the C++ class
 
 
 def find_executables(*, package_path, build_base):

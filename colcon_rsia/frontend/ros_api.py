@@ -217,7 +217,6 @@ FORWARDING_FACTORIES = frozenset({
 # functions that are roots of a node by their name alone
 MAIN_FUNCTION = 'main'
 NODELET_INIT_METHOD = 'onInit'
-NODELET_BASE_CLASS = 'nodelet::Nodelet'
 
 
 def lookup_call(qualified_name):

@@ -423,15 +423,6 @@ def params_from_sections(sections, node_fqn, out, path, notes,
             'the node name is not known statically')
 
 
-def optional_str(value):
-    """``str(value)`` for scalars, None for None."""
-    if value is None:
-        return None
-    if isinstance(value, bool):
-        return 'true' if value else 'false'
-    return str(value)
-
-
 def parse_bool(text, what):
     """A launch condition's truth value ('true'/'false'/'1'/'0')."""
     value = str(text).strip().lower()
