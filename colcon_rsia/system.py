@@ -101,10 +101,18 @@ def load_system(summaries, *, launch=None, package_paths=None):
       be read
     """
     if not launch:
-        return build_graph(summaries)
-    from colcon_rsia.launch import load_launch
-    path, arguments = split_launch_arguments(launch, package_paths or {})
-    result = load_launch(
-        path, arguments=arguments, package_paths=package_paths or {})
-    instances, notes = launch_instances(summaries, result)
-    return build_graph(summaries, instances=instances, notes=notes)
+        system = build_graph(summaries)
+        launch_files = []
+    else:
+        from colcon_rsia.launch import load_launch
+        path, arguments = split_launch_arguments(launch, package_paths or {})
+        result = load_launch(
+            path, arguments=arguments, package_paths=package_paths or {})
+        instances, notes = launch_instances(summaries, result)
+        system = build_graph(summaries, instances=instances, notes=notes)
+        launch_files = list(result.files)
+    # what `--since` maps changed files with: the launch and parameter files
+    # read, and the source path each package's node files are relative to
+    system.launch_files = launch_files
+    system.package_sources = {s.package: s.path for s in summaries}
+    return system

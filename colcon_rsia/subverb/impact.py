@@ -2,6 +2,7 @@
 # Licensed under the Apache License, Version 2.0
 
 import json
+import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
@@ -14,6 +15,9 @@ from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 
 logger = colcon_logger.getChild(__name__)
+
+# `impact --fail-on`: the rate-aware impact set holds a listed node
+FAIL_ON_EXIT_CODE = 2
 
 
 class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
@@ -31,6 +35,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             '--changed', nargs='+', metavar='PKG/EXE',
             help='The changed nodes (package/executable, or package/plugin '
                  'for nodelets)')
+        add_since_argument(group)
         group.add_argument(
             '--all', action='store_true',
             help='For every node whose change reaches another node: the '
@@ -38,6 +43,11 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         parser.add_argument(
             '--traditional', action='store_true',
             help='Also list the traditional (data-flow) impact set')
+        parser.add_argument(
+            '--fail-on', nargs='+', metavar='NODE',
+            help='Exit with code 2 (after the normal output) when the '
+                 'rate-aware impact set contains any of these nodes '
+                 '(names as for --changed)')
         parser.add_argument(
             '--format', choices=('text', 'json'), default='text',
             help='Output format (default: text)')
@@ -48,6 +58,8 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         if error:
             return error
         if args.all:
+            if args.fail_on:
+                return '--fail-on needs --changed or --since, not --all'
             result = impact_all(system)
             if args.format == 'json':
                 print(json.dumps(result, indent=2, sort_keys=True))
@@ -55,22 +67,79 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
                 print(_all_text(result), end='')
             return 0
         try:
-            changed = expand_changed(system, args.changed)
+            fail_on = expand_changed(system, args.fail_on or [])
         except UnknownNodeError as e:
-            return str(e)
+            return f'--fail-on: {e}'
+        changed, _, error = select_changed(system, args)
+        if error:
+            return error
         result = impact_to_json(system, changed)
         if args.format == 'json':
             print(json.dumps(result, indent=2, sort_keys=True))
         else:
             print(_impact_text(result, args.traditional), end='')
+        hit = sorted(set(fail_on) & set(result['rate_impact']))
+        if hit:
+            sys.stdout.flush()
+            print('rsia: the rate-aware impact set contains --fail-on '
+                  f"node{'s' if len(hit) > 1 else ''} {', '.join(hit)}",
+                  file=sys.stderr)
+            return FAIL_ON_EXIT_CODE
         return 0
+
+
+def add_since_argument(group):
+    """Add ``--since REF`` (to the group holding ``--changed``)."""
+    group.add_argument(
+        '--since', metavar='REF',
+        help='The changed nodes are those whose files (or whose launch '
+             'files) changed since the git revision REF: committed and '
+             'working-tree changes, as `git diff --name-only REF`')
+
+
+def select_changed(system, args):
+    """The changed instances ``--changed`` or ``--since`` names.
+
+    Each changed instance and the reason it was chosen is printed on
+    stderr for ``--since`` (stdout stays clean for JSON).
+
+    :returns: (instance ids or None when neither option is given,
+      {instance id: [reasons]}, an error message or None)
+    """
+    from colcon_rsia.report.since import ChangeError
+    from colcon_rsia.report.since import changed_since
+    from colcon_rsia.report.since import describe_reasons
+    if getattr(args, 'since', None):
+        try:
+            reasons = changed_since(system, args.since)
+        except ChangeError as e:
+            return None, {}, str(e)
+        if not reasons:
+            print(f'rsia: no analysed node changed since {args.since}',
+                  file=sys.stderr)
+        for line in describe_reasons(system, reasons):
+            print(f'rsia: changed {line}', file=sys.stderr)
+        return sorted(reasons), reasons, None
+    if getattr(args, 'changed', None):
+        reasons = {}
+        for name in args.changed:
+            try:
+                ids = expand_changed(system, [name])
+            except UnknownNodeError as e:
+                return None, {}, str(e)
+            for instance_id in ids:
+                reasons.setdefault(instance_id, []).append(
+                    'named with --changed' if name == instance_id else
+                    f'named with --changed {name}')
+        return sorted(reasons), reasons, None
+    return None, {}, None
 
 
 def _impact_text(result, traditional):
     rate = result['rate_impact']
     data = result['traditional_impact']
     lines = [
-        f"changed: {', '.join(result['changed'])}",
+        f"changed: {', '.join(result['changed']) or '(none)'}",
         f'rate impact: {len(rate)} nodes; traditional: {len(data)}']
     lines += [f'  {node_id}' for node_id in rate]
     if traditional:

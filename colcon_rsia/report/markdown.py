@@ -1,0 +1,124 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""``summary.md``: a short Markdown summary for a pull-request comment.
+
+No links (a comment has nowhere to link to), no HTML; long lists are cut.
+"""
+
+from colcon_rsia.report import CHANGED
+from colcon_rsia.report import RATE
+from colcon_rsia.report import TRADITIONAL
+
+# at most this many rows in a table or items in a list
+MAX_ITEMS = 40
+
+STATUS_TEXT = {
+    CHANGED: 'changed',
+    RATE: 'rate-aware',
+    TRADITIONAL: 'traditional only',
+}
+
+
+def code(text):
+    """Inline code that survives backticks in the text."""
+    text = str(text).replace('\n', ' ')
+    fence = '``' if '`' in text else '`'
+    pad = ' ' if fence == '``' else ''
+    return f'{fence}{pad}{text}{pad}{fence}'
+
+
+def cell(text):
+    """Text safe inside a table cell."""
+    return str(text).replace('\n', ' ').replace('|', '\\|')
+
+
+def _cut(items, what):
+    if len(items) <= MAX_ITEMS:
+        return items, []
+    rest = len(items) - MAX_ITEMS
+    return items[:MAX_ITEMS], [f'… and {rest} more {what}']
+
+
+def _plural(count, word):
+    return f'{count} {word}{"" if count == 1 else "s"}'
+
+
+def render_summary(data):
+    """The summary.md text."""
+    lines = ['### colcon-rsia: rate impact', '']
+    if data.impact is None:
+        lines += _without_changes(data)
+    else:
+        lines += _with_changes(data)
+    all_impact = data.all_impact
+    lines += [
+        '',
+        f'_colcon-rsia {data.version} · '
+        f'{_plural(len(data.system.instances), "node")}, '
+        f'{_plural(len(data.graph["topics"]), "topic")} · over all nodes: '
+        f'average rate-aware impact {all_impact["average_rate_impact"]:g}, '
+        f'traditional {all_impact["average_traditional_impact"]:g} '
+        f'(ratio {all_impact["ratio"]:g})_',
+    ]
+    return '\n'.join(lines) + '\n'
+
+
+def _without_changes(data):
+    lines = ['No changed nodes were given: the impact of each node '
+             '(rate-aware vs traditional impact set size).', '']
+    rows = data.all_impact['nodes']
+    if not rows:
+        return lines + ["No node's change reaches another node."]
+    lines += ['| node | rate-aware | traditional |', '| --- | ---: | ---: |']
+    shown, more = _cut(rows, 'nodes')
+    for row in shown:
+        lines.append(f"| {cell(code(row['id']))} | {row['rate_impact']} | "
+                     f"{row['traditional_impact']} |")
+    return lines + more
+
+
+def _with_changes(data):
+    impact = data.impact
+    since = f' since {code(data.since)}' if data.since else ''
+    if not data.changed:
+        return [f'No analysed node changed{since}: no rate impact.']
+    lines = [f'**Changed{since}:** {_plural(len(data.changed), "node")}']
+    shown, more = _cut(data.changed, 'nodes')
+    for node_id in shown:
+        lines.append(
+            f"- {code(node_id)}: {'; '.join(data.reasons.get(node_id, []))}")
+    lines += more
+    rate = impact['rate_impact']
+    traditional = impact['traditional_impact']
+    lines += [
+        '',
+        f'**Rate-aware impact: {_plural(len(rate), "node")}** '
+        f'(traditional data-flow impact: {len(traditional)})',
+        '']
+    affected = list(data.changed) + [n for n in rate if n not in data.changed] \
+        + [n for n in traditional if n not in rate and n not in data.changed]
+    lines += ['| node | impact | why |', '| --- | --- | --- |']
+    shown, more = _cut(affected, 'nodes')
+    for node_id in shown:
+        status = data.status.get(node_id, '')
+        if node_id in data.changed and node_id in rate:
+            status_text = 'changed, rate-aware'
+        else:
+            status_text = STATUS_TEXT.get(status, '')
+        why = data.via.get(node_id) if node_id not in data.changed else \
+            '; '.join(data.reasons.get(node_id, []))
+        lines.append(f'| {cell(code(node_id))} | {cell(status_text)} | '
+                     f'{cell(why or "")} |')
+    lines += more
+    if data.stopped:
+        lines += ['', '**Stopped at independent edges** (the publisher keeps '
+                  'its own rate):']
+        shown, more = _cut(data.stopped, 'edges')
+        for edge in shown:
+            held = ', '.join(code(h) for h in edge.held)
+            lines.append(
+                f'- {code(edge.topic)} of {code(edge.node)} '
+                f"({', '.join(edge.patterns)})"
+                + (f': holds {held}' if held else ''))
+        lines += more
+    return lines

@@ -1,0 +1,60 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+import os
+
+from colcon_core.logging import colcon_logger
+from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.subverb import add_system_arguments
+from colcon_rsia.subverb import load_system_from_args
+from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.impact import add_since_argument
+from colcon_rsia.subverb.impact import select_changed
+
+logger = colcon_logger.getChild(__name__)
+
+
+class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
+    """Write a workspace report: HTML page, graph files, PR summary."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def add_arguments(self, *, parser):  # noqa: D102
+        add_system_arguments(parser)
+        group = parser.add_mutually_exclusive_group()
+        group.add_argument(
+            '--changed', nargs='+', metavar='PKG/EXE',
+            help='The changed nodes (package/executable, or package/plugin '
+                 'for nodelets); without --changed or --since the report '
+                 'shows no impact set')
+        add_since_argument(group)
+        parser.add_argument(
+            '--output', required=True, metavar='DIR',
+            help='The directory the report is written into (created when '
+                 'missing): index.html, graph.dot, graph.svg (with '
+                 'Graphviz), graph.json, impact.json, summary.md')
+
+    def main(self, *, context):  # noqa: D102
+        from colcon_rsia.report import write_report
+        args = context.args
+        system, error = load_system_from_args(args, logger)
+        if error:
+            return error
+        changed, reasons, error = select_changed(system, args)
+        if error:
+            return error
+        try:
+            written, notes = write_report(
+                system, args.output, changed=changed, reasons=reasons,
+                since=args.since)
+        except OSError as e:
+            return f"cannot write the report into '{args.output}': " \
+                f'{e.strerror or e}'
+        for note in notes:
+            print(f'rsia: {note}')
+        print(f'rsia: report written to {os.path.abspath(args.output)}: '
+              f"{', '.join(written)}")
+        return 0
