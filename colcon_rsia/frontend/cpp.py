@@ -676,24 +676,38 @@ class _Walker:
             return
         if topic is None and api.name_arg and len(arguments) <= api.name_arg:
             return  # a default constructor: the topic comes with init()
-        msg_type = api.msg_type or normalize_msg_type(
+        msg_type = api.msg_type or self._template_msg_type(cursor, name)
+        target = self._target(cursor, stack)
+        for common in self._endpoints(cursor, ctx, api, name, arguments,
+                                      topic, literal, msg_type, target):
+            self.facts.publishers.append(model.PublisherFact(
+                handle_name=target.spelling if target is not None else None,
+                **common))
+
+    def _template_msg_type(self, cursor, name):
+        """The message type from ``<M>`` at the call or in the class."""
+        return normalize_msg_type(
             _explicit_template_type(cursor) or
             _first_template_argument(self._object_type(cursor, name)))
-        target = self._target(cursor, stack)
+
+    def _endpoints(self, cursor, ctx, api, name, arguments, topic, literal,
+                   msg_type, target):
+        """The fields shared by publisher and subscriber facts, per topic.
+
+        image_transport's camera APIs also make `<dirname>/camera_info`.
+        """
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
-        topic_handle = self._topic_handle(arguments, api, literal)
         for each_topic, each_type in topics:
-            self.facts.publishers.append(model.PublisherFact(
-                topic_handle=topic_handle,
+            yield dict(
+                topic_handle=self._topic_handle(arguments, api, literal),
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
-                handle_name=target.spelling if target is not None else None,
                 location=self.location(cursor),
-                nh=self._namespace_of(cursor)))
+                nh=self._namespace_of(cursor))
 
     def _object_type(self, cursor, name):
         """The class type a constructor or method belongs to."""
@@ -709,26 +723,15 @@ class _Walker:
         callback, declaration = self._resolve_callback(
             self._argument(arguments, api.callback_arg)) \
             if api.callback_arg is not None else (None, None)
-        msg_type = api.msg_type or normalize_msg_type(
-            _explicit_template_type(cursor) or
-            _first_template_argument(self._object_type(cursor, name))) or \
+        msg_type = api.msg_type or self._template_msg_type(cursor, name) or \
             self._callback_msg_type(declaration)
         target = self._target(cursor, stack)
         if target is None and api.callback_arg is None:
             target = first_handle(_call_object(cursor))
-        topics = [(topic, msg_type)]
-        if api.camera:
-            topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
-        topic_handle = self._topic_handle(arguments, api, literal)
-        for each_topic, each_type in topics:
+        for common in self._endpoints(cursor, ctx, api, name, arguments,
+                                      topic, literal, msg_type, target):
             self.facts.subscribers.append(model.SubscriberFact(
-                topic_handle=topic_handle,
-                function=ctx.function, api=ros_api.api_label(name),
-                topic=each_topic, topic_is_literal=literal,
-                msg_type=each_type,
-                handle=target.get_usr() if target is not None else None,
-                callback=callback, location=self.location(cursor),
-                nh=self._namespace_of(cursor)))
+                callback=callback, **common))
 
     def _topic_handle(self, arguments, api, literal):
         """The variable a non-literal topic argument reads, if any."""
