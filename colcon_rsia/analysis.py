@@ -313,9 +313,9 @@ def build_summary(*, name, path, build_base, units):
                 'compile database; skipped')
             continue
         seeds = {f.id for unit in own for f in unit.functions}
-        summary.nodes.append(_node(
-            name, executable, 'executable', sources, path,
-            merge_facts(own + library), seeds))
+        merged = merge_facts(own + library)
+        summary.nodes.extend(_executable_nodes(
+            name, executable, sources, path, merged, seeds))
     merged_library = merge_facts(library)
     exported = merge_facts(units.values()).plugin_exports
     plugins = [
@@ -340,14 +340,63 @@ def build_summary(*, name, path, build_base, units):
     return summary
 
 
+def _executable_nodes(package, executable, sources, path, merged, seeds):
+    """The node(s) an executable runs.
+
+    One, unless its code names nodes in two or more classes (a ROS 2
+    ``main`` spinning several ``rclcpp::Node`` subclasses in one
+    executor): then each class is a node of its own, with its methods and
+    what they call, and the id ``package/executable/node_name``.
+    """
+    classes = _node_classes(merged, select_functions(merged, seeds))
+    if len(classes) < 2:
+        return [_node(package, executable, 'executable', sources, path,
+                      merged, seeds)]
+    nodes = []
+    for class_id, class_name in sorted(
+            classes.items(), key=lambda item: item[1]):
+        class_seeds = {f.id for f in merged.functions
+                       if f.class_id == class_id}
+        node = _node(package, executable, 'executable', sources, path,
+                     merged, class_seeds)
+        short = node.name or class_name.split('::')[-1]
+        node.id = f'{package}/{executable}/{short}'
+        if any(n.id == node.id for n in nodes):
+            node.id = f'{package}/{executable}/{class_name}'
+        nodes.append(node)
+    return nodes
+
+
+def _node_classes(merged, function_ids):
+    """{class id: class name} of the classes whose methods name a node."""
+    functions = {f.id: f for f in merged.functions if f.id in function_ids}
+    classes = {}
+    for fact in merged.node_names:
+        function = functions.get(fact.function)
+        if function is not None and function.class_id:
+            classes.setdefault(
+                function.class_id, function.name.rsplit('::', 1)[0])
+    return classes
+
+
+def _node_name(facts):
+    """(name, namespace) the node's code gives, when it gives one."""
+    given = {(n.name, n.namespace) for n in facts.node_names if n.name}
+    if len(given) == 1:
+        return given.pop()
+    return None, None
+
+
 def _node(package, executable, kind, sources, path, merged, seeds,
           node_id=None):
     facts = node_facts(merged, select_functions(merged, seeds))
     publishers, roots = label_publishers(facts)
     names = {fid: f.name for fid, f in facts.functions.items()}
+    node_name, namespace = _node_name(facts)
     return model.Node(
         id=node_id or f'{package}/{executable}', package=package,
         executable=executable, kind=kind,
+        name=node_name, namespace=namespace,
         sources=sorted(os.path.relpath(s, path) for s in sources),
         files=sorted(set(merged.files) | {
             os.path.relpath(s, path) for s in sources}),
@@ -370,6 +419,8 @@ def _node(package, executable, kind, sources, path, merged, seeds,
             callback=names.get(s.callback, s.callback), location=s.location)
             for s in facts.services],
         actions=_actions(facts, names),
+        clients=[model.NodeClient(name=c.name, api=c.api, location=c.location)
+                 for c in facts.clients],
         roots=roots)
 
 

@@ -70,13 +70,16 @@ class SystemGraph:
 
 
 def instances_from_summaries(summaries):
-    """Every analysed node once, in the root namespace, as its executable.
+    """Every analysed node once, as it names itself (else its executable).
 
-    This is what runs when no launch file is given.
+    This is what runs when no launch file is given: the name and namespace
+    are those the code gives (``ros::init``, ``rclcpp::Node("name", "ns")``).
     """
     return [
         Instance(id=node.id, node=node, package=node.package,
-                 executable=node.executable, name=node.executable)
+                 executable=node.executable,
+                 name=node.name or node.executable,
+                 namespace=join('/', node.namespace or ''))
         for summary in summaries for node in summary.nodes]
 
 

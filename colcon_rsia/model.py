@@ -208,6 +208,38 @@ class Registration:
 
 
 @dataclass
+class NodeNameFact:
+    """The name (and namespace) a node gives itself in code.
+
+    ``ros::init(argc, argv, "name")``, ``rclcpp::Node("name", "ns")``.
+    """
+
+    function: str
+    name: Optional[str]           # the literal, None when not a literal
+    namespace: Optional[str]
+    location: str
+
+
+@dataclass
+class ClientFact:
+    """A service client (it calls a service; it publishes no topic)."""
+
+    function: str
+    api: str
+    name: Optional[str]
+    location: str
+
+
+@dataclass
+class HandleAlias:
+    """An object that publishes through another's handle (a wrapper)."""
+
+    alias: str
+    handle: str
+    location: str
+
+
+@dataclass
 class NodeHandleFact:
     """The namespace a NodeHandle variable/field was created with."""
 
@@ -235,6 +267,9 @@ class TuFacts:
     node_handles: List[NodeHandleFact] = field(default_factory=list)
     bindings: List[ParamBinding] = field(default_factory=list)
     param_reads: List[ParamRead] = field(default_factory=list)
+    node_names: List[NodeNameFact] = field(default_factory=list)
+    clients: List[ClientFact] = field(default_factory=list)
+    handle_aliases: List[HandleAlias] = field(default_factory=list)
     plugin_exports: List[List[str]] = field(default_factory=list)
     # the package's own files the unit read (its source and headers)
     files: List[str] = field(default_factory=list)
@@ -253,7 +288,8 @@ class TuFacts:
             'rates': RateObject, 'paced_loops': PacedLoop,
             'syncs': SyncFact, 'registrations': Registration,
             'node_handles': NodeHandleFact, 'bindings': ParamBinding,
-            'param_reads': ParamRead,
+            'param_reads': ParamRead, 'node_names': NodeNameFact,
+            'clients': ClientFact, 'handle_aliases': HandleAlias,
         }
         kwargs = {}
         for f in fields(cls):
@@ -345,6 +381,15 @@ class NodeService:
 
 
 @dataclass
+class NodeClient:
+    """A service client of a node."""
+
+    name: Optional[str]
+    api: str
+    location: str
+
+
+@dataclass
 class NodeAction:
     """An action server or client of a node."""
 
@@ -372,6 +417,10 @@ class Node:
     package: str
     executable: str
     kind: str                      # executable | nodelet | component
+    # the node name and namespace its code gives (ros::init,
+    # rclcpp::Node's constructor); a launch file may override both
+    name: Optional[str] = None
+    namespace: Optional[str] = None
     sources: List[str] = field(default_factory=list)
     # every file of the package the node's code is read from (sources,
     # headers, modules): what a change must touch to change the node
@@ -381,6 +430,7 @@ class Node:
     timers: List[NodeTimer] = field(default_factory=list)
     services: List[NodeService] = field(default_factory=list)
     actions: List[NodeAction] = field(default_factory=list)
+    clients: List[NodeClient] = field(default_factory=list)
     roots: List[Root] = field(default_factory=list)
 
 
@@ -436,6 +486,7 @@ def _node_from_dict(data):
     return Node(
         id=data['id'], package=data['package'],
         executable=data['executable'], kind=data['kind'],
+        name=data.get('name'), namespace=data.get('namespace'),
         sources=list(data.get('sources', [])),
         files=list(data.get('files', [])),
         publishers=publishers,
@@ -443,4 +494,5 @@ def _node_from_dict(data):
         timers=[NodeTimer(**t) for t in data.get('timers', [])],
         services=[NodeService(**s) for s in data.get('services', [])],
         actions=[NodeAction(**a) for a in data.get('actions', [])],
+        clients=[NodeClient(**c) for c in data.get('clients', [])],
         roots=[Root(**r) for r in data.get('roots', [])])

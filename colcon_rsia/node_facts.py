@@ -34,12 +34,16 @@ class NodeFacts:
     registrations: List[model.Registration] = field(default_factory=list)
     rates: Dict[str, model.RateObject] = field(default_factory=dict)
     syncs: List[model.SyncFact] = field(default_factory=list)
+    node_names: List[model.NodeNameFact] = field(default_factory=list)
+    clients: List[model.ClientFact] = field(default_factory=list)
     namespaces: Dict[str, str] = field(default_factory=dict)
     # handle USR -> the handles it may stand for (parameters bound by
     # calls and binds)
     aliases: Dict[str, set] = field(default_factory=dict)
     # variable USR -> the parameter read into it
     param_reads: Dict[str, model.ParamRead] = field(default_factory=dict)
+    # parameter name -> its default where the node declares/reads it with one
+    param_defaults: Dict[str, str] = field(default_factory=dict)
 
 
 def unique(items):
@@ -126,13 +130,20 @@ def node_facts(facts, function_ids):
         p for p in facts.paced_loops if p.function in functions)
     result.registrations = unique(
         r for r in facts.registrations if r.function in functions)
+    result.node_names = unique(
+        n for n in facts.node_names if n.function in functions)
+    result.clients = unique(c for c in facts.clients if owned(c))
     result.rates = {r.handle: r for r in facts.rates}
     result.syncs = unique(facts.syncs)
     result.namespaces = {h.handle: h.namespace for h in facts.node_handles}
     result.aliases = _parameter_aliases(functions, facts.bindings)
-    result.param_reads = {
-        r.handle: r for r in facts.param_reads
-        if r.handle and r.function in functions}
+    for alias in facts.handle_aliases:
+        result.aliases.setdefault(alias.alias, set()).update(
+            handles_of(result, alias.handle))
+    reads = [r for r in facts.param_reads if r.function in functions]
+    result.param_reads = {r.handle: r for r in reads if r.handle}
+    result.param_defaults = {
+        r.name: r.default for r in reads if r.default is not None}
     _attach_filter_callbacks(result)
     return result
 
@@ -161,14 +172,25 @@ def _parameter_aliases(functions, bindings):
 
 
 def topic_param(facts, fact):
-    """The parameter a non-literal topic comes from, or None."""
-    read = facts.param_reads.get(fact.topic_handle) \
-        if fact.topic_handle else None
-    if read is None:
-        return None
-    return model.TopicParam(
-        name=read.name, default=read.default,
-        namespace=resolve_namespace(facts, read.nh))
+    """The parameter a non-literal topic comes from, or None.
+
+    The topic is a variable a parameter was read into, or (marked
+    ``param:<name>``) a parameter read in place; the default may come
+    from another read of the same parameter (ROS 2 declares a parameter
+    with its default and gets it elsewhere).
+    """
+    marker = fact.topic_handle or ''
+    if marker.startswith('param:'):
+        name, default, namespace = marker[len('param:'):], None, '~'
+    else:
+        read = facts.param_reads.get(marker) if marker else None
+        if read is None:
+            return None
+        name, default = read.name, read.default
+        namespace = resolve_namespace(facts, read.nh)
+    if default is None:
+        default = facts.param_defaults.get(name)
+    return model.TopicParam(name=name, default=default, namespace=namespace)
 
 
 def handles_of(facts, handle):

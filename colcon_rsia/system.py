@@ -6,6 +6,7 @@ import os
 
 from colcon_rsia.graph import build_graph
 from colcon_rsia.graph import Instance
+from colcon_rsia.names import join
 
 
 class LaunchArgumentError(ValueError):
@@ -57,14 +58,17 @@ def find_launch_file(package_path, name):
 def launch_instances(summaries, result):
     """Match launched node instances with the analysed nodes.
 
+    An executable that runs several nodes (one per node class) gives one
+    instance per node, each under the name its code gives.
+
     :param result: a :class:`colcon_rsia.launch.LaunchResult`
     :returns: the instances and notes on what could not be matched
     """
     nodes = {}
     for summary in summaries:
         for node in summary.nodes:
-            nodes[(node.package, node.executable)] = node
-            nodes[(node.package, node.id)] = node
+            nodes.setdefault((node.package, node.executable), []).append(node)
+            nodes.setdefault((node.package, node.id), []).append(node)
     instances = []
     notes = list(result.unresolved)
     for launched in result.instances:
@@ -72,24 +76,38 @@ def launch_instances(summaries, result):
             continue  # they host nodes; they publish nothing of their own
         package = launched.package or '?'
         executable = launched.executable or '?'
-        node = nodes.get((package, executable))
-        name = launched.name or executable.split('/')[-1]
-        instance = Instance(
-            id='', node=node, package=package,
-            executable=executable, name=name,
-            namespace=launched.namespace or '/',
-            remaps=list(launched.remaps), params=dict(launched.params),
-            location=launched.location)
-        instance.id = instance.fqn
-        if node is None:
-            notes.append(
-                f'{instance.id} ({package}/{executable}, '
-                f'{launched.location}): not analysed; assumed to read and '
-                'write its remapped topics')
-        for note in launched.unresolved:
-            notes.append(f'{instance.id}: {note}')
-        instances.append(instance)
+        matched = nodes.get((package, executable)) or [None]
+        for node in matched:
+            instance = _launched_instance(
+                launched, node, package, executable, several=len(matched) > 1)
+            if node is None:
+                notes.append(
+                    f'{instance.id} ({package}/{executable}, '
+                    f'{launched.location}): not analysed; assumed to read '
+                    'and write its remapped topics')
+            for note in launched.unresolved:
+                notes.append(f'{instance.id}: {note}')
+            instances.append(instance)
     return instances, notes
+
+
+def _launched_instance(launched, node, package, executable, several):
+    # unnamed in the launch file: the name the code gives, as at run time;
+    # one name for several nodes of a process would clash, so each keeps its
+    code_name = node.name if node is not None else None
+    if several:
+        name = code_name or node.id.split('/')[-1]
+    else:
+        name = launched.name or code_name or executable.split('/')[-1]
+    code_namespace = node.namespace if node is not None else None
+    instance = Instance(
+        id='', node=node, package=package, executable=executable,
+        name=name,
+        namespace=launched.namespace or join('/', code_namespace or ''),
+        remaps=list(launched.remaps), params=dict(launched.params),
+        location=launched.location)
+    instance.id = instance.fqn
+    return instance
 
 
 def load_system(summaries, *, launch=None, package_paths=None):

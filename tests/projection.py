@@ -11,13 +11,19 @@ SUBSCRIBER_FIELDS = ('topic', 'msg_type', 'api', 'callback')
 TIMER_FIELDS = ('api', 'callback', 'rate_hz')
 SERVICE_FIELDS = ('name', 'api', 'callback')
 ACTION_FIELDS = ('name', 'api', 'role')
+CLIENT_FIELDS = ('name', 'api')
 SECTIONS = {
     'publishers': PUBLISHER_FIELDS,
     'subscribers': SUBSCRIBER_FIELDS,
     'timers': TIMER_FIELDS,
     'services': SERVICE_FIELDS,
     'actions': ACTION_FIELDS,
+    'clients': CLIENT_FIELDS,
 }
+# what the newer expected files (ros2) also state: the node name and
+# namespace the code gives, and the parameter a topic name comes from
+NAMED_NODE_FIELDS = ('name', 'namespace')
+TOPIC_PARAM_SECTIONS = ('publishers', 'subscribers')
 
 
 def _normal(value):
@@ -27,23 +33,42 @@ def _normal(value):
     return value
 
 
-def _entries(items, names):
-    projected = [
-        {name: _normal(item.get(name)) for name in names} for item in items]
+def _topic_param(item):
+    param = item.get('topic_param')
+    return None if not param else {
+        'name': param['name'], 'default': param.get('default')}
+
+
+def _entries(items, names, with_topic_param=False):
+    projected = []
+    for item in items:
+        entry = {name: _normal(item.get(name)) for name in names}
+        if with_topic_param:
+            entry['topic_param'] = _topic_param(item)
+        projected.append(entry)
     return sorted(projected, key=lambda e: json.dumps(e, sort_keys=True))
 
 
-def project_node(node):
-    """The comparable view of one node (summary or expected file)."""
+def project_node(node, named=False):
+    """The comparable view of one node (summary or expected file).
+
+    :param named: also compare the node's name and namespace and the
+      parameters topic names come from
+    """
     view = {'id': node['id'], 'kind': node.get('kind', 'executable')}
+    if named:
+        for name in NAMED_NODE_FIELDS:
+            view[name] = node.get(name)
     for section, names in SECTIONS.items():
-        view[section] = _entries(node.get(section) or [], names)
+        view[section] = _entries(
+            node.get(section) or [], names,
+            with_topic_param=named and section in TOPIC_PARAM_SECTIONS)
     return view
 
 
-def project_nodes(nodes):
+def project_nodes(nodes, named=False):
     """{node id: view} of a list of nodes."""
-    return {node['id']: project_node(node) for node in nodes}
+    return {node['id']: project_node(node, named) for node in nodes}
 
 
 def _source_line(package_path, location):

@@ -327,3 +327,29 @@ def test_event_handler_analyses_python_packages(python_workspace, path):
     assert f"rsia: {expected['package']}: " in python_workspace.stdout
     _assert_matches(
         python_workspace.summary(expected['package'])['nodes'], expected)
+
+
+def test_node_names_come_from_the_code(tmp_path):
+    # written from rospy.init_node('...'), rclpy.create_node('...') and
+    # super().__init__('...') of each node
+    expected = {
+        'rsia_py_ros1/aligner.py': 'aligner',
+        'rsia_py_ros1/cmd_repeater.py': 'cmd_repeater',
+        'rsia_py_ros1/lidar_filter': 'lidar_filter',
+        'rsia_py_ros1/odom_relay.py': 'odom_relay',
+        'rsia_py_ros1/sensor_driver.py': 'sensor_driver',
+        'rsia_py_ros2/fusion': 'fusion',
+        'rsia_py_ros2/heartbeat': 'heartbeat',
+        'rsia_py_ros2/mission_server': 'mission_server',
+        'rsia_py_ros2/planner': 'planner',
+        'rsia_py_ros2/pose_broadcaster': 'pose_broadcaster',
+        # UltrasonicNode passes 'ultrasonic' to a base class of the package
+        # that hands its parameter to Node: a name through a parameter is
+        # not followed (README, known limitations)
+        'rsia_py_ros2/ultrasonic': None,
+    }
+    names = {}
+    for package in ('rsia_py_ros1', 'rsia_py_ros2'):
+        summary = _analyse(SRC / package, tmp_path / package)
+        names.update({n['id']: n['name'] for n in summary['nodes']})
+    assert names == expected

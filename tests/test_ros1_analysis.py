@@ -74,3 +74,27 @@ def test_unbuilt_workspace_in_model_mode_matches_expected_file(
     assert summary['header_mode'] == 'model'
     assert project_nodes(summary['nodes']) == \
         project_nodes(expected.get('nodes') or [])
+
+
+def test_node_names_come_from_ros_init(ros1_workspace):
+    # written from the ros::init(argc, argv, "...") of each main; a nodelet
+    # is named by the launch file that loads it, never by its code
+    expected = {
+        'rsia_control/joint_controller': 'joint_controller',
+        'rsia_control/cmd_mux': 'cmd_mux',
+        'rsia_control/trajectory_server': 'trajectory_server',
+        'rsia_control/mission_client': 'mission_client',
+        'rsia_drivers/laser_driver': 'laser_driver',
+        'rsia_drivers/camera_driver': 'camera_driver',
+        'rsia_localization/odom_tf_broadcaster': 'odom_tf_broadcaster',
+        'rsia_localization/tf_monitor': 'tf_monitor',
+        'rsia_nodelets/ScanThrottle': None,
+        'rsia_perception/scan_relay': 'scan_relay',
+        'rsia_perception/image_processor': 'image_processor',
+        'rsia_perception/stereo_sync': 'stereo_sync',
+    }
+    names = {}
+    for path in EXPECTED:
+        summary = ros1_workspace.summary(_expected(path)['package'])
+        names.update({n['id']: n['name'] for n in summary['nodes']})
+    assert names == expected

@@ -39,8 +39,8 @@ def test_package_matches_expected_file(ros2_build_base, path):
     expected = _expected(path)
     summary = _summary(ros2_build_base, expected['package'])
     assert summary['header_mode'] == 'model'
-    assert project_nodes(summary['nodes']) == \
-        project_nodes(expected.get('nodes') or [])
+    assert project_nodes(summary['nodes'], named=True) == \
+        project_nodes(expected.get('nodes') or [], named=True)
 
 
 def test_expected_files_cover_every_analysed_package(ros2_build_base):

@@ -33,6 +33,9 @@ SCOPE_KINDS = CLASS_KINDS | {CK.NAMESPACE, CK.LINKAGE_SPEC}
 LOOP_KINDS = frozenset({
     CK.WHILE_STMT, CK.FOR_STMT, CK.DO_STMT, CK.CXX_FOR_RANGE_STMT})
 HANDLE_KINDS = frozenset({CK.VAR_DECL, CK.FIELD_DECL, CK.PARM_DECL})
+# calls computing a value (constructors and conversions only wrap one)
+VALUE_FUNCTION_KINDS = frozenset({
+    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.FUNCTION_TEMPLATE})
 REF_KINDS = frozenset({CK.DECL_REF_EXPR, CK.MEMBER_REF_EXPR})
 # statements end the search for the variable a call's result is stored in
 STATEMENT_KINDS = frozenset({
@@ -279,6 +282,10 @@ class _Walker:
         self._consumed = set()
         self._lambdas_in_variables = set()
         self._registered = set()
+        self._ros2 = False
+        # callables stored in std::function variables/fields:
+        # {variable USR: function ids assigned to it}
+        self._callables = {}
 
     # --- locations ---------------------------------------------------------
 
@@ -315,6 +322,11 @@ class _Walker:
 
     def walk(self, tu):
         self._plugin_exports(tu.spelling)
+        # a ROS 2 unit: some APIs (diagnostic_updater) keep their ROS 1
+        # names but behave differently
+        self._ros2 = any(
+            c.kind == CK.NAMESPACE and c.spelling == 'rclcpp'
+            for c in tu.cursor.get_children())
         for cursor in tu.cursor.get_children():
             if self.in_package(cursor):
                 self._declaration(cursor)
@@ -324,6 +336,25 @@ class _Walker:
             c for c in self.facts.calls
             if not (c.kind == 'ref' and c.callee in self._registered and
                     c.callee in self._lambdas_in_variables)]
+        self._resolve_stored_callbacks()
+
+    def _resolve_stored_callbacks(self):
+        """Replace ``callable:<usr>`` callbacks by what was stored there.
+
+        A callback kept in a ``std::function`` member is registered by
+        naming the member; the function is what the code assigned to it
+        (anywhere in the TU, before or after the registration).
+        """
+        def resolve(callback):
+            if callback and callback.startswith(CALLABLE_PREFIX):
+                stored = self._callables.get(callback[len(CALLABLE_PREFIX):])
+                return sorted(stored)[0] if stored else None
+            return callback
+        for fact in (self.facts.subscribers + self.facts.timers +
+                     self.facts.services + self.facts.registrations):
+            fact.callback = resolve(fact.callback)
+        for fact in self.facts.actions:
+            fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
 
     def _declaration(self, cursor):
         kind = cursor.kind
@@ -375,6 +406,8 @@ class _Walker:
                               CK.TEMPLATE_NON_TYPE_PARAMETER):
                 continue
             stack = [_MemberInit(pending_member)] if pending_member else []
+            if pending_member is not None and _is_callable(pending_member):
+                self._store_callable(pending_member, child)
             self._visit(child, ctx, stack)
             pending_member = None
 
@@ -421,6 +454,9 @@ class _Walker:
             for child in cursor.get_children():
                 if child.kind == CK.LAMBDA_EXPR:
                     self._lambdas_in_variables.add(self._lambda_id(child))
+                elif _is_callable(cursor) and child.kind not in (
+                        CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF):
+                    self._store_callable(cursor, child)
         children = _children(cursor)
         stack.append(cursor)
         if kind in LOOP_KINDS:
@@ -479,12 +515,24 @@ class _Walker:
                 return  # the callee of a call, counted by _call
         self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
 
+    def _store_callable(self, variable, expression):
+        """Remember what a std::function variable/field is set to."""
+        callback, _ = self._resolve_callback(expression)
+        if callback and not callback.startswith(CALLABLE_PREFIX):
+            self._callables.setdefault(variable.get_usr(), set()).add(
+                callback)
+
     def _call(self, cursor, ctx, stack):
         ref = cursor.referenced
         if ref is None:
             ref = _overload_candidate(cursor)
         if ref is None:
             return
+        if cursor.spelling == 'operator=':
+            children = _children(cursor)
+            target = first_handle(children[0]) if children else None
+            if target is not None and _is_callable(target):
+                self._store_callable(target, children[-1])
         if ref.kind in FUNCTION_KINDS and self.in_package(ref):
             self._add_call(ctx, ref.get_usr(), cursor)
             self._bind_arguments(ref.get_usr(), cursor.get_arguments())
@@ -525,6 +573,11 @@ class _Walker:
             elif current.kind in REF_KINDS and current.referenced is not None \
                     and current.referenced.kind in HANDLE_KINDS:
                 has_variable = True
+            elif current.kind == CK.CALL_EXPR and \
+                    current.referenced is not None and \
+                    current.referenced.kind in VALUE_FUNCTION_KINDS:
+                # get_parameter("topic").as_string(): a value, not a name
+                has_variable = True
         if len(literals) == 1 and not has_variable:
             text = literals[0].spelling
             return _unquote(text), True
@@ -534,8 +587,7 @@ class _Walker:
     def _argument(self, arguments, position):
         if position == ros_api.FIRST_STRING:
             for argument in arguments:
-                spelling = argument.type.get_canonical().spelling
-                if 'basic_string' in spelling or 'char' in spelling:
+                if _is_string(argument):
                     return argument
             return None
         if isinstance(position, int) and position < len(arguments):
@@ -601,6 +653,9 @@ class _Walker:
                         lid = self._lambda_id(child)
                         self._registered.add(lid)
                         return lid, child
+            if ref.kind in HANDLE_KINDS and _is_callable(ref):
+                # resolved at the end of the walk: see _resolve_stored_callbacks
+                return CALLABLE_PREFIX + ref.get_usr(), None
         return None, None
 
     def _callbacks(self, arguments, position):
@@ -671,6 +726,8 @@ class _Walker:
     # --- roles (named after ros_api roles) ----------------------------------
 
     def _on_publisher(self, cursor, ctx, stack, api, name, arguments):
+        if self._wrapped_publisher(cursor, stack, api, arguments):
+            return
         topic, literal = self._topic(self._argument(arguments, api.name_arg))
         if topic is None and name.endswith('::init'):
             return
@@ -683,6 +740,27 @@ class _Walker:
             self.facts.publishers.append(model.PublisherFact(
                 handle_name=target.spelling if target is not None else None,
                 **common))
+
+    def _wrapped_publisher(self, cursor, stack, api, arguments):
+        """``RealtimePublisher<M>(pub)`` publishes through `pub`.
+
+        Returns whether the call is such a wrapper (then it makes no
+        publisher of its own; its publish sites count for `pub`).
+        """
+        if api.wraps_arg is None:
+            return False
+        written = [a for a in arguments
+                   if next(iter(a.get_tokens()), None) is not None]
+        wrapped = self._argument(arguments, api.wraps_arg)
+        if len(written) != 1 or wrapped is None or _is_string(wrapped):
+            return False
+        target = self._target(cursor, stack)
+        handle = first_handle(wrapped)
+        if target is not None and handle is not None:
+            self.facts.handle_aliases.append(model.HandleAlias(
+                alias=target.get_usr(), handle=handle.get_usr(),
+                location=self.location(cursor)))
+        return True
 
     def _template_msg_type(self, cursor, name):
         """The message type from ``<M>`` at the call or in the class."""
@@ -734,10 +812,26 @@ class _Walker:
                 callback=callback, **common))
 
     def _topic_handle(self, arguments, api, literal):
-        """The variable a non-literal topic argument reads, if any."""
+        """Where a non-literal topic comes from: a variable, or a parameter.
+
+        ``create_publisher<M>(get_parameter("topic").as_string(), 10)``
+        reads the parameter in place: recorded as ``param:<name>``.
+        """
         if literal:
             return None
-        handle = first_handle(self._argument(arguments, api.name_arg))
+        argument = self._argument(arguments, api.name_arg)
+        if argument is None:
+            return None
+        for current in [argument] + list(_walk_preorder(argument)):
+            if current.kind != CK.CALL_EXPR or current.referenced is None:
+                continue
+            read = ros_api.lookup_call(qualified_name(current.referenced))
+            if read is not None and read.role == ros_api.PARAM_READ:
+                param, is_literal = self._topic(
+                    self._argument(list(current.get_arguments()), 0))
+                if is_literal:
+                    return 'param:' + param
+        handle = first_handle(argument)
         return handle.get_usr() if handle is not None else None
 
     def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
@@ -746,10 +840,13 @@ class _Walker:
             return
         written = [a for a in arguments
                    if next(iter(a.get_tokens()), None) is not None]
-        if name.endswith('::param') and len(written) == 2:
-            # value = nh.param("name", default)
+        if api.returns_value or len(written) == 1 or (
+                name.endswith('::param') and len(written) == 2):
+            # value = nh.param("name", default);
+            # value = node->declare_parameter("name", default);
+            # value = node->get_parameter("name").as_string()
             target = self._target(cursor, stack)
-            default_argument = written[1]
+            default_argument = written[1] if len(written) > 1 else None
         else:
             # nh.param("name", variable, default) / getParam("name", var)
             target = first_handle(written[1]) if len(written) > 1 else None
@@ -761,7 +858,56 @@ class _Walker:
         self.facts.param_reads.append(model.ParamRead(
             function=ctx.function, name=param, default=default,
             handle=target.get_usr() if target is not None else None,
-            nh=self._namespace_of(cursor), location=self.location(cursor)))
+            nh='~' if api.node_private else self._namespace_of(cursor),
+            location=self.location(cursor)))
+
+    def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
+        node_name, literal = self._topic(
+            self._argument(arguments, api.name_arg))
+        namespace = None
+        argument = self._argument(arguments, api.namespace_arg) \
+            if api.namespace_arg is not None else None
+        # Node("name", options) has no namespace argument
+        if argument is not None and _is_string(argument):
+            namespace, ns_literal = self._topic(argument)
+            namespace = namespace if ns_literal else None
+        self.facts.node_names.append(model.NodeNameFact(
+            function=ctx.function, name=node_name if literal else None,
+            namespace=namespace, location=self.location(cursor)))
+
+    def _on_timed_publisher(self, cursor, ctx, stack, api, name, arguments):
+        """An object publishing from a timer of its own (ROS 2 Updater).
+
+        Recorded as what it does: a timer whose callback (a function made
+        up for it, at the construction) publishes through the object.
+        """
+        if not self._ros2:
+            return  # the ROS 1 Updater publishes only when told to
+        target = self._target(cursor, stack)
+        if target is None:
+            return
+        location = self.location(cursor)
+        callback = f'{api.label}@{location}'
+        self.facts.functions.append(model.Function(
+            id=callback, name=callback, location=location))
+        period = self._argument(arguments, api.period_arg)
+        seconds = evaluate_number(period) if period is not None \
+            else api.default_period
+        rate_hz = _round(1.0 / seconds) if seconds else None
+        self.facts.timers.append(model.TimerFact(
+            function=ctx.function, api=api.label, callback=callback,
+            period=_expression_text(period) if period is not None
+            else str(api.default_period),
+            rate_hz=rate_hz, location=location))
+        self.facts.publish_sites.append(model.PublishSite(
+            function=callback, api=api.label, handle=target.get_usr(),
+            location=location))
+
+    def _on_client(self, cursor, ctx, stack, api, name, arguments):
+        service, literal = self._topic(self._argument(arguments, api.name_arg))
+        self.facts.clients.append(model.ClientFact(
+            function=ctx.function, api=name, name=service,
+            location=self.location(cursor)))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
         callback, _ = self._resolve_callback(
@@ -887,6 +1033,17 @@ class _Walker:
         self.facts.node_handles.append(model.NodeHandleFact(
             handle=target.get_usr(), namespace=namespace or ''))
 
+    def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
+        """``node->create_sub_node("arm")``: a handle in a sub-namespace."""
+        target = self._target(cursor, stack)
+        sub, literal = self._topic(self._argument(arguments, api.name_arg))
+        if target is None or not literal:
+            return
+        parent = self._namespace_of(cursor)
+        self.facts.node_handles.append(model.NodeHandleFact(
+            handle=target.get_usr(),
+            namespace=f'ref:{parent}|{sub}' if parent else sub))
+
     def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
         target = self._target(cursor, stack)
         if target is not None:
@@ -916,6 +1073,20 @@ class _Context:
 def _unquote(literal):
     match = re.match(r'^(?:u8|u|U|L)?"(.*)"$', literal, re.DOTALL)
     return match.group(1) if match else literal
+
+
+CALLABLE_PREFIX = 'callable:'
+_CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
+
+
+def _is_callable(cursor):
+    """A variable/field holding a callable: std::function, bind results."""
+    return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))
+
+
+def _is_string(argument):
+    spelling = argument.type.get_canonical().spelling
+    return 'basic_string' in spelling or 'char' in spelling
 
 
 def _camera_info(topic):

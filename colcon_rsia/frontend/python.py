@@ -718,6 +718,10 @@ class _Project:
             qualified = python_api.canonical(f'{base}.{name}')
             if python_api.lookup(qualified) is not None:
                 return _Value(EXTBOUND, qualified)
+            # super().__init__("name"): the outside base's constructor
+            if name == '__init__' and python_api.lookup(
+                    python_api.canonical(base)) is not None:
+                return _Value(EXTBOUND, python_api.canonical(base))
         if unknown or after is not None:
             return None
         node_only = all(b == python_api.NODE_CLASS for b in outside)
@@ -1434,6 +1438,19 @@ class _Extractor:
 
     # --- roles (named after the python_api roles) -------------------------
 
+    def _on_node_handle(self, api, name, node, context):
+        """The node's name: ``rospy.init_node("n")``, ``Node("n", namespace=)``."""
+        if name not in python_api.NODE_NAMING:
+            return
+        node_name, literal = self._topic(
+            _argument(node, (0, 'name')) or _argument(node, (0, 'node_name')))
+        namespace, ns_literal = self._topic(
+            _argument(node, (None, 'namespace')))
+        self.facts.node_names.append(model.NodeNameFact(
+            function=context.function, name=node_name if literal else None,
+            namespace=namespace if ns_literal else None,
+            location=self.location(node)))
+
     def _on_publisher(self, api, name, node, context):
         msg_type = api.msg_type or self._msg_type(
             _argument(node, api.msg_type_arg), context)
@@ -1648,4 +1665,5 @@ _ROLES = {
     ros_api.RATE_SLEEP: _Extractor._on_rate_sleep,
     ros_api.SYNC: _Extractor._on_sync,
     ros_api.REGISTER_CALLBACK: _Extractor._on_register_callback,
+    ros_api.NODE_HANDLE: _Extractor._on_node_handle,
 }

@@ -315,6 +315,9 @@ DURATIONS = {
 # rclpy.node.Node methods that are not in CALLS: a call of one of these on
 # `self` in a node class is the library's, not a method some subclass of
 # the package is expected to define
+# the calls that name the node (first argument, or `name`/`node_name`)
+NODE_NAMING = frozenset({'rospy.init_node', 'rclpy.create_node', NODE_CLASS})
+
 NODE_METHODS = frozenset({
     'get_logger', 'get_clock', 'get_name', 'get_namespace',
     'get_fully_qualified_name', 'declare_parameter', 'declare_parameters',

@@ -31,6 +31,11 @@ NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
 PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
 PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
 PARAM_READ = 'param_read'          # reads a parameter into a variable
+NODE_NAME = 'node_name'            # names the node (ros::init, Node ctor)
+SUB_NODE = 'sub_node'              # returns a handle in a sub-namespace
+CLIENT = 'client'                  # a service client
+# publishes from a timer of its own (ROS 2 diagnostic_updater::Updater)
+TIMED_PUBLISHER = 'timed_publisher'
 
 # special argument positions
 FIRST_STRING = 'first_string'      # the first argument of string type
@@ -61,6 +66,18 @@ class Api:
     period_arg: Optional[int] = None
     # the public name the analysis reports for this API; default: the key
     label: Optional[str] = None
+    # NODE_NAME: the argument holding the node's namespace
+    namespace_arg: Optional[int] = None
+    # PARAM_READ: the call returns the value (``declare_parameter``)
+    # rather than writing it to its second argument (``getParam``)
+    returns_value: bool = False
+    # PARAM_READ: ROS 2 parameters always belong to the node itself
+    node_private: bool = False
+    # PUBLISHER: when this is the only argument, the object wraps the
+    # publisher passed there (ROS 2 realtime_tools::RealtimePublisher)
+    wraps_arg: Optional[int] = None
+    # TIMED_PUBLISHER: the period in seconds when the call gives none
+    default_period: Optional[float] = None
 
 
 NH = 'ros::NodeHandle::'
@@ -79,6 +96,16 @@ def _ros2_node_methods(prefix):
             TIMER, callback_arg=1, period_arg=0),
         prefix + 'create_timer': Api(TIMER, callback_arg=1, period_arg=0),
         prefix + 'create_service': Api(SERVICE, name_arg=0, callback_arg=1),
+        prefix + 'create_client': Api(CLIENT, name_arg=0),
+        prefix + 'create_sub_node': Api(SUB_NODE, name_arg=0),
+        # value = declare_parameter("topic", "scan")
+        prefix + 'declare_parameter': Api(
+            PARAM_READ, name_arg=0, returns_value=True, node_private=True),
+        # get_parameter("topic").as_string(); get_parameter("topic", value)
+        prefix + 'get_parameter': Api(
+            PARAM_READ, name_arg=0, node_private=True),
+        prefix + 'get_parameter_or': Api(
+            PARAM_READ, name_arg=0, node_private=True),
     }
 
 
@@ -92,6 +119,9 @@ CALLS = {
     NH + 'createWallTimer': Api(TIMER, callback_arg=1, period_arg=0),
     NH + 'createSteadyTimer': Api(TIMER, callback_arg=1, period_arg=0),
     NH + 'advertiseService': Api(SERVICE, name_arg=0, callback_arg=1),
+    NH + 'serviceClient': Api(CLIENT, name_arg=0),
+    'ros::service::createClient': Api(CLIENT, name_arg=0),
+    'ros::init': Api(NODE_NAME, name_arg=2),
     NH + 'NodeHandle': Api(NODE_HANDLE),
     NH + 'param': Api(PARAM_READ, name_arg=0),
     NH + 'getParam': Api(PARAM_READ, name_arg=0),
@@ -115,6 +145,26 @@ CALLS = {
         camera=True),
     'image_transport::Publisher::publish': Api(PUBLISH),
     'image_transport::CameraPublisher::publish': Api(PUBLISH),
+    # image_transport (ROS 2) free functions: (node, base_topic, ...)
+    'image_transport::create_publisher': Api(
+        PUBLISHER, name_arg=1, msg_type='sensor_msgs::msg::Image'),
+    'image_transport::create_camera_publisher': Api(
+        PUBLISHER, name_arg=1, msg_type='sensor_msgs::msg::Image',
+        camera=True),
+    # create_subscription(node, base_topic, callback, transport, qos)
+    'image_transport::create_subscription': Api(
+        SUBSCRIBER, name_arg=1, callback_arg=2,
+        msg_type='sensor_msgs::msg::Image'),
+    'image_transport::create_camera_subscription': Api(
+        SUBSCRIBER, name_arg=1, callback_arg=2,
+        msg_type='sensor_msgs::msg::Image', camera=True),
+    # a message_filters input: (node, base_topic, transport)
+    'image_transport::SubscriberFilter::SubscriberFilter': Api(
+        SUBSCRIBER, name_arg=1, msg_type='sensor_msgs::msg::Image',
+        label='image_transport::SubscriberFilter'),
+    'image_transport::SubscriberFilter::subscribe': Api(
+        SUBSCRIBER, name_arg=1, msg_type='sensor_msgs::msg::Image',
+        label='image_transport::SubscriberFilter'),
     # tf / tf2_ros: the broadcasters publish through sendTransform
     'tf::TransformBroadcaster::sendTransform': Api(PUBLISH),
     'tf2_ros::TransformBroadcaster::sendTransform': Api(PUBLISH),
@@ -133,15 +183,24 @@ CALLS = {
     'message_filters::Synchronizer::registerCallback': Api(
         REGISTER_CALLBACK, callback_arg=0),
     # realtime_tools: the constructor (or init) advertises the topic
+    # ROS 1: (nh, topic, queue); ROS 2: (publisher), which it wraps
     'realtime_tools::RealtimePublisher::RealtimePublisher': Api(
-        PUBLISHER, name_arg=1, label='realtime_tools::RealtimePublisher'),
+        PUBLISHER, name_arg=1, wraps_arg=0,
+        label='realtime_tools::RealtimePublisher'),
     'realtime_tools::RealtimePublisher::init': Api(
         PUBLISHER, name_arg=1, label='realtime_tools::RealtimePublisher'),
     'realtime_tools::RealtimePublisher::unlockAndPublish': Api(PUBLISH),
+    # realtime_tools (ROS 2, Jazzy+): the publish site without trylock
+    'realtime_tools::RealtimePublisher::try_publish': Api(PUBLISH),
+    'realtime_tools::RealtimePublisher::tryPublish': Api(PUBLISH),
     # diagnostic_updater publishes /diagnostics when updated
     'diagnostic_updater::Updater::update': Api(PUBLISH),
     'diagnostic_updater::Updater::force_update': Api(PUBLISH),
     'diagnostic_updater::Updater::broadcast': Api(PUBLISH),
+    # ROS 2: Updater(node, period = 1.0) publishes from its own timer
+    'diagnostic_updater::Updater::Updater': Api(
+        TIMED_PUBLISHER, period_arg=1, default_period=1.0,
+        label='diagnostic_updater::Updater'),
     # actionlib: recorded as actions, their callbacks are roots
     'actionlib::SimpleActionServer::SimpleActionServer': Api(
         ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLBACK,
@@ -161,10 +220,26 @@ CALLS = {
     # rclcpp (ROS 2): Node and LifecycleNode share the method shapes
     **_ros2_node_methods('rclcpp::Node::'),
     **_ros2_node_methods('rclcpp_lifecycle::LifecycleNode::'),
+    'rclcpp::Node::Node': Api(NODE_NAME, name_arg=0, namespace_arg=1),
+    'rclcpp::Node::make_shared': Api(NODE_NAME, name_arg=0, namespace_arg=1),
+    'rclcpp_lifecycle::LifecycleNode::LifecycleNode': Api(
+        NODE_NAME, name_arg=0, namespace_arg=1),
+    'rclcpp_lifecycle::LifecycleNode::make_shared': Api(
+        NODE_NAME, name_arg=0, namespace_arg=1),
     'rclcpp::create_publisher': Api(PUBLISHER, name_arg=1),
     'rclcpp::create_subscription': Api(SUBSCRIBER, name_arg=1, callback_arg=3),
     # create_timer(node, clock, period, callback)
     'rclcpp::create_timer': Api(TIMER, callback_arg=3, period_arg=2),
+    # create_wall_timer(period, callback, group, node_base*, node_timers*)
+    'rclcpp::create_wall_timer': Api(TIMER, callback_arg=1, period_arg=0),
+    # create_service<S>(node_base, node_services, name, callback, qos, group)
+    'rclcpp::create_service': Api(SERVICE, name_arg=2, callback_arg=3),
+    # create_client<S>(node_base, node_graph, node_services, name, qos, group)
+    'rclcpp::create_client': Api(CLIENT, name_arg=3),
+    # create_generic_*(topics_interface, name, type, qos[, callback])
+    'rclcpp::create_generic_publisher': Api(PUBLISHER, name_arg=1),
+    'rclcpp::create_generic_subscription': Api(
+        SUBSCRIBER, name_arg=1, callback_arg=4),
     'rclcpp::Publisher::publish': Api(PUBLISH),
     'rclcpp::GenericPublisher::publish': Api(PUBLISH),
     'rclcpp_lifecycle::LifecyclePublisher::publish': Api(PUBLISH),
@@ -175,6 +250,9 @@ CALLS = {
     'rclcpp::GenericRate::sleep': Api(RATE_SLEEP),
     'rclcpp::Rate::sleep': Api(RATE_SLEEP),
     'rclcpp::WallRate::sleep': Api(RATE_SLEEP),
+    # Rolling: ROSRate (RCL_ROS_TIME) derives from Rate like WallRate
+    'rclcpp::ROSRate::ROSRate': Api(RATE, period_arg=0),
+    'rclcpp::ROSRate::sleep': Api(RATE_SLEEP),
     # rclcpp_action::create_server<A>(node, name, goal, cancel, accepted)
     'rclcpp_action::create_server': Api(
         ACTION_SERVER, name_arg=1, callback_arg=(2, 3, 4)),

@@ -1,5 +1,5 @@
-// two nodes in one executable: a lifecycle node publishing from a 5 Hz timer
-// (rclcpp::create_timer with an rclcpp::Duration) and a plain node with a
+// two nodes in one executable: a lifecycle node publishing from a 5 Hz wall
+// timer (a std::chrono::duration<double> period) and a plain node with a
 // service whose callback is a std::function member
 #include <chrono>
 #include <functional>
