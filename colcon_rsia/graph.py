@@ -216,6 +216,9 @@ def graph_to_json(system):
                 'name': a.name, 'api': a.api, 'role': a.role,
                 'callbacks': a.callbacks, 'location': a.location}
                 for a in (node.actions if node else [])],
+            'clients': [{
+                'name': c.name, 'api': c.api, 'location': c.location}
+                for c in (node.clients if node else [])],
         })
     topics = []
     for name in system.topics():

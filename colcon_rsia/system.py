@@ -99,11 +99,15 @@ def _launched_instance(launched, node, package, executable, several):
         name = code_name or node.id.split('/')[-1]
     else:
         name = launched.name or code_name or executable.split('/')[-1]
-    code_namespace = node.namespace if node is not None else None
+    # a launch file that leaves a ROS 2 node in the root namespace passes
+    # no namespace: the code's stands (an explicit namespace="/" would
+    # override it; the launch readers do not tell the two apart)
+    namespace = launched.namespace
+    if namespace in (None, '/') and node is not None and node.namespace:
+        namespace = join('/', node.namespace)
     instance = Instance(
         id='', node=node, package=package, executable=executable,
-        name=name,
-        namespace=launched.namespace or join('/', code_namespace or ''),
+        name=name, namespace=namespace or '/',
         remaps=list(launched.remaps), params=dict(launched.params),
         location=launched.location)
     instance.id = instance.fqn

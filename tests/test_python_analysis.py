@@ -353,3 +353,19 @@ def test_node_names_come_from_the_code(tmp_path):
         summary = _analyse(SRC / package, tmp_path / package)
         names.update({n['id']: n['name'] for n in summary['nodes']})
     assert names == expected
+
+
+def test_service_clients_are_recorded(tmp_path):
+    # self.create_client(Trigger, 'get_version') in heartbeat.py and
+    # (Trigger, 'lights_on') in mission_server.py; no other node has one
+    summary = _analyse(SRC / 'rsia_py_ros2', tmp_path)
+    clients = {
+        n['id']: [(c['name'], c['api'], c['location']) for c in n['clients']]
+        for n in summary['nodes'] if n['clients']}
+    api = 'rclpy.node.Node.create_client'
+    assert clients == {
+        'rsia_py_ros2/heartbeat': [
+            ('get_version', api, 'rsia_py_ros2/heartbeat.py:22')],
+        'rsia_py_ros2/mission_server': [
+            ('lights_on', api, 'rsia_py_ros2/mission_server.py:33')],
+    }

@@ -32,7 +32,7 @@ def test_package_matches_expected_file(ros1_workspace, path):
     assert sorted(got) == sorted(want), 'node ids differ'
     for node_id in sorted(want):
         for section in ('publishers', 'subscribers', 'timers', 'services',
-                        'actions'):
+                        'actions', 'clients'):
             assert got[node_id][section] == want[node_id][section], \
                 f'{node_id} {section}'
         assert got[node_id]['kind'] == want[node_id]['kind'], node_id

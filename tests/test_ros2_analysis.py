@@ -54,3 +54,54 @@ def test_no_parse_errors_in_the_ros2_workspace(ros2_build_base):
     for path in EXPECTED:
         summary = _summary(ros2_build_base, _expected(path)['package'])
         assert not summary.get('diagnostics'), summary['diagnostics']
+
+
+def _graph(build_base, *launch):
+    words = ['rsia', 'graph', '--base-paths', str(WORKSPACES / 'ros2' / 'src'),
+             '--format', 'json']
+    if launch:
+        words += ['--launch', *launch]
+    result = run_colcon(words, cwd=build_base.parent, check=True)
+    return json.loads(result.stdout)
+
+
+def _endpoints(graph):
+    """{instance name: ({published topics}, {subscribed topics})}."""
+    return {
+        node['name']: ({p['resolved'] for p in node['publishers']},
+                       {s['resolved'] for s in node['subscribers']})
+        for node in graph['nodes']}
+
+
+def test_names_without_a_launch_file_come_from_the_code(ros2_build_base):
+    nodes = {n['id']: n for n in _graph(ros2_build_base)['nodes']}
+    endpoints = _endpoints({'nodes': list(nodes.values())})
+    # Node("odom_relay", "robot1"): every relative name under /robot1
+    assert nodes['rsia_ros2_core/odom_relay']['name'] == '/robot1/odom_relay'
+    assert '/robot1/odom_out' in endpoints['/robot1/odom_relay'][0]
+    # create_sub_node("arm") of Node("arm_driver", "robot")
+    assert endpoints['/robot/arm_driver'] == (
+        {'/robot/arm/joint_states', '/robot/arm/gripper/position'},
+        {'/robot/arm/command'})
+    # topics from declare_parameter defaults, ~/status under the node name
+    assert endpoints['/scan_filter'] == (
+        {'/scan_filtered', '/scan_filter/status'}, {'/scan'})
+    # one executable, two nodes, each under its own name
+    assert nodes['rsia_ros2_core/multi_node/detector']['name'] == '/detector'
+    assert '/detector/rate' in endpoints['/detector'][0]
+
+
+@pytest.mark.parametrize('launch_file', ['robot.launch.py', 'robot.launch.xml'])
+def test_ros2_launch_parameters_names_and_multi_node_executables(
+        ros2_build_base, launch_file):
+    graph = _graph(ros2_build_base, 'rsia_ros2_core', launch_file)
+    endpoints = _endpoints(graph)
+    # multi_node runs two nodes; arm_driver keeps the namespace of its code
+    assert set(endpoints) == {
+        '/front/front_filter', '/camera', '/detector', '/robot/arm_driver'}
+    # parameters decide the topics; ~/status follows the launch file's name
+    assert endpoints['/front/front_filter'] == (
+        {'/front/scan', '/front/front_filter/status'}, {'/lidar/front'})
+    image = next(t for t in graph['topics'] if t['name'] == '/image')
+    assert (image['publishers'], image['subscribers']) == (
+        ['/camera'], ['/detector'])

@@ -169,3 +169,25 @@ def test_event_handler_warns_once_per_package_without_database(
     assert '--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON' in out
     assert 'failed' not in out and 'rsia: rs' not in out
     assert 'rsia: analysed 0 of 1 packages' in out
+
+
+@pytest.mark.skipif(not hasattr(os, 'setpriority'), reason='POSIX only')
+def test_event_handler_analyses_at_a_lower_priority_than_the_build(
+        tmp_path):
+    seen = {}
+
+    def analyze(**kwargs):
+        # runs in the handler's worker thread
+        seen['worker'] = os.getpriority(os.PRIO_PROCESS, 0)
+        return SimpleNamespace(skipped=True, summary=None)
+
+    build_priority = os.getpriority(os.PRIO_PROCESS, 0)
+    handler = RsiaEventHandler()
+    handler.context = CommandContext(
+        command_name='colcon', args=SimpleNamespace(verb_name='build'))
+    with mock.patch('colcon_rsia.runner.analyze', analyze):
+        handler((JobEnded('pkg', 0), _job(tmp_path)))
+        handler((EventReactorShutdown(), None))
+    assert seen['worker'] == min(19, build_priority + handler.NICENESS)
+    # the build's own thread keeps its priority
+    assert os.getpriority(os.PRIO_PROCESS, 0) == build_priority

@@ -3,6 +3,7 @@
 
 from concurrent.futures import ThreadPoolExecutor
 import os
+import threading
 import time
 
 from colcon_core.event.job import JobEnded
@@ -29,6 +30,11 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
     # still needs the cores, so one package at a time, its translation units
     # parsed in parallel
     PACKAGE_WORKERS = 1
+
+    # the niceness of the analysis threads: the compiler comes first, the
+    # analysis takes the CPU time the build leaves (threads it starts, the
+    # libclang parses, inherit it)
+    NICENESS = 10
 
     def __init__(self):  # noqa: D107
         super().__init__()
@@ -63,7 +69,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         if self._pool is None:
             self._pool = ThreadPoolExecutor(
                 max_workers=self.PACKAGE_WORKERS,
-                thread_name_prefix='rsia')
+                thread_name_prefix='rsia', initializer=self._lower_priority)
             self._started = time.monotonic()
         base_paths = getattr(self.context.args, 'base_paths', None) or ['.']
         self._pending.append(self._pool.submit(
@@ -71,6 +77,15 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             path=str(pkg.path), build_base=args.build_base,
             cmake_args=getattr(args, 'cmake_args', None),
             workspace_src_dirs=[os.path.abspath(p) for p in base_paths]))
+
+    @classmethod
+    def _lower_priority(cls):
+        # Linux: the priority of a thread id is that thread's alone
+        try:
+            os.setpriority(
+                os.PRIO_PROCESS, threading.get_native_id(), cls.NICENESS)
+        except (AttributeError, OSError):
+            pass  # elsewhere the analysis runs at the build's priority
 
     def _report_finished(self):
         still_running = []

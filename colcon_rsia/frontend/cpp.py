@@ -146,6 +146,9 @@ def normalize_msg_type(spelling):
     return text or None
 
 
+_SMART_POINTER = re.compile(r'^(?:std|boost)::(?:shared_ptr|unique_ptr)<')
+
+
 def _first_template_argument(spelling):
     start = spelling.find('<')
     if start < 0:
@@ -427,7 +430,8 @@ class _Walker:
             for topic in api.implicit_topics:
                 common = dict(
                     function=function, api=class_name, topic=topic,
-                    topic_is_literal=True, msg_type=api.msg_type,
+                    topic_is_literal=True,
+                    msg_type=self._table_msg_type(api.msg_type),
                     handle=cursor.get_usr(), location=self.location(cursor),
                     class_id=class_id)
                 if api.role == ros_api.DECLARED_PUBLISHER:
@@ -451,6 +455,7 @@ class _Walker:
             self._reference(cursor, ctx, stack)
         elif kind == CK.VAR_DECL:
             self._declared_object(cursor, ctx.function)
+            self._copied_handle(cursor)
             for child in cursor.get_children():
                 if child.kind == CK.LAMBDA_EXPR:
                     self._lambdas_in_variables.add(self._lambda_id(child))
@@ -476,6 +481,25 @@ class _Walker:
             for child in children:
                 self._visit(child, ctx, stack)
         stack.pop()
+
+    def _copied_handle(self, variable):
+        """``auto pub = pub_;``: the local copy publishes through `pub_`."""
+        init = [c for c in variable.get_children()
+                if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
+                                  CK.TEMPLATE_REF)]
+        if len(init) != 1:
+            return
+        tokens = [t.spelling for t in source_tokens(init[0])]
+        # only a plain name (this->pub_, self.pub_): no call, no index
+        if not tokens or any(t in ('(', '[', '{') for t in tokens):
+            return
+        handle = first_handle(init[0])
+        # the package's own handles: not the fields of a message
+        if handle is not None and handle != variable and \
+                self.in_package(handle):
+            self.facts.handle_aliases.append(model.HandleAlias(
+                alias=variable.get_usr(), handle=handle.get_usr(),
+                location=self.location(variable)))
 
     def _lambda_id(self, cursor):
         loc = cursor.location
@@ -549,8 +573,20 @@ class _Walker:
         handler(cursor, ctx, stack, api, name, arguments)
 
     def _forwarded_constructor(self, cursor):
-        """make_shared<X>(args) reads like X's constructor."""
-        class_name = _explicit_template_type(cursor)
+        """make_shared<X>(args) reads like X's constructor.
+
+        X is read from the type made (``shared_ptr<X>``), so that an alias
+        (``using Sync = message_filters::Synchronizer<P>``) and a template
+        argument of X do not hide it.
+        """
+        made = cursor.type.get_canonical()
+        declaration = made.get_template_argument_type(0).get_declaration() \
+            if made.get_num_template_arguments() > 0 else None
+        if declaration is not None and \
+                declaration.kind != CK.NO_DECL_FOUND:
+            class_name = qualified_name(declaration)
+        else:
+            class_name = _explicit_template_type(cursor)
         if not class_name:
             return None, None
         class_name = re.sub(r'<.*', '', class_name).strip()
@@ -585,11 +621,13 @@ class _Walker:
         return (text or None), False
 
     def _argument(self, arguments, position):
-        if position == ros_api.FIRST_STRING:
-            for argument in arguments:
-                if _is_string(argument):
-                    return argument
-            return None
+        by_type = {
+            ros_api.FIRST_STRING: _is_string,
+            ros_api.FIRST_CALLABLE: _is_callable_argument,
+            ros_api.FIRST_DURATION: _is_duration,
+        }.get(position)
+        if by_type is not None:
+            return next((a for a in arguments if by_type(a)), None)
         if isinstance(position, int) and position < len(arguments):
             argument = arguments[position]
             # a default argument has no tokens of its own
@@ -659,6 +697,14 @@ class _Walker:
         return None, None
 
     def _callbacks(self, arguments, position):
+        if position == ros_api.ALL_CALLABLES:
+            found = []
+            for argument in arguments:
+                if _is_callable_argument(argument):
+                    callback, _ = self._resolve_callback(argument)
+                    if callback:
+                        found.append(callback)
+            return found
         if position == ros_api.FIRST_CALLBACK:
             found = []
             for argument in arguments:
@@ -733,7 +779,9 @@ class _Walker:
             return
         if topic is None and api.name_arg and len(arguments) <= api.name_arg:
             return  # a default constructor: the topic comes with init()
-        msg_type = api.msg_type or self._template_msg_type(cursor, name)
+        msg_type = self._table_msg_type(api.msg_type) or \
+            self._type_name(arguments, api) or \
+            self._template_msg_type(cursor, name)
         target = self._target(cursor, stack)
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
@@ -762,6 +810,16 @@ class _Walker:
                 location=self.location(cursor)))
         return True
 
+    def _type_name(self, arguments, api):
+        """The message type a generic API names: "pkg/msg/Name"."""
+        if api.type_name_arg is None:
+            return None
+        written, literal = self._topic(
+            self._argument(arguments, api.type_name_arg))
+        if not literal or not re.fullmatch(r'\w+/\w+/\w+', written or ''):
+            return None
+        return written.replace('/', '::')
+
     def _template_msg_type(self, cursor, name):
         """The message type from ``<M>`` at the call or in the class."""
         return normalize_msg_type(
@@ -776,7 +834,8 @@ class _Walker:
         """
         topics = [(topic, msg_type)]
         if api.camera:
-            topics.append((_camera_info(topic), ros_api.CAMERA_INFO_MSG))
+            topics.append((_camera_info(topic),
+                           self._table_msg_type(ros_api.CAMERA_INFO_MSG)))
         for each_topic, each_type in topics:
             yield dict(
                 topic_handle=self._topic_handle(arguments, api, literal),
@@ -788,11 +847,32 @@ class _Walker:
                 nh=self._namespace_of(cursor))
 
     def _object_type(self, cursor, name):
-        """The class type a constructor or method belongs to."""
+        """The class type a constructor or method belongs to.
+
+        Canonical, so that aliases (``using Image = ...``) name the real
+        message; through a smart pointer, the class pointed to.
+        """
         if name.split('::')[-1] == name.split('::')[-2]:
-            return cursor.type.spelling
-        obj = _call_object(cursor)
-        return obj.type.spelling if obj is not None else ''
+            type_ = cursor.type
+        else:
+            obj = _call_object(cursor)
+            if obj is None:
+                return ''
+            type_ = obj.type
+        spelling = type_.get_canonical().spelling
+        if _SMART_POINTER.match(spelling):
+            spelling = _first_template_argument(spelling) or spelling
+        return spelling
+
+    def _table_msg_type(self, msg_type):
+        """A message type the API table spells the ROS 1 way, for this unit.
+
+        ROS 2 spells ``sensor_msgs::Image`` as ``sensor_msgs::msg::Image``.
+        """
+        if not msg_type or not self._ros2 or '::msg::' in msg_type:
+            return msg_type
+        package, _, name = msg_type.partition('::')
+        return f'{package}::msg::{name}'
 
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
         topic, literal = self._topic(self._argument(arguments, api.name_arg))
@@ -801,8 +881,13 @@ class _Walker:
         callback, declaration = self._resolve_callback(
             self._argument(arguments, api.callback_arg)) \
             if api.callback_arg is not None else (None, None)
-        msg_type = api.msg_type or self._template_msg_type(cursor, name) or \
-            self._callback_msg_type(declaration)
+        if api.type_name_arg is not None:
+            # generic: the callback takes serialized messages of any type
+            msg_type = self._type_name(arguments, api)
+        else:
+            msg_type = self._table_msg_type(api.msg_type) or \
+                self._template_msg_type(cursor, name) or \
+                self._callback_msg_type(declaration)
         target = self._target(cursor, stack)
         if target is None and api.callback_arg is None:
             target = first_handle(_call_object(cursor))
@@ -887,9 +972,10 @@ class _Walker:
         if target is None:
             return
         location = self.location(cursor)
-        callback = f'{api.label}@{location}'
+        # what the real timer calls; the id is unique per object
+        callback = f'{api.label}::update@{location}'
         self.facts.functions.append(model.Function(
-            id=callback, name=callback, location=location))
+            id=callback, name=f'{api.label}::update', location=location))
         period = self._argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
@@ -1029,7 +1115,9 @@ class _Walker:
                 sub, _ = self._topic(written[1])
                 namespace += '|' + (sub or '')
         elif written:
-            namespace, _ = self._topic(written[0])
+            # ImageTransport(shared_from_this()): a node, not a namespace
+            namespace, literal = self._topic(written[0])
+            namespace = namespace if literal else ''
         self.facts.node_handles.append(model.NodeHandleFact(
             handle=target.get_usr(), namespace=namespace or ''))
 
@@ -1084,6 +1172,25 @@ def _is_callable(cursor):
     return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))
 
 
+_CALLABLE_ARGUMENT = re.compile(
+    r'\(lambda at |std::_Bind|std::function<|boost::_bi::bind_t|'
+    r'\(\*\)\(|::\*\)\(')
+
+
+def _is_callable_argument(argument):
+    """A lambda, bind result, std::function or function (pointer)."""
+    kind = argument.type.get_canonical().kind
+    if kind in (ci.TypeKind.FUNCTIONPROTO, ci.TypeKind.MEMBERPOINTER):
+        return True
+    return bool(_CALLABLE_ARGUMENT.search(
+        argument.type.get_canonical().spelling))
+
+
+def _is_duration(argument):
+    return is_chrono_duration(argument.type) or \
+        'rclcpp::Duration' in argument.type.get_canonical().spelling
+
+
 def _is_string(argument):
     spelling = argument.type.get_canonical().spelling
     return 'basic_string' in spelling or 'char' in spelling
@@ -1125,10 +1232,15 @@ def _period_rate_hz(argument):
                 current.referenced.kind != CK.CONSTRUCTOR:
             continue
         class_name = current.referenced.spelling
-        values = [evaluate_number(a) for a in current.get_arguments()]
+        arguments = list(current.get_arguments())
+        values = [evaluate_number(a) for a in arguments]
         if class_name in _PERIOD_CLASSES:
             if len(values) == 1 and values[0]:
                 return _round(1.0 / values[0])
+            if len(arguments) == 1 and is_chrono_duration(arguments[0].type):
+                # rclcpp::Duration from std::chrono::milliseconds(50)
+                seconds = evaluate_duration_seconds(arguments[0])
+                return _round(1.0 / seconds) if seconds else None
             if len(values) == 2 and None not in values:
                 seconds = values[0] + values[1] * 1e-9
                 return _round(1.0 / seconds) if seconds else None

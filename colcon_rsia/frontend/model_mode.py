@@ -195,6 +195,11 @@ def prepare_model_arguments(*, source, arguments, package_path,
     result = ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += _std_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace}' for namespace in own]
+    if scanner.ros2:
+        # the headers ROS 1 and ROS 2 share by name (tf2_ros/*.h,
+        # message_filters/*.h, ...) take their ROS 2 shape, whatever the
+        # order of the unit's includes
+        result.append('-DRSIA_MODEL_RCLCPP=1')
     for up_dir in up_dirs:
         result += ['-I', up_dir]
     return result
@@ -203,6 +208,17 @@ def prepare_model_arguments(*, source, arguments, package_path,
 # --- arguments ---------------------------------------------------------------
 
 _INCLUDE_OPTIONS = ('-I', '-isystem', '-iquote', '-idirafter')
+
+
+# the model headers this module writes into the stub directory
+GENERATED_PREFIX = 'rsia_model/'
+# includes only ROS 2 code has: rclcpp, generated ROS 2 interfaces, and
+# the `.hpp` headers of libraries whose ROS 1 versions have `.h` ones
+_ROS2_INCLUDE = re.compile(
+    r'^(?:rclcpp(?:_\w+)?/'
+    r'|\w+/(?:msg|srv|action)/\w+\.hpp$'
+    r'|(?:image_transport|message_filters|realtime_tools|diagnostic_updater'
+    r'|tf2_ros)/.*\.hpp$)')
 
 
 def _filter_arguments(arguments, roots, directory):
@@ -287,6 +303,9 @@ class _Scanner:
         self.missing = {}
         self.user_texts = []
         self._isfile = {}
+        # whether the package's own code includes a ROS 2 header (the dual
+        # model headers include ROS 2 ones behind #ifdef: theirs never count)
+        self.ros2 = False
 
     def scan(self, source):
         todo = [source]
@@ -295,8 +314,11 @@ class _Scanner:
             if path in self.visited:
                 continue
             self.visited.add(path)
+            user_file = not path.startswith(MODEL_HEADERS_DIR + os.sep)
             for quoted, name in self._includes(path):
                 found = self.resolve(name, quoted, os.path.dirname(path))
+                if user_file and _ROS2_INCLUDE.match(name):
+                    self.ros2 = True
                 if found is not None:
                     if found not in self.visited and self._scannable(found):
                         todo.append(found)
@@ -305,6 +327,8 @@ class _Scanner:
                     if not self._in_system_dirs(name):
                         self.missing[name] = 'empty'
                     continue
+                if name.startswith(GENERATED_PREFIX):
+                    continue  # merged into the stub directory, never stood in
                 self.missing.setdefault(name, 'stub')
 
     def _includes(self, path):

@@ -1513,6 +1513,12 @@ class _Extractor:
             function=context.function, api=name, name=service,
             callback=callback, location=self.location(node)))
 
+    def _on_service_client(self, api, name, node, context):
+        service, _ = self._topic(_argument(node, api.name))
+        self.facts.clients.append(model.ClientFact(
+            function=context.function, api=name, name=service,
+            location=self.location(node)))
+
     def _on_action_server(self, api, name, node, context):
         self._action(api, name, node, context, 'server')
 
@@ -1666,4 +1672,5 @@ _ROLES = {
     ros_api.SYNC: _Extractor._on_sync,
     ros_api.REGISTER_CALLBACK: _Extractor._on_register_callback,
     ros_api.NODE_HANDLE: _Extractor._on_node_handle,
+    python_api.SERVICE_CLIENT: _Extractor._on_service_client,
 }

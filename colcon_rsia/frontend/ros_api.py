@@ -40,6 +40,13 @@ TIMED_PUBLISHER = 'timed_publisher'
 # special argument positions
 FIRST_STRING = 'first_string'      # the first argument of string type
 FIRST_CALLBACK = 'first_callback'  # the first argument naming a function
+# the first argument whose type is callable (a lambda, a bind result, a
+# function pointer): for overload sets whose callback moves with the form
+FIRST_CALLABLE = 'first_callable'
+# every argument whose type is callable
+ALL_CALLABLES = 'all_callables'
+# the first argument that is a duration (std::chrono or rclcpp::Duration)
+FIRST_DURATION = 'first_duration'
 
 TF_MSG = 'tf2_msgs::TFMessage'
 IMAGE_MSG = 'sensor_msgs::Image'
@@ -78,6 +85,9 @@ class Api:
     wraps_arg: Optional[int] = None
     # TIMED_PUBLISHER: the period in seconds when the call gives none
     default_period: Optional[float] = None
+    # generic publishers/subscriptions: the argument naming the type as a
+    # string ("std_msgs/msg/String"), which gives the message type
+    type_name_arg: Optional[int] = None
 
 
 NH = 'ros::NodeHandle::'
@@ -89,9 +99,10 @@ def _ros2_node_methods(prefix):
         prefix + 'create_publisher': Api(PUBLISHER, name_arg=0),
         prefix + 'create_subscription': Api(
             SUBSCRIBER, name_arg=0, callback_arg=2),
-        prefix + 'create_generic_publisher': Api(PUBLISHER, name_arg=0),
+        prefix + 'create_generic_publisher': Api(
+            PUBLISHER, name_arg=0, type_name_arg=1),
         prefix + 'create_generic_subscription': Api(
-            SUBSCRIBER, name_arg=0, callback_arg=3),
+            SUBSCRIBER, name_arg=0, callback_arg=3, type_name_arg=1),
         prefix + 'create_wall_timer': Api(
             TIMER, callback_arg=1, period_arg=0),
         prefix + 'create_timer': Api(TIMER, callback_arg=1, period_arg=0),
@@ -226,10 +237,14 @@ CALLS = {
         NODE_NAME, name_arg=0, namespace_arg=1),
     'rclcpp_lifecycle::LifecycleNode::make_shared': Api(
         NODE_NAME, name_arg=0, namespace_arg=1),
-    'rclcpp::create_publisher': Api(PUBLISHER, name_arg=1),
-    'rclcpp::create_subscription': Api(SUBSCRIBER, name_arg=1, callback_arg=3),
-    # create_timer(node, clock, period, callback)
-    'rclcpp::create_timer': Api(TIMER, callback_arg=3, period_arg=2),
+    # (node, topic, qos) and (parameters, topics, topic, qos)
+    'rclcpp::create_publisher': Api(PUBLISHER, name_arg=FIRST_STRING),
+    'rclcpp::create_subscription': Api(
+        SUBSCRIBER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLABLE),
+    # (node, clock, period, callback) and, Jazzy+, (clock, period,
+    # callback, group, node_base, node_timers)
+    'rclcpp::create_timer': Api(
+        TIMER, callback_arg=FIRST_CALLABLE, period_arg=FIRST_DURATION),
     # create_wall_timer(period, callback, group, node_base*, node_timers*)
     'rclcpp::create_wall_timer': Api(TIMER, callback_arg=1, period_arg=0),
     # create_service<S>(node_base, node_services, name, callback, qos, group)
@@ -237,9 +252,10 @@ CALLS = {
     # create_client<S>(node_base, node_graph, node_services, name, qos, group)
     'rclcpp::create_client': Api(CLIENT, name_arg=3),
     # create_generic_*(topics_interface, name, type, qos[, callback])
-    'rclcpp::create_generic_publisher': Api(PUBLISHER, name_arg=1),
+    'rclcpp::create_generic_publisher': Api(
+        PUBLISHER, name_arg=1, type_name_arg=2),
     'rclcpp::create_generic_subscription': Api(
-        SUBSCRIBER, name_arg=1, callback_arg=4),
+        SUBSCRIBER, name_arg=1, callback_arg=4, type_name_arg=2),
     'rclcpp::Publisher::publish': Api(PUBLISH),
     'rclcpp::GenericPublisher::publish': Api(PUBLISH),
     'rclcpp_lifecycle::LifecyclePublisher::publish': Api(PUBLISH),
@@ -254,9 +270,12 @@ CALLS = {
     'rclcpp::ROSRate::ROSRate': Api(RATE, period_arg=0),
     'rclcpp::ROSRate::sleep': Api(RATE_SLEEP),
     # rclcpp_action::create_server<A>(node, name, goal, cancel, accepted)
+    # and the node-interfaces form (base, clock, logging, waitables, name,
+    # goal, cancel, accepted)
     'rclcpp_action::create_server': Api(
-        ACTION_SERVER, name_arg=1, callback_arg=(2, 3, 4)),
-    'rclcpp_action::create_client': Api(ACTION_CLIENT, name_arg=1),
+        ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=ALL_CALLABLES),
+    'rclcpp_action::create_client': Api(
+        ACTION_CLIENT, name_arg=FIRST_STRING),
     # nodelet handles
     'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),

@@ -1,6 +1,15 @@
 // colcon-rsia model of <message_filters/connection.h>.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_CONNECTION_H
-#define RSIA_MODEL_MESSAGE_FILTERS_CONNECTION_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/connection.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_CONNECTION.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/connection.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_CONNECTION
+#define RSIA_MODEL_MESSAGE_FILTERS_CONNECTION
 
 #include <boost/function.hpp>
 
@@ -20,4 +29,5 @@ public:
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_CONNECTION_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_CONNECTION
+#endif  // RSIA_MODEL_RCLCPP

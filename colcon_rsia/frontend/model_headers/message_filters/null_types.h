@@ -1,6 +1,15 @@
 // colcon-rsia model of <message_filters/null_types.h>.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES_H
-#define RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/null_types.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/null_types.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES
+#define RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES
 
 #include <boost/function.hpp>
 #include <boost/shared_ptr.hpp>
@@ -26,4 +35,5 @@ struct NullFilter
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_NULL_TYPES
+#endif  // RSIA_MODEL_RCLCPP

@@ -1,7 +1,16 @@
 // colcon-rsia model of <message_filters/simple_filter.h>: the base of
 // message_filters::Subscriber (and tf message filters) with registerCallback.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER_H
-#define RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/simple_filter.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/simple_filter.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER
+#define RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER
 
 #include <string>
 
@@ -43,4 +52,5 @@ protected:
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_SIMPLE_FILTER
+#endif  // RSIA_MODEL_RCLCPP

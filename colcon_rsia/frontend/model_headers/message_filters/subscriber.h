@@ -1,7 +1,16 @@
 // colcon-rsia model of <message_filters/subscriber.h>: a subscriber whose topic
 // is its constructor's (or subscribe's) second argument.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER_H
-#define RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/subscriber.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/subscriber.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER
+#define RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER
 
 #include <cstdint>
 #include <string>
@@ -53,4 +62,5 @@ public:
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_SUBSCRIBER
+#endif  // RSIA_MODEL_RCLCPP

@@ -1,7 +1,16 @@
 // colcon-rsia model of <message_filters/synchronizer.h>: Synchronizer<Policy>
 // (derives from its policy), fed by 2..9 filters, with registerCallback.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER_H
-#define RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/synchronizer.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/synchronizer.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER
+#define RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER
 
 #include <string>
 
@@ -111,4 +120,5 @@ struct PolicyBase
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_SYNCHRONIZER
+#endif  // RSIA_MODEL_RCLCPP

@@ -1,8 +1,20 @@
 // colcon-rsia model of <rclcpp/rclcpp.hpp> (ROS 2, Humble/Jazzy/Rolling):
 // declarations of the rclcpp API the analysis recognises, written from the
-// documented signatures (shared/reference/ros-api.md section 2). Every other
-// rclcpp header of the model includes this one. RSIA_MODEL_RCLCPP tells the
-// headers ROS 1 and ROS 2 share (tf2_ros/*.h) which API to declare.
+// documented signatures (shared/reference/ros-api.md section 2, checked
+// against ros2/rclcpp node.hpp, create_*.hpp, rate.hpp, publisher.hpp).
+// Every other rclcpp header of the model includes this one.
+// RSIA_MODEL_RCLCPP tells the headers ROS 1 and ROS 2 share (tf2_ros/*.h)
+// which API to declare.
+//
+// Where the distros differ the model declares the union that user code of
+// every distro resolves against, with the qualified names of the real API:
+// - Rate/WallRate are the Jazzy+ classes (Humble: aliases of GenericRate);
+//   GenericRate<Clock> is kept (Humble, deprecated in Jazzy) and ROSRate
+//   (Rolling) is declared too;
+// - create_service/create_client take a QoS (all) or the deprecated
+//   rmw_qos_profile_t (Humble, Jazzy);
+// - Node::create_timer and the free create_timer(clock, period, ...) form
+//   exist from Jazzy on; create_wall_timer gains `autostart` in Jazzy.
 #ifndef RSIA_MODEL_RCLCPP_RCLCPP_HPP
 #define RSIA_MODEL_RCLCPP_RCLCPP_HPP
 #define RSIA_MODEL_RCLCPP 1
@@ -11,18 +23,54 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
-#define RCLCPP_SMART_PTR_DEFINITIONS(...) \
+#include <rcl_interfaces/msg/parameter_descriptor.hpp>
+#include <rcl_interfaces/msg/set_parameters_result.hpp>
+
+// the smart pointer aliases and factories of rclcpp/macros.hpp
+#define RCLCPP_SHARED_PTR_DEFINITIONS(...) \
   using SharedPtr = std::shared_ptr<__VA_ARGS__>; \
   using ConstSharedPtr = std::shared_ptr<const __VA_ARGS__>; \
+  template<typename ... RsiaArgs> \
+  static std::shared_ptr<__VA_ARGS__> make_shared(RsiaArgs && ... args);
+#define RCLCPP_WEAK_PTR_DEFINITIONS(...) \
+  using WeakPtr = std::weak_ptr<__VA_ARGS__>; \
+  using ConstWeakPtr = std::weak_ptr<const __VA_ARGS__>;
+#define RCLCPP_UNIQUE_PTR_DEFINITIONS(...) \
   using UniquePtr = std::unique_ptr<__VA_ARGS__>; \
-  using WeakPtr = std::weak_ptr<__VA_ARGS__>;
+  template<typename ... RsiaArgs> \
+  static std::unique_ptr<__VA_ARGS__> make_unique(RsiaArgs && ... args);
+#define RCLCPP_SMART_PTR_DEFINITIONS(...) \
+  RCLCPP_SHARED_PTR_DEFINITIONS(__VA_ARGS__) \
+  RCLCPP_WEAK_PTR_DEFINITIONS(__VA_ARGS__) \
+  RCLCPP_UNIQUE_PTR_DEFINITIONS(__VA_ARGS__)
+#define RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(...) \
+  using SharedPtr = std::shared_ptr<__VA_ARGS__>; \
+  using ConstSharedPtr = std::shared_ptr<const __VA_ARGS__>; \
+  RCLCPP_WEAK_PTR_DEFINITIONS(__VA_ARGS__) \
+  using UniquePtr = std::unique_ptr<__VA_ARGS__>;
+#define RCLCPP_SMART_PTR_ALIASES_ONLY(...) \
+  using SharedPtr = std::shared_ptr<__VA_ARGS__>; \
+  using ConstSharedPtr = std::shared_ptr<const __VA_ARGS__>; \
+  using WeakPtr = std::weak_ptr<__VA_ARGS__>; \
+  using ConstWeakPtr = std::weak_ptr<const __VA_ARGS__>; \
+  using UniquePtr = std::unique_ptr<__VA_ARGS__>;
+#define RCLCPP_DISABLE_COPY(...) \
+  __VA_ARGS__(const __VA_ARGS__ &) = delete; \
+  __VA_ARGS__ & operator=(const __VA_ARGS__ &) = delete;
+#define RCLCPP_PUBLIC
+#define RCLCPP_LOCAL
+#define RCUTILS_WARN_UNUSED
+#define RCUTILS_UNUSED(x) (void)(x)
 
 struct rmw_request_id_t
 {
@@ -36,6 +84,23 @@ struct rmw_qos_profile_t
 extern const rmw_qos_profile_t rmw_qos_profile_default;
 extern const rmw_qos_profile_t rmw_qos_profile_services_default;
 extern const rmw_qos_profile_t rmw_qos_profile_sensor_data;
+extern const rmw_qos_profile_t rmw_qos_profile_parameters;
+extern const rmw_qos_profile_t rmw_qos_profile_system_default;
+
+struct rcl_serialized_message_t
+{
+  uint8_t * buffer;
+  std::size_t buffer_length;
+};
+using rmw_serialized_message_t = rcl_serialized_message_t;
+
+enum rcl_clock_type_t
+{
+  RCL_CLOCK_UNINITIALIZED = 0,
+  RCL_ROS_TIME,
+  RCL_SYSTEM_TIME,
+  RCL_STEADY_TIME
+};
 
 namespace rclcpp
 {
@@ -46,17 +111,40 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(Context)
 };
 
-void init(int argc, char const * const * argv);
-bool shutdown();
-bool ok();
+class InitOptions
+{
+public:
+  InitOptions();
+};
+
+enum class SignalHandlerOptions { All, SigInt, SigTerm, None };
+
+void init(int argc, char const * const * argv,
+          const InitOptions & init_options = InitOptions(),
+          SignalHandlerOptions signal_handler_options = SignalHandlerOptions::All);
+std::vector<std::string> init_and_remove_ros_arguments(
+  int argc, char const * const * argv,
+  const InitOptions & init_options = InitOptions());
+std::vector<std::string> remove_ros_arguments(int argc, char const * const * argv);
+bool shutdown(Context::SharedPtr context = nullptr,
+              const std::string & reason = "user called rclcpp::shutdown()");
+bool ok(Context::SharedPtr context = nullptr);
+void on_shutdown(std::function<void()> callback,
+                 Context::SharedPtr context = nullptr);
 bool sleep_for(const std::chrono::nanoseconds & nanoseconds,
                Context::SharedPtr context = nullptr);
+
+namespace contexts
+{
+Context::SharedPtr get_global_default_context();
+}  // namespace contexts
 
 class Logger
 {
 public:
   Logger get_child(const std::string & suffix);
   const char * get_name() const;
+  void set_level(int level);
 };
 Logger get_logger(const std::string & name);
 
@@ -64,29 +152,57 @@ class Duration
 {
 public:
   Duration(int32_t seconds, uint32_t nanoseconds);
+  explicit Duration(std::chrono::nanoseconds nanoseconds);
   template<class Rep, class Period>
   Duration(const std::chrono::duration<Rep, Period> & duration);
+  Duration(const Duration & rhs);
+  Duration & operator=(const Duration & rhs);
+  static Duration max();
   static Duration from_seconds(double seconds);
   static Duration from_nanoseconds(int64_t nanoseconds);
   double seconds() const;
   int64_t nanoseconds() const;
+  template<class DurationT>
+  DurationT to_chrono() const;
   Duration operator+(const Duration & rhs) const;
   Duration operator-(const Duration & rhs) const;
+  Duration operator*(double scale) const;
+  bool operator==(const Duration & rhs) const;
+  bool operator!=(const Duration & rhs) const;
   bool operator<(const Duration & rhs) const;
+  bool operator<=(const Duration & rhs) const;
   bool operator>(const Duration & rhs) const;
+  bool operator>=(const Duration & rhs) const;
+  template<class M>
+  operator M() const;
 };
 
 class Time
 {
 public:
-  Time();
-  Time(int32_t seconds, uint32_t nanoseconds);
+  Time(int32_t seconds, uint32_t nanoseconds,
+       rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
+  explicit Time(int64_t nanoseconds = 0,
+                rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
+  // from builtin_interfaces::msg::Time (implicit, like the real one)
+  template<class M>
+  Time(const M & time_msg, rcl_clock_type_t clock_type = RCL_ROS_TIME);
+  Time(const Time & rhs);
+  Time & operator=(const Time & rhs);
+  static Time max(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
   double seconds() const;
   int64_t nanoseconds() const;
+  rcl_clock_type_t get_clock_type() const;
   Duration operator-(const Time & rhs) const;
   Time operator+(const Duration & rhs) const;
+  Time operator-(const Duration & rhs) const;
+  Time & operator+=(const Duration & rhs);
+  bool operator==(const Time & rhs) const;
+  bool operator!=(const Time & rhs) const;
   bool operator<(const Time & rhs) const;
+  bool operator<=(const Time & rhs) const;
   bool operator>(const Time & rhs) const;
+  bool operator>=(const Time & rhs) const;
   template<class M>
   operator M() const;
 };
@@ -95,77 +211,233 @@ class Clock
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Clock)
-  Clock();
-  Time now();
+  explicit Clock(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
+  Time now() const;
+  // Jazzy+
+  bool sleep_until(Time until, Context::SharedPtr context = nullptr);
   bool sleep_for(Duration rel_time, Context::SharedPtr context = nullptr);
+  bool ros_time_is_active();
+  rcl_clock_type_t get_clock_type() const;
+};
+
+// rclcpp/qos.hpp
+struct KeepLast
+{
+  explicit KeepLast(std::size_t depth);
+};
+
+struct KeepAll
+{
+  KeepAll();
+};
+
+struct QoSInitialization
+{
+  QoSInitialization(int history_policy, std::size_t depth);
 };
 
 class QoS
 {
 public:
+  QoS(const QoSInitialization & qos_initialization,
+      const rmw_qos_profile_t & initial_profile = rmw_qos_profile_default);
   QoS(std::size_t history_depth);
+  QoS(const KeepLast & keep_last,
+      const rmw_qos_profile_t & initial_profile = rmw_qos_profile_default);
+  QoS(const KeepAll & keep_all,
+      const rmw_qos_profile_t & initial_profile = rmw_qos_profile_default);
+  rmw_qos_profile_t & get_rmw_qos_profile();
+  const rmw_qos_profile_t & get_rmw_qos_profile() const;
+  QoS & history(int history);
   QoS & keep_last(std::size_t depth);
   QoS & keep_all();
   QoS & reliable();
   QoS & best_effort();
   QoS & durability_volatile();
   QoS & transient_local();
-  const rmw_qos_profile_t & get_rmw_qos_profile() const;
-};
-
-class KeepLast
-{
-public:
-  explicit KeepLast(std::size_t depth);
+  QoS & deadline(const Duration & deadline);
+  QoS & lifespan(const Duration & lifespan);
+  std::size_t depth() const;
 };
 
 class SensorDataQoS : public QoS
 {
 public:
-  SensorDataQoS();
+  explicit SensorDataQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 5));
 };
 
 class SystemDefaultsQoS : public QoS
 {
 public:
-  SystemDefaultsQoS();
+  explicit SystemDefaultsQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 0));
 };
 
 class ServicesQoS : public QoS
 {
 public:
-  ServicesQoS();
+  explicit ServicesQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 10));
 };
 
 class ParametersQoS : public QoS
 {
 public:
-  ParametersQoS();
+  explicit ParametersQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 1000));
 };
+
+class ParameterEventsQoS : public QoS
+{
+public:
+  explicit ParameterEventsQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 1000));
+};
+
+class RosoutQoS : public QoS
+{
+public:
+  explicit RosoutQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 1000));
+};
+
+class ClockQoS : public QoS
+{
+public:
+  explicit ClockQoS(
+    const QoSInitialization & qos_initialization = QoSInitialization(0, 1));
+};
+
+// rclcpp/callback_group.hpp
+enum class CallbackGroupType { MutuallyExclusive, Reentrant };
 
 class CallbackGroup
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(CallbackGroup)
+  CallbackGroupType type() const;
 };
 
-enum class CallbackGroupType { MutuallyExclusive, Reentrant };
+namespace callback_group
+{
+using CallbackGroupType = rclcpp::CallbackGroupType;
+using CallbackGroup = rclcpp::CallbackGroup;
+}  // namespace callback_group
 
+// rclcpp/parameter.hpp, parameter_value.hpp
+enum ParameterType : uint8_t
+{
+  PARAMETER_NOT_SET = 0,
+  PARAMETER_BOOL,
+  PARAMETER_INTEGER,
+  PARAMETER_DOUBLE,
+  PARAMETER_STRING,
+  PARAMETER_BYTE_ARRAY,
+  PARAMETER_BOOL_ARRAY,
+  PARAMETER_INTEGER_ARRAY,
+  PARAMETER_DOUBLE_ARRAY,
+  PARAMETER_STRING_ARRAY,
+};
+
+class ParameterValue
+{
+public:
+  ParameterValue();
+  explicit ParameterValue(bool bool_value);
+  explicit ParameterValue(int int_value);
+  explicit ParameterValue(int64_t int_value);
+  explicit ParameterValue(float double_value);
+  explicit ParameterValue(double double_value);
+  explicit ParameterValue(const std::string & string_value);
+  explicit ParameterValue(const char * string_value);
+  explicit ParameterValue(const std::vector<bool> & bool_array_value);
+  explicit ParameterValue(const std::vector<int64_t> & int_array_value);
+  explicit ParameterValue(const std::vector<double> & double_array_value);
+  explicit ParameterValue(const std::vector<std::string> & string_array_value);
+  ParameterType get_type() const;
+  template<class T>
+  T get() const;
+};
+
+class Parameter
+{
+public:
+  Parameter();
+  explicit Parameter(const std::string & name);
+  Parameter(const std::string & name, const ParameterValue & value);
+  template<class ValueTypeT>
+  Parameter(const std::string & name, ValueTypeT value);
+  ParameterType get_type() const;
+  std::string get_type_name() const;
+  const std::string & get_name() const;
+  const ParameterValue & get_parameter_value() const;
+  template<class T>
+  T get_value() const;
+  bool as_bool() const;
+  int64_t as_int() const;
+  double as_double() const;
+  const std::string & as_string() const;
+  const std::vector<uint8_t> & as_byte_array() const;
+  const std::vector<bool> & as_bool_array() const;
+  const std::vector<int64_t> & as_integer_array() const;
+  const std::vector<double> & as_double_array() const;
+  const std::vector<std::string> & as_string_array() const;
+  std::string value_to_string() const;
+};
+
+// rclcpp/node_options.hpp
 class NodeOptions
 {
 public:
   NodeOptions();
-  NodeOptions & use_intra_process_comms(bool value);
-  NodeOptions & allow_undeclared_parameters(bool value);
-  NodeOptions & automatically_declare_parameters_from_overrides(bool value);
+  NodeOptions(const NodeOptions & other);
+  NodeOptions & operator=(const NodeOptions & other);
+  Context::SharedPtr context() const;
+  NodeOptions & context(Context::SharedPtr context);
+  const std::vector<std::string> & arguments() const;
   NodeOptions & arguments(const std::vector<std::string> & arguments);
+  std::vector<Parameter> & parameter_overrides();
+  const std::vector<Parameter> & parameter_overrides() const;
+  NodeOptions & parameter_overrides(
+    const std::vector<Parameter> & parameter_overrides);
+  template<class ParameterT>
+  NodeOptions & append_parameter_override(
+    const std::string & name, const ParameterT & value);
+  bool use_global_arguments() const;
+  NodeOptions & use_global_arguments(bool use_global_arguments);
+  bool enable_rosout() const;
+  NodeOptions & enable_rosout(bool enable_rosout);
+  bool use_intra_process_comms() const;
+  NodeOptions & use_intra_process_comms(bool use_intra_process_comms);
+  bool enable_topic_statistics() const;
+  NodeOptions & enable_topic_statistics(bool enable_topic_statistics);
+  bool start_parameter_services() const;
+  NodeOptions & start_parameter_services(bool start_parameter_services);
+  bool start_parameter_event_publisher() const;
+  NodeOptions & start_parameter_event_publisher(
+    bool start_parameter_event_publisher);
+  const QoS & parameter_event_qos() const;
+  NodeOptions & parameter_event_qos(const QoS & parameter_event_qos);
+  const QoS & clock_qos() const;
+  NodeOptions & clock_qos(const QoS & clock_qos);
+  bool use_clock_thread() const;
+  NodeOptions & use_clock_thread(bool use_clock_thread);
+  bool allow_undeclared_parameters() const;
+  NodeOptions & allow_undeclared_parameters(bool allow_undeclared_parameters);
+  bool automatically_declare_parameters_from_overrides() const;
+  NodeOptions & automatically_declare_parameters_from_overrides(
+    bool automatically_declare_parameters_from_overrides);
 };
 
+// publisher_options.hpp, subscription_options.hpp
 template<class AllocatorT = std::allocator<void>>
 class PublisherOptionsWithAllocator
 {
 public:
   PublisherOptionsWithAllocator();
+  CallbackGroup::SharedPtr callback_group;
+  std::shared_ptr<AllocatorT> allocator;
 };
 using PublisherOptions = PublisherOptionsWithAllocator<std::allocator<void>>;
 
@@ -175,32 +447,69 @@ class SubscriptionOptionsWithAllocator
 public:
   SubscriptionOptionsWithAllocator();
   CallbackGroup::SharedPtr callback_group;
+  bool ignore_local_publications = false;
+  std::shared_ptr<AllocatorT> allocator;
 };
-using SubscriptionOptions = SubscriptionOptionsWithAllocator<std::allocator<void>>;
+using SubscriptionOptions =
+  SubscriptionOptionsWithAllocator<std::allocator<void>>;
 
+// serialized_message.hpp, message_info.hpp, loaned_message.hpp
 class SerializedMessage
 {
 public:
   SerializedMessage();
+  explicit SerializedMessage(std::size_t initial_capacity);
+  SerializedMessage(const SerializedMessage & other);
+  SerializedMessage & operator=(const SerializedMessage & other);
+  rcl_serialized_message_t & get_rcl_serialized_message();
+  const rcl_serialized_message_t & get_rcl_serialized_message() const;
+  std::size_t size() const;
+  std::size_t capacity() const;
+  void reserve(std::size_t capacity);
+};
+
+template<class MessageT>
+class Serialization
+{
+public:
+  Serialization();
+  void serialize_message(const MessageT * ros_message,
+                         SerializedMessage * serialized_message) const;
+  void deserialize_message(const SerializedMessage * serialized_message,
+                           MessageT * ros_message) const;
 };
 
 class MessageInfo
 {
+public:
+  MessageInfo();
 };
 
 template<class MessageT, class AllocatorT = std::allocator<void>>
 class LoanedMessage
 {
 public:
+  LoanedMessage(LoanedMessage && other);
+  LoanedMessage & operator=(LoanedMessage && other) = delete;
+  virtual ~LoanedMessage();
+  bool is_valid() const;
   MessageT & get() const;
+  std::unique_ptr<MessageT, std::function<void(MessageT *)>> release();
 };
 
+// publisher_base.hpp, publisher.hpp
 class PublisherBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(PublisherBase)
+  virtual ~PublisherBase();
   const char * get_topic_name() const;
+  std::size_t get_queue_size() const;
   std::size_t get_subscription_count() const;
+  std::size_t get_intra_process_subscription_count() const;
+  bool can_loan_messages() const;
+  QoS get_actual_qos() const;
+  bool assert_liveliness() const;
 };
 
 template<class MessageT, class AllocatorT = std::allocator<void>>
@@ -208,11 +517,19 @@ class Publisher : public PublisherBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
-  void publish(std::unique_ptr<MessageT> msg);
-  void publish(const MessageT & msg);
+  using ROSMessageType = MessageT;
+  using PublishedType = MessageT;
+  using MessageUniquePtr = std::unique_ptr<MessageT>;
+  using MessageSharedPtr = std::shared_ptr<const MessageT>;
+
+  virtual LoanedMessage<MessageT, AllocatorT> borrow_loaned_message();
+  // publish(std::unique_ptr<T, Deleter>) and publish(const T &) are
+  // templates constrained to the ROS (or adapted) type in the real header
+  virtual void publish(std::unique_ptr<MessageT> msg);
+  virtual void publish(const MessageT & msg);
+  void publish(const rcl_serialized_message_t & serialized_msg);
   void publish(const SerializedMessage & serialized_msg);
   void publish(LoanedMessage<MessageT, AllocatorT> && loaned_msg);
-  LoanedMessage<MessageT, AllocatorT> borrow_loaned_message();
 };
 
 class GenericPublisher : public PublisherBase
@@ -220,13 +537,18 @@ class GenericPublisher : public PublisherBase
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(GenericPublisher)
   void publish(const SerializedMessage & message);
+  void publish_as_loaned_msg(const SerializedMessage & message);
 };
 
+// subscription_base.hpp, subscription.hpp, generic_subscription.hpp
 class SubscriptionBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(SubscriptionBase)
+  virtual ~SubscriptionBase();
   const char * get_topic_name() const;
+  std::size_t get_publisher_count() const;
+  QoS get_actual_qos() const;
 };
 
 template<class MessageT, class AllocatorT = std::allocator<void>>
@@ -242,13 +564,24 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(GenericSubscription)
 };
 
+// timer.hpp
+class TimerInfo
+{
+public:
+  Time expected_call_time;
+  Time actual_call_time;
+};
+
 class TimerBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(TimerBase)
+  virtual ~TimerBase();
   void cancel();
-  void reset();
   bool is_canceled();
+  void reset();
+  std::chrono::nanoseconds time_until_trigger();
+  bool is_ready();
 };
 
 template<class FunctorT>
@@ -265,73 +598,248 @@ public:
   RCLCPP_SMART_PTR_DEFINITIONS(WallTimer)
 };
 
+// service.hpp, client.hpp
+class ServiceBase
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(ServiceBase)
+  virtual ~ServiceBase();
+  const char * get_service_name();
+};
+
 template<class ServiceT>
-class Service
+class Service : public ServiceBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Service)
+  void send_response(rmw_request_id_t & req_id,
+                     typename ServiceT::Response & response);
+};
+
+enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
+
+class ClientBase
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(ClientBase)
+  virtual ~ClientBase();
+  const char * get_service_name() const;
+  bool service_is_ready() const;
+  template<class RepT = int64_t, class RatioT = std::milli>
+  bool wait_for_service(
+    std::chrono::duration<RepT, RatioT> timeout =
+    std::chrono::duration<RepT, RatioT>(-1));
 };
 
 template<class ServiceT>
-class Client
+class Client : public ClientBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Client)
-  using SharedRequest = std::shared_ptr<typename ServiceT::Request>;
-  template<class RepT, class RatioT>
-  bool wait_for_service(std::chrono::duration<RepT, RatioT> timeout);
-  template<class RequestT>
-  void async_send_request(RequestT && request);
-  template<class RequestT, class CallbackT>
-  void async_send_request(RequestT && request, CallbackT && callback);
+  using Request = typename ServiceT::Request;
+  using Response = typename ServiceT::Response;
+  using SharedRequest = std::shared_ptr<Request>;
+  using SharedResponse = std::shared_ptr<Response>;
+  using Promise = std::promise<SharedResponse>;
+  using SharedPromise = std::shared_ptr<Promise>;
+  using Future = std::future<SharedResponse>;
+  using SharedFuture = std::shared_future<SharedResponse>;
+  using CallbackType = std::function<void(SharedFuture)>;
+
+  struct FutureAndRequestId
+  {
+    Future future;
+    int64_t request_id;
+    SharedResponse get();
+    bool valid() const;
+    void wait() const;
+    template<class RepT, class RatioT>
+    std::future_status wait_for(
+      const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
+    SharedFuture share() noexcept;
+  };
+
+  struct SharedFutureAndRequestId
+  {
+    SharedFuture future;
+    int64_t request_id;
+    SharedResponse get() const;
+    bool valid() const;
+  };
+
+  FutureAndRequestId async_send_request(SharedRequest request);
+  template<class CallbackT>
+  SharedFutureAndRequestId async_send_request(
+    SharedRequest request, CallbackT && cb);
+  bool remove_pending_request(int64_t request_id);
+  std::size_t prune_pending_requests();
 };
 
-class Parameter
+class GenericClient : public ClientBase
 {
 public:
-  template<class T>
-  T get_value() const;
-  double as_double() const;
-  int64_t as_int() const;
-  bool as_bool() const;
-  std::string as_string() const;
+  RCLCPP_SMART_PTR_DEFINITIONS(GenericClient)
 };
 
-class ParameterValue
+class Event
 {
 public:
-  template<class T>
-  T get() const;
+  RCLCPP_SMART_PTR_DEFINITIONS(Event)
+  bool set();
+  bool check();
 };
 
+// node_interfaces/*.hpp
 namespace node_interfaces
 {
 class NodeBaseInterface
 {
 public:
-  RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface)
-};
-class NodeTimersInterface
-{
-public:
-  RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInterface)
-};
-class NodeTopicsInterface
-{
-public:
-  RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInterface)
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeBaseInterface)
+  virtual ~NodeBaseInterface();
+  virtual const char * get_name() const = 0;
+  virtual const char * get_namespace() const = 0;
+  virtual const char * get_fully_qualified_name() const = 0;
+  virtual Context::SharedPtr get_context() = 0;
+  virtual CallbackGroup::SharedPtr create_callback_group(
+    CallbackGroupType group_type,
+    bool automatically_add_to_executor_with_node = true) = 0;
+  virtual CallbackGroup::SharedPtr get_default_callback_group() = 0;
 };
 class NodeClockInterface
 {
 public:
-  RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface)
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeClockInterface)
+  virtual ~NodeClockInterface();
+  virtual Clock::SharedPtr get_clock() = 0;
 };
+class NodeGraphInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeGraphInterface)
+  virtual ~NodeGraphInterface();
+  virtual std::size_t count_publishers(const std::string & topic_name) const = 0;
+  virtual std::size_t count_subscribers(const std::string & topic_name) const = 0;
+};
+class NodeLoggingInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeLoggingInterface)
+  virtual ~NodeLoggingInterface();
+  virtual Logger get_logger() const = 0;
+};
+class NodeTimersInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeTimersInterface)
+  virtual ~NodeTimersInterface();
+  virtual void add_timer(TimerBase::SharedPtr timer,
+                         CallbackGroup::SharedPtr callback_group) = 0;
+};
+class NodeTopicsInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeTopicsInterface)
+  virtual ~NodeTopicsInterface();
+  virtual std::string resolve_topic_name(
+    const std::string & name, bool only_expand = false) const = 0;
+};
+class NodeServicesInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeServicesInterface)
+  virtual ~NodeServicesInterface();
+};
+class NodeWaitablesInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeWaitablesInterface)
+  virtual ~NodeWaitablesInterface();
+};
+class NodeTimeSourceInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeTimeSourceInterface)
+  virtual ~NodeTimeSourceInterface();
+};
+class OnSetParametersCallbackHandle
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle)
+  using OnSetParametersCallbackType =
+    std::function<rcl_interfaces::msg::SetParametersResult(
+        const std::vector<rclcpp::Parameter> &)>;
+  OnSetParametersCallbackType callback;
+};
+class PreSetParametersCallbackHandle
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(PreSetParametersCallbackHandle)
+  using PreSetParametersCallbackType =
+    std::function<void(std::vector<rclcpp::Parameter> &)>;
+  PreSetParametersCallbackType callback;
+};
+class PostSetParametersCallbackHandle
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(PostSetParametersCallbackHandle)
+  using PostSetParametersCallbackType =
+    std::function<void(const std::vector<rclcpp::Parameter> &)>;
+  PostSetParametersCallbackType callback;
+};
+class NodeParametersInterface
+{
+public:
+  RCLCPP_SMART_PTR_ALIASES_ONLY(NodeParametersInterface)
+  using OnSetParametersCallbackType =
+    OnSetParametersCallbackHandle::OnSetParametersCallbackType;
+  using PreSetParametersCallbackType =
+    PreSetParametersCallbackHandle::PreSetParametersCallbackType;
+  using PostSetParametersCallbackType =
+    PostSetParametersCallbackHandle::PostSetParametersCallbackType;
+  virtual ~NodeParametersInterface();
+  virtual const ParameterValue & declare_parameter(
+    const std::string & name, const ParameterValue & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false) = 0;
+  virtual bool has_parameter(const std::string & name) const = 0;
+  virtual Parameter get_parameter(const std::string & name) const = 0;
+};
+
+// get_node_*_interface(node): node, pointer or shared_ptr to a node
+template<class NodeT>
+NodeBaseInterface::SharedPtr get_node_base_interface(NodeT && node);
+template<class NodeT>
+NodeClockInterface::SharedPtr get_node_clock_interface(NodeT && node);
+template<class NodeT>
+NodeTimersInterface::SharedPtr get_node_timers_interface(NodeT && node);
+template<class NodeT>
+NodeTopicsInterface::SharedPtr get_node_topics_interface(NodeT && node);
+template<class NodeT>
+NodeParametersInterface::SharedPtr get_node_parameters_interface(
+  NodeT && node);
 }  // namespace node_interfaces
 
+// node.hpp
 class Node : public std::enable_shared_from_this<Node>
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Node)
+
+  using OnSetParametersCallbackHandle =
+    node_interfaces::OnSetParametersCallbackHandle;
+  using OnSetParametersCallbackType =
+    node_interfaces::NodeParametersInterface::OnSetParametersCallbackType;
+  using OnParametersSetCallbackType = OnSetParametersCallbackType;
+  using PreSetParametersCallbackHandle =
+    node_interfaces::PreSetParametersCallbackHandle;
+  using PreSetParametersCallbackType =
+    node_interfaces::NodeParametersInterface::PreSetParametersCallbackType;
+  using PostSetParametersCallbackHandle =
+    node_interfaces::PostSetParametersCallbackHandle;
+  using PostSetParametersCallbackType =
+    node_interfaces::NodeParametersInterface::PostSetParametersCallbackType;
 
   explicit Node(const std::string & node_name,
                 const NodeOptions & options = NodeOptions());
@@ -341,11 +849,11 @@ public:
 
   const char * get_name() const;
   const char * get_namespace() const;
+  const char * get_fully_qualified_name() const;
   Logger get_logger() const;
-  Clock::SharedPtr get_clock();
-  Time now() const;
-  Node::SharedPtr create_sub_node(const std::string & sub_namespace);
-  CallbackGroup::SharedPtr create_callback_group(CallbackGroupType type);
+  CallbackGroup::SharedPtr create_callback_group(
+    CallbackGroupType group_type,
+    bool automatically_add_to_executor_with_node = true);
 
   template<class MessageT, class AllocatorT = std::allocator<void>,
     class PublisherT = Publisher<MessageT, AllocatorT>>
@@ -362,27 +870,39 @@ public:
     const SubscriptionOptionsWithAllocator<AllocatorT> & options =
     SubscriptionOptionsWithAllocator<AllocatorT>());
 
+  // `autostart` from Jazzy on
   template<class DurationRepT = int64_t, class DurationT = std::milli,
     class CallbackT>
   typename WallTimer<CallbackT>::SharedPtr create_wall_timer(
     std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback,
     CallbackGroup::SharedPtr group = nullptr, bool autostart = true);
 
+  // Jazzy+: a timer on the node's clock (ROS time)
   template<class DurationRepT = int64_t, class DurationT = std::milli,
     class CallbackT>
   typename GenericTimer<CallbackT>::SharedPtr create_timer(
     std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback,
     CallbackGroup::SharedPtr group = nullptr);
 
-  template<class ServiceT, class CallbackT>
-  typename Service<ServiceT>::SharedPtr create_service(
-    const std::string & service_name, CallbackT && callback,
-    const QoS & qos = ServicesQoS(), CallbackGroup::SharedPtr group = nullptr);
-
+  // the rmw_qos_profile_t forms: Humble, deprecated in Jazzy
+  template<class ServiceT>
+  typename Client<ServiceT>::SharedPtr create_client(
+    const std::string & service_name, const rmw_qos_profile_t & qos_profile,
+    CallbackGroup::SharedPtr group = nullptr);
   template<class ServiceT>
   typename Client<ServiceT>::SharedPtr create_client(
     const std::string & service_name, const QoS & qos = ServicesQoS(),
     CallbackGroup::SharedPtr group = nullptr);
+
+  template<class ServiceT, class CallbackT>
+  typename Service<ServiceT>::SharedPtr create_service(
+    const std::string & service_name, CallbackT && callback,
+    const rmw_qos_profile_t & qos_profile,
+    CallbackGroup::SharedPtr group = nullptr);
+  template<class ServiceT, class CallbackT>
+  typename Service<ServiceT>::SharedPtr create_service(
+    const std::string & service_name, CallbackT && callback,
+    const QoS & qos = ServicesQoS(), CallbackGroup::SharedPtr group = nullptr);
 
   template<class AllocatorT = std::allocator<void>>
   std::shared_ptr<GenericPublisher> create_generic_publisher(
@@ -391,6 +911,8 @@ public:
     const PublisherOptionsWithAllocator<AllocatorT> & options =
     PublisherOptionsWithAllocator<AllocatorT>());
 
+  // Humble takes std::function<void(std::shared_ptr<SerializedMessage>)>,
+  // later distros any callable: the template accepts both
   template<class CallbackT, class AllocatorT = std::allocator<void>>
   std::shared_ptr<GenericSubscription> create_generic_subscription(
     const std::string & topic_name, const std::string & topic_type,
@@ -398,26 +920,120 @@ public:
     const SubscriptionOptionsWithAllocator<AllocatorT> & options =
     SubscriptionOptionsWithAllocator<AllocatorT>());
 
+  // Jazzy+
+  typename GenericClient::SharedPtr create_generic_client(
+    const std::string & service_name, const std::string & service_type,
+    const QoS & qos = ServicesQoS(), CallbackGroup::SharedPtr group = nullptr);
+
+  const ParameterValue & declare_parameter(
+    const std::string & name, const ParameterValue & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false);
+  const ParameterValue & declare_parameter(
+    const std::string & name, ParameterType type,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor{},
+    bool ignore_override = false);
   template<class ParameterT>
-  ParameterT declare_parameter(const std::string & name,
-                               const ParameterT & default_value);
+  auto declare_parameter(
+    const std::string & name, const ParameterT & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false)
+  -> typename std::conditional<
+    std::is_array<ParameterT>::value, std::string, ParameterT>::type;
   template<class ParameterT>
-  ParameterT declare_parameter(const std::string & name);
+  auto declare_parameter(
+    const std::string & name,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false) -> ParameterT;
+  template<class ParameterT>
+  std::vector<ParameterT> declare_parameters(
+    const std::string & namespace_,
+    const std::map<std::string, ParameterT> & parameters,
+    bool ignore_overrides = false);
+  void undeclare_parameter(const std::string & name);
+  bool has_parameter(const std::string & name) const;
+  rcl_interfaces::msg::SetParametersResult set_parameter(
+    const Parameter & parameter);
+  std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+    const std::vector<Parameter> & parameters);
+  rcl_interfaces::msg::SetParametersResult set_parameters_atomically(
+    const std::vector<Parameter> & parameters);
   Parameter get_parameter(const std::string & name) const;
+  bool get_parameter(const std::string & name, Parameter & parameter) const;
   template<class ParameterT>
   bool get_parameter(const std::string & name, ParameterT & parameter) const;
   template<class ParameterT>
-  bool get_parameter_or(const std::string & name, ParameterT & value,
-                        const ParameterT & alternative) const;
+  bool get_parameter_or(const std::string & name, ParameterT & parameter,
+                        const ParameterT & alternative_value) const;
+  template<class ParameterT>
+  ParameterT get_parameter_or(const std::string & name,
+                              const ParameterT & alternative_value) const;
+  std::vector<Parameter> get_parameters(
+    const std::vector<std::string> & names) const;
+  template<class ParameterT>
+  bool get_parameters(const std::string & prefix,
+                      std::map<std::string, ParameterT> & values) const;
+
+  // Jazzy+: pre/post; all: on_set
+  RCUTILS_WARN_UNUSED
+  PreSetParametersCallbackHandle::SharedPtr add_pre_set_parameters_callback(
+    PreSetParametersCallbackType callback);
+  RCUTILS_WARN_UNUSED
+  OnSetParametersCallbackHandle::SharedPtr add_on_set_parameters_callback(
+    OnSetParametersCallbackType callback);
+  RCUTILS_WARN_UNUSED
+  PostSetParametersCallbackHandle::SharedPtr add_post_set_parameters_callback(
+    PostSetParametersCallbackType callback);
+  void remove_on_set_parameters_callback(
+    const OnSetParametersCallbackHandle * const handler);
+
+  std::vector<std::string> get_node_names() const;
+  std::map<std::string, std::vector<std::string>>
+  get_topic_names_and_types() const;
+  std::map<std::string, std::vector<std::string>>
+  get_service_names_and_types() const;
+  std::size_t count_publishers(const std::string & topic_name) const;
+  std::size_t count_subscribers(const std::string & topic_name) const;
+  Event::SharedPtr get_graph_event();
+  void wait_for_graph_change(Event::SharedPtr event,
+                             std::chrono::nanoseconds timeout);
+
+  Clock::SharedPtr get_clock();
+  Clock::ConstSharedPtr get_clock() const;
+  Time now() const;
 
   node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface();
+  node_interfaces::NodeClockInterface::SharedPtr get_node_clock_interface();
+  node_interfaces::NodeGraphInterface::SharedPtr get_node_graph_interface();
+  node_interfaces::NodeLoggingInterface::SharedPtr
+  get_node_logging_interface();
   node_interfaces::NodeTimersInterface::SharedPtr get_node_timers_interface();
   node_interfaces::NodeTopicsInterface::SharedPtr get_node_topics_interface();
-  node_interfaces::NodeClockInterface::SharedPtr get_node_clock_interface();
+  node_interfaces::NodeServicesInterface::SharedPtr
+  get_node_services_interface();
+  node_interfaces::NodeWaitablesInterface::SharedPtr
+  get_node_waitables_interface();
+  node_interfaces::NodeParametersInterface::SharedPtr
+  get_node_parameters_interface();
+  node_interfaces::NodeTimeSourceInterface::SharedPtr
+  get_node_time_source_interface();
+
+  // relative names of entities made through the sub-node get
+  // `<namespace>/<sub_namespace>/`
+  const std::string & get_sub_namespace() const;
+  const std::string & get_effective_namespace() const;
+  Node::SharedPtr create_sub_node(const std::string & sub_namespace);
+  const NodeOptions & get_node_options() const;
+
+protected:
+  Node(const Node & other, const std::string & sub_namespace);
 };
 
-// free functions (create_publisher.hpp, create_subscription.hpp,
-// create_timer.hpp)
+// free functions: create_publisher.hpp
 template<class MessageT, class AllocatorT = std::allocator<void>,
   class PublisherT = Publisher<MessageT, AllocatorT>, class NodeT>
 std::shared_ptr<PublisherT> create_publisher(
@@ -425,51 +1041,189 @@ std::shared_ptr<PublisherT> create_publisher(
   const PublisherOptionsWithAllocator<AllocatorT> & options =
   PublisherOptionsWithAllocator<AllocatorT>());
 
+template<class MessageT, class AllocatorT = std::allocator<void>,
+  class PublisherT = Publisher<MessageT, AllocatorT>>
+std::shared_ptr<PublisherT> create_publisher(
+  node_interfaces::NodeParametersInterface::SharedPtr & node_parameters,
+  node_interfaces::NodeTopicsInterface::SharedPtr & node_topics,
+  const std::string & topic_name, const QoS & qos,
+  const PublisherOptionsWithAllocator<AllocatorT> & options =
+  PublisherOptionsWithAllocator<AllocatorT>());
+
+// create_subscription.hpp (the node is taken by non-const reference)
 template<class MessageT, class CallbackT,
   class AllocatorT = std::allocator<void>,
   class SubscriptionT = Subscription<MessageT, AllocatorT>, class NodeT>
 std::shared_ptr<SubscriptionT> create_subscription(
-  NodeT && node, const std::string & topic_name, const QoS & qos,
+  NodeT & node, const std::string & topic_name, const QoS & qos,
   CallbackT && callback,
   const SubscriptionOptionsWithAllocator<AllocatorT> & options =
   SubscriptionOptionsWithAllocator<AllocatorT>());
 
-template<class NodeT, class CallbackT>
-TimerBase::SharedPtr create_timer(
-  NodeT node, Clock::SharedPtr clock, Duration period, CallbackT && callback,
-  CallbackGroup::SharedPtr group = nullptr);
+template<class MessageT, class CallbackT,
+  class AllocatorT = std::allocator<void>,
+  class SubscriptionT = Subscription<MessageT, AllocatorT>>
+std::shared_ptr<SubscriptionT> create_subscription(
+  node_interfaces::NodeParametersInterface::SharedPtr & node_parameters,
+  node_interfaces::NodeTopicsInterface::SharedPtr & node_topics,
+  const std::string & topic_name, const QoS & qos, CallbackT && callback,
+  const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+  SubscriptionOptionsWithAllocator<AllocatorT>());
 
+// create_timer.hpp (`autostart` from Jazzy on)
 template<class CallbackT>
 TimerBase::SharedPtr create_timer(
   std::shared_ptr<node_interfaces::NodeBaseInterface> node_base,
   std::shared_ptr<node_interfaces::NodeTimersInterface> node_timers,
   Clock::SharedPtr clock, Duration period, CallbackT && callback,
+  CallbackGroup::SharedPtr group = nullptr, bool autostart = true);
+
+template<class NodeT, class CallbackT>
+TimerBase::SharedPtr create_timer(
+  NodeT node, Clock::SharedPtr clock, Duration period, CallbackT && callback,
+  CallbackGroup::SharedPtr group = nullptr, bool autostart = true);
+
+// Jazzy+
+template<class DurationRepT, class DurationT, class CallbackT>
+typename GenericTimer<CallbackT>::SharedPtr create_timer(
+  Clock::SharedPtr clock,
+  std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback,
+  CallbackGroup::SharedPtr group, node_interfaces::NodeBaseInterface * node_base,
+  node_interfaces::NodeTimersInterface * node_timers, bool autostart = true);
+
+template<class DurationRepT, class DurationT, class CallbackT>
+typename WallTimer<CallbackT>::SharedPtr create_wall_timer(
+  std::chrono::duration<DurationRepT, DurationT> period, CallbackT callback,
+  CallbackGroup::SharedPtr group, node_interfaces::NodeBaseInterface * node_base,
+  node_interfaces::NodeTimersInterface * node_timers, bool autostart = true);
+
+// create_service.hpp, create_client.hpp
+template<class ServiceT, class CallbackT>
+typename Service<ServiceT>::SharedPtr create_service(
+  std::shared_ptr<node_interfaces::NodeBaseInterface> node_base,
+  std::shared_ptr<node_interfaces::NodeServicesInterface> node_services,
+  const std::string & service_name, CallbackT && callback,
+  const QoS & qos, CallbackGroup::SharedPtr group);
+
+template<class ServiceT>
+typename Client<ServiceT>::SharedPtr create_client(
+  std::shared_ptr<node_interfaces::NodeBaseInterface> node_base,
+  std::shared_ptr<node_interfaces::NodeGraphInterface> node_graph,
+  std::shared_ptr<node_interfaces::NodeServicesInterface> node_services,
+  const std::string & service_name, const QoS & qos = ServicesQoS(),
   CallbackGroup::SharedPtr group = nullptr);
 
-// rate.hpp (the Humble shape: Rate and WallRate are GenericRate)
-template<class ClockT = std::chrono::high_resolution_clock>
-class GenericRate
+// create_generic_publisher.hpp, create_generic_subscription.hpp
+template<class AllocatorT = std::allocator<void>>
+std::shared_ptr<GenericPublisher> create_generic_publisher(
+  node_interfaces::NodeTopicsInterface::SharedPtr topics_interface,
+  const std::string & topic_name, const std::string & topic_type,
+  const QoS & qos,
+  const PublisherOptionsWithAllocator<AllocatorT> & options =
+  PublisherOptionsWithAllocator<AllocatorT>());
+
+template<class CallbackT, class AllocatorT = std::allocator<void>>
+std::shared_ptr<GenericSubscription> create_generic_subscription(
+  node_interfaces::NodeTopicsInterface::SharedPtr topics_interface,
+  const std::string & topic_name, const std::string & topic_type,
+  const QoS & qos, CallbackT && callback,
+  const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+  SubscriptionOptionsWithAllocator<AllocatorT>());
+
+// rate.hpp: the Jazzy+ classes (Humble: `using Rate = GenericRate<
+// std::chrono::system_clock>; using WallRate = GenericRate<steady_clock>`;
+// user code of both reads alike)
+class RateBase
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(RateBase)
+  virtual ~RateBase();
+  virtual bool sleep() = 0;
+  virtual rcl_clock_type_t get_type() const = 0;
+  virtual void reset() = 0;
+};
+
+// Humble; deprecated in Jazzy, gone in Rolling
+template<class Clock = std::chrono::high_resolution_clock>
+class GenericRate : public RateBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(GenericRate)
   explicit GenericRate(double rate);
   explicit GenericRate(std::chrono::nanoseconds period);
-  bool sleep();
-  void reset();
+  virtual bool sleep();
+  virtual bool is_steady() const;
+  virtual rcl_clock_type_t get_type() const;
+  virtual void reset();
   std::chrono::nanoseconds period() const;
 };
-using Rate = GenericRate<std::chrono::system_clock>;
-using WallRate = GenericRate<std::chrono::steady_clock>;
+
+class Rate : public RateBase
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Rate)
+  explicit Rate(const double rate,
+                Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
+  explicit Rate(const Duration & period,
+                Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
+  virtual bool sleep();
+  virtual bool is_steady() const;
+  virtual rcl_clock_type_t get_type() const;
+  virtual void reset();
+  std::chrono::nanoseconds period() const;
+};
+
+class WallRate : public Rate
+{
+public:
+  explicit WallRate(const double rate);
+  explicit WallRate(const Duration & period);
+};
+
+// Rolling
+class ROSRate : public Rate
+{
+public:
+  explicit ROSRate(const double rate);
+  explicit ROSRate(const Duration & period);
+};
 
 // executors
+class ExecutorOptions
+{
+public:
+  ExecutorOptions();
+};
+
 class Executor
 {
 public:
-  void add_node(Node::SharedPtr node);
-  void add_node(node_interfaces::NodeBaseInterface::SharedPtr node);
-  void remove_node(Node::SharedPtr node);
-  void spin();
-  void spin_some();
+  RCLCPP_SMART_PTR_DEFINITIONS_NOT_COPYABLE(Executor)
+  explicit Executor(const ExecutorOptions & options = ExecutorOptions());
+  virtual ~Executor();
+  virtual void spin() = 0;
+  virtual void add_node(
+    node_interfaces::NodeBaseInterface::SharedPtr node_ptr, bool notify = true);
+  virtual void add_node(Node::SharedPtr node_ptr, bool notify = true);
+  virtual void remove_node(
+    node_interfaces::NodeBaseInterface::SharedPtr node_ptr, bool notify = true);
+  virtual void remove_node(Node::SharedPtr node_ptr, bool notify = true);
+  virtual void add_callback_group(
+    CallbackGroup::SharedPtr group_ptr,
+    node_interfaces::NodeBaseInterface::SharedPtr node_ptr, bool notify = true);
+  void spin_node_once(Node::SharedPtr node,
+                      std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  void spin_node_some(Node::SharedPtr node);
+  virtual void spin_some(
+    std::chrono::nanoseconds max_duration = std::chrono::nanoseconds(0));
+  virtual void spin_all(std::chrono::nanoseconds max_duration);
+  virtual void spin_once(
+    std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  template<class FutureT, class TimeRepT = int64_t, class TimeT = std::milli>
+  FutureReturnCode spin_until_future_complete(
+    const FutureT & future,
+    std::chrono::duration<TimeRepT, TimeT> timeout =
+    std::chrono::duration<TimeRepT, TimeT>(-1));
   void cancel();
 };
 
@@ -478,40 +1232,120 @@ namespace executors
 class SingleThreadedExecutor : public Executor
 {
 public:
-  SingleThreadedExecutor();
+  RCLCPP_SMART_PTR_DEFINITIONS(SingleThreadedExecutor)
+  explicit SingleThreadedExecutor(
+    const ExecutorOptions & options = ExecutorOptions());
+  void spin() override;
 };
 class MultiThreadedExecutor : public Executor
 {
 public:
-  MultiThreadedExecutor();
+  RCLCPP_SMART_PTR_DEFINITIONS(MultiThreadedExecutor)
+  explicit MultiThreadedExecutor(
+    const ExecutorOptions & options = ExecutorOptions(),
+    std::size_t number_of_threads = 0, bool yield_before_execute = false,
+    std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1));
+  void spin() override;
+  std::size_t get_number_of_threads();
+};
+class StaticSingleThreadedExecutor : public Executor
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(StaticSingleThreadedExecutor)
+  explicit StaticSingleThreadedExecutor(
+    const ExecutorOptions & options = ExecutorOptions());
+  void spin() override;
 };
 }  // namespace executors
 
-void spin(Node::SharedPtr node_ptr);
+namespace experimental
+{
+namespace executors
+{
+class EventsExecutor : public rclcpp::Executor
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(EventsExecutor)
+  explicit EventsExecutor(
+    const rclcpp::ExecutorOptions & options = rclcpp::ExecutorOptions());
+  void spin() override;
+};
+}  // namespace executors
+}  // namespace experimental
+
 void spin(node_interfaces::NodeBaseInterface::SharedPtr node_ptr);
+void spin(Node::SharedPtr node_ptr);
+void spin_some(node_interfaces::NodeBaseInterface::SharedPtr node_ptr);
 void spin_some(Node::SharedPtr node_ptr);
+template<class FutureT, class TimeRepT = int64_t, class TimeT = std::milli>
+FutureReturnCode spin_until_future_complete(
+  Node::SharedPtr node_ptr, const FutureT & future,
+  std::chrono::duration<TimeRepT, TimeT> timeout =
+  std::chrono::duration<TimeRepT, TimeT>(-1));
+template<class FutureT, class TimeRepT = int64_t, class TimeT = std::milli>
+FutureReturnCode spin_until_future_complete(
+  node_interfaces::NodeBaseInterface::SharedPtr node_ptr,
+  const FutureT & future,
+  std::chrono::duration<TimeRepT, TimeT> timeout =
+  std::chrono::duration<TimeRepT, TimeT>(-1));
 
 }  // namespace rclcpp
 
 // logging macros: the arguments stay expressions in a do/while(0) like the
-// real expansion
+// real expansion; the _ONCE/_THROTTLE/_SKIPFIRST/_EXPRESSION/_FUNCTION
+// variants keep their extra leading arguments
 void rsia_model_rclcpp_log(...);
-#define RSIA_MODEL_RCLCPP_LOG(logger, ...) \
-  do { rsia_model_rclcpp_log(logger, __VA_ARGS__); } while (0)
+#define RSIA_MODEL_RCLCPP_LOG(...) \
+  do { rsia_model_rclcpp_log(__VA_ARGS__); } while (0)
+
 #define RCLCPP_DEBUG(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_INFO(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_WARN(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_ERROR(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_FATAL(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
-#define RCLCPP_INFO_STREAM(logger, stream) \
-  RSIA_MODEL_RCLCPP_LOG(logger, 0)
-#define RCLCPP_WARN_STREAM(logger, stream) \
-  RSIA_MODEL_RCLCPP_LOG(logger, 0)
-#define RCLCPP_ERROR_STREAM(logger, stream) \
-  RSIA_MODEL_RCLCPP_LOG(logger, 0)
+#define RCLCPP_DEBUG_ONCE(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_ONCE(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN_ONCE(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_ERROR_ONCE(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_FATAL_ONCE(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_SKIPFIRST(logger, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_INFO_SKIPFIRST(logger, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_WARN_SKIPFIRST(logger, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_ERROR_SKIPFIRST(logger, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_DEBUG_EXPRESSION(logger, expression, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, expression, __VA_ARGS__)
+#define RCLCPP_INFO_EXPRESSION(logger, expression, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, expression, __VA_ARGS__)
+#define RCLCPP_WARN_EXPRESSION(logger, expression, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, expression, __VA_ARGS__)
+#define RCLCPP_ERROR_EXPRESSION(logger, expression, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, expression, __VA_ARGS__)
+#define RCLCPP_DEBUG_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
 #define RCLCPP_INFO_THROTTLE(logger, clock, ms, ...) \
   RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
 #define RCLCPP_WARN_THROTTLE(logger, clock, ms, ...) \
   RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_ERROR_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_FATAL_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+// the _STREAM forms build the text with an ostream
+#define RSIA_MODEL_RCLCPP_STREAM(logger, stream) \
+  do { std::stringstream rclcpp_stream_ss_; rclcpp_stream_ss_ << stream; \
+    rsia_model_rclcpp_log(logger, rclcpp_stream_ss_.str().c_str()); } while (0)
+#define RCLCPP_DEBUG_STREAM(logger, stream) RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM(logger, stream) RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM(logger, stream) RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM(logger, stream) RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM(logger, stream) RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
 
 #endif  // RSIA_MODEL_RCLCPP_RCLCPP_HPP

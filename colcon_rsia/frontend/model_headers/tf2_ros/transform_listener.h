@@ -3,22 +3,36 @@
 #ifndef RSIA_MODEL_TF2_ROS_TRANSFORM_LISTENER_H
 #define RSIA_MODEL_TF2_ROS_TRANSFORM_LISTENER_H
 
-// ROS 1 and ROS 2 share this include name: a ROS 2 TU includes
-// <rclcpp/rclcpp.hpp> first (directly or through its own headers),
-// which defines RSIA_MODEL_RCLCPP; then the ROS 2 class is declared.
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
 #ifdef RSIA_MODEL_RCLCPP
+#include <memory>
 #include <string>
+
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/qos.hpp>
 
 namespace tf2_ros
 {
 
-class Buffer;
+// the buffer is a tf2::BufferCore in the real class (a tf2_ros::Buffer in
+// user code); the node forms subscribe /tf and /tf_static on that node, the
+// first form on a node of its own
 class TransformListener
 {
 public:
   explicit TransformListener(Buffer & buffer, bool spin_thread = true);
-  template<class NodeT>
-  TransformListener(Buffer & buffer, NodeT && node, bool spin_thread = true);
+  template<class NodeT, class AllocatorT = std::allocator<void>>
+  TransformListener(
+    Buffer & buffer, NodeT && node, bool spin_thread = true,
+    const rclcpp::QoS & qos = DynamicListenerQoS(),
+    const rclcpp::QoS & static_qos = StaticListenerQoS(),
+    const rclcpp::SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    rclcpp::SubscriptionOptionsWithAllocator<AllocatorT>(),
+    const rclcpp::SubscriptionOptionsWithAllocator<AllocatorT> & static_options =
+    rclcpp::SubscriptionOptionsWithAllocator<AllocatorT>());
+  virtual ~TransformListener();
 };
 
 }  // namespace tf2_ros

@@ -1,6 +1,15 @@
 // colcon-rsia model of <message_filters/sync_policies/exact_time.h>.
-#ifndef RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME_H
-#define RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME_H
+//
+// ROS 1 and ROS 2 share this include name. Model mode defines
+// RSIA_MODEL_RCLCPP for a ROS 2 unit (one including rclcpp or a ROS 2
+// interface header); then the ROS 2 class is declared, else the ROS 1 one.
+// The ROS 2 class is in <message_filters/sync_policies/exact_time.hpp>; both define
+// RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME.
+#ifdef RSIA_MODEL_RCLCPP
+#include <message_filters/sync_policies/exact_time.hpp>
+#else  // ROS 1
+#ifndef RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME
+#define RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME
 
 #include <cstdint>
 
@@ -43,4 +52,5 @@ struct ExactTime : public PolicyBase<M0, M1, M2, M3, M4, M5, M6, M7, M8>
 
 }  // namespace message_filters
 
-#endif  // RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME_H
+#endif  // RSIA_MODEL_MESSAGE_FILTERS_SYNC_POLICIES_EXACT_TIME
+#endif  // RSIA_MODEL_RCLCPP

@@ -5,10 +5,11 @@
 //   publishing loop after it never calls wait_rate.sleep(): each iteration lasts as long as
 //   the action takes -> dependent.
 // - actionlib::SimpleActionClient (an action CLIENT is not a subscriber for pattern 1; the
-//   node subscribes to `battery` anyway).
+//   node subscribes to `battery` anyway); a service client (no topic, no input either).
 #include <actionlib/TestAction.h>
 #include <actionlib/client/simple_action_client.h>
 #include <ros/ros.h>
+#include <roscpp/Empty.h>
 #include <sensor_msgs/BatteryState.h>
 #include <std_msgs/Int32.h>
 
@@ -30,6 +31,8 @@ int main(int argc, char** argv)
 
   ros::Subscriber battery_sub = nh.subscribe("battery", 1, onBattery);
   ros::Publisher leg_pub = nh.advertise<std_msgs::Int32>("mission_leg", 1);
+  // API: ros::NodeHandle::serviceClient, called when the mission ends.
+  ros::ServiceClient reset_client = nh.serviceClient<roscpp::Empty>("reset_mission");
 
   // API: actionlib::SimpleActionClient (name, spin_thread).
   actionlib::SimpleActionClient<actionlib::TestAction> client("execute_trajectory", true);
@@ -61,5 +64,7 @@ int main(int argc, char** argv)
     // not pace this loop; no timer or Rate-paced loop on the path).
     leg_pub.publish(msg);
   }
+  roscpp::Empty reset;
+  reset_client.call(reset);
   return 0;
 }

@@ -1,0 +1,2 @@
+// colcon-rsia model of <rclcpp/executors/single_threaded_executor.hpp>: declared in <rclcpp/rclcpp.hpp>
+#include <rclcpp/rclcpp.hpp>

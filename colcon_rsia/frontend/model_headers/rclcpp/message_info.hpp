@@ -1,0 +1,2 @@
+// colcon-rsia model of <rclcpp/message_info.hpp>: declared in <rclcpp/rclcpp.hpp>
+#include <rclcpp/rclcpp.hpp>
