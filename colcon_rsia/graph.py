@@ -63,10 +63,16 @@ class SystemGraph:
         return sorted(v[1] for v in self.graph if v[0] == 'topic')
 
     def instances_of(self, node_id):
-        """Ids of the instances running a node id (``pkg/exe``)."""
+        """Ids of the instances an instance id or a node id names.
+
+        A node id is that of the summary (``pkg/exe``, ``pkg/Plugin``,
+        ``pkg/exe/node_name``) or ``pkg/exe`` for every node the
+        executable runs.
+        """
         return sorted(
             i.id for i in self.instances.values()
-            if f'{i.package}/{i.executable}' == node_id or i.id == node_id)
+            if node_id in (i.id, f'{i.package}/{i.executable}') or
+            (i.node is not None and i.node.id == node_id))
 
 
 def instances_from_summaries(summaries):

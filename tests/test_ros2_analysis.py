@@ -105,3 +105,18 @@ def test_ros2_launch_parameters_names_and_multi_node_executables(
     image = next(t for t in graph['topics'] if t['name'] == '/image')
     assert (image['publishers'], image['subscribers']) == (
         ['/camera'], ['/detector'])
+
+
+def test_a_node_of_a_multi_node_executable_is_changed_by_its_id(
+        ros2_build_base):
+    # with the launch file the instances are /camera and /detector; the
+    # summary's node id still names the one the change is in
+    result = run_colcon(
+        ['rsia', 'impact', '--base-paths', str(WORKSPACES / 'ros2' / 'src'),
+         '--launch', 'rsia_ros2_core', 'robot.launch.py',
+         '--changed', 'rsia_ros2_core/multi_node/camera', '--format', 'json'],
+        cwd=ros2_build_base.parent, check=True)
+    impact = json.loads(result.stdout)
+    assert impact['changed'] == ['/camera']
+    # /image from the camera feeds the detector, nothing else
+    assert impact['rate_impact'] == ['/detector']
