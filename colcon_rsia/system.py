@@ -93,7 +93,8 @@ def launch_instances(summaries, result):
 
 def _launched_instance(launched, node, package, executable, several):
     # unnamed in the launch file: the name the code gives, as at run time;
-    # one name for several nodes of a process would clash, so each keeps its
+    # one launch name for several nodes of a process would clash, so each
+    # of them keeps its own
     code_name = node.name if node is not None else None
     if several:
         name = code_name or node.id.split('/')[-1]
