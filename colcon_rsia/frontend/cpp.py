@@ -810,6 +810,13 @@ class _Walker:
                 location=self.location(cursor)))
         return True
 
+    def _argument_msg_type(self, arguments, api):
+        if api.msg_type_arg is None:
+            return None
+        argument = self._argument(arguments, api.msg_type_arg)
+        return normalize_msg_type(argument.type.get_canonical().spelling) \
+            if argument is not None else None
+
     def _type_name(self, arguments, api):
         """The message type a generic API names: "pkg/msg/Name"."""
         if api.type_name_arg is None:
@@ -887,6 +894,7 @@ class _Walker:
         else:
             msg_type = self._table_msg_type(api.msg_type) or \
                 self._template_msg_type(cursor, name) or \
+                self._argument_msg_type(arguments, api) or \
                 self._callback_msg_type(declaration)
         target = self._target(cursor, stack)
         if target is None and api.callback_arg is None:

@@ -92,6 +92,9 @@ class Api:
     # generic publishers/subscriptions: the argument naming the type as a
     # string ("std_msgs/msg/String"), which gives the message type
     type_name_arg: Optional[int] = None
+    # the argument whose type is the message (rclcpp::wait_for_message's
+    # output message)
+    msg_type_arg: Optional[int] = None
 
 
 NH = 'ros::NodeHandle::'
@@ -135,6 +138,8 @@ CALLS = {
     NH + 'createSteadyTimer': Api(TIMER, callback_arg=1, period_arg=0),
     NH + 'advertiseService': Api(SERVICE, name_arg=0, callback_arg=1),
     NH + 'serviceClient': Api(CLIENT, name_arg=0),
+    # one message from a temporary subscription: an input all the same
+    'ros::topic::waitForMessage': Api(SUBSCRIBER, name_arg=0),
     'ros::service::createClient': Api(CLIENT, name_arg=0),
     'ros::init': Api(NODE_NAME, name_arg=2),
     NH + 'NodeHandle': Api(NODE_HANDLE),
@@ -196,6 +201,11 @@ CALLS = {
     'message_filters::SimpleFilter::registerCallback': Api(
         REGISTER_CALLBACK, callback_arg=0),
     'message_filters::Synchronizer::registerCallback': Api(
+        REGISTER_CALLBACK, callback_arg=0),
+    # rclcpp::ParameterEventHandler: its callbacks run on /parameter_events
+    'rclcpp::ParameterEventHandler::add_parameter_callback': Api(
+        REGISTER_CALLBACK, callback_arg=1),
+    'rclcpp::ParameterEventHandler::add_parameter_event_callback': Api(
         REGISTER_CALLBACK, callback_arg=0),
     # realtime_tools: the constructor (or init) advertises the topic
     # ROS 1: (nh, topic, queue); ROS 2: (publisher), which it wraps
@@ -260,6 +270,10 @@ CALLS = {
         PUBLISHER, name_arg=1, type_name_arg=2),
     'rclcpp::create_generic_subscription': Api(
         SUBSCRIBER, name_arg=1, callback_arg=4, type_name_arg=2),
+    # wait_for_message(out, node, topic, ...): a temporary subscription
+    # (the form taking an existing subscription names no topic)
+    'rclcpp::wait_for_message': Api(
+        SUBSCRIBER, name_arg=FIRST_STRING, msg_type_arg=0),
     'rclcpp::Publisher::publish': Api(PUBLISH),
     'rclcpp::GenericPublisher::publish': Api(PUBLISH),
     'rclcpp_lifecycle::LifecyclePublisher::publish': Api(PUBLISH),
@@ -305,6 +319,10 @@ DECLARED = {
     'tf2_ros::TransformListener': Api(
         DECLARED_SUBSCRIBER, msg_type=TF_MSG,
         implicit_topics=('/tf', '/tf_static')),
+    # made by the user's code, unlike the node's own parameter services
+    'rclcpp::ParameterEventHandler': Api(
+        DECLARED_SUBSCRIBER, msg_type='rcl_interfaces::msg::ParameterEvent',
+        implicit_topics=('/parameter_events',)),
 }
 
 # factory functions whose template argument names the constructed class, so

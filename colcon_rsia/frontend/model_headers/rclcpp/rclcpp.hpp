@@ -34,6 +34,7 @@
 #include <vector>
 
 #include <rcl_interfaces/msg/parameter_descriptor.hpp>
+#include <rcl_interfaces/msg/parameter_event.hpp>
 #include <rcl_interfaces/msg/set_parameters_result.hpp>
 
 // the smart pointer aliases and factories of rclcpp/macros.hpp
@@ -1288,6 +1289,61 @@ FutureReturnCode spin_until_future_complete(
   const FutureT & future,
   std::chrono::duration<TimeRepT, TimeT> timeout =
   std::chrono::duration<TimeRepT, TimeT>(-1));
+
+// parameter_event_handler.hpp: a subscription to /parameter_events that
+// the user's code makes, with callbacks per parameter or per event
+struct ParameterCallbackHandle
+{
+  using SharedPtr = std::shared_ptr<ParameterCallbackHandle>;
+  using ParameterCallbackType = std::function<void (const Parameter &)>;
+};
+struct ParameterEventCallbackHandle
+{
+  using SharedPtr = std::shared_ptr<ParameterEventCallbackHandle>;
+  using ParameterEventCallbackType =
+    std::function<void (const rcl_interfaces::msg::ParameterEvent &)>;
+};
+class ParameterEventHandler
+{
+public:
+  template<typename NodeT>
+  explicit ParameterEventHandler(NodeT node, const QoS & qos = QoS(1000));
+  ParameterEventCallbackHandle::SharedPtr add_parameter_event_callback(
+    ParameterEventCallbackHandle::ParameterEventCallbackType callback);
+  void remove_parameter_event_callback(
+    ParameterEventCallbackHandle::SharedPtr callback_handle);
+  ParameterCallbackHandle::SharedPtr add_parameter_callback(
+    const std::string & parameter_name,
+    ParameterCallbackHandle::ParameterCallbackType callback,
+    const std::string & node_name = "");
+  void remove_parameter_callback(
+    ParameterCallbackHandle::SharedPtr callback_handle);
+};
+
+// wait_for_message.hpp: one message from an existing subscription, or
+// from a temporary one on `topic` (node form; Rolling adds the
+// node-interfaces form)
+template<class MsgT, class Rep = int64_t, class Period = std::milli>
+bool wait_for_message(
+  MsgT & out, std::shared_ptr<Subscription<MsgT>> subscription,
+  std::shared_ptr<Context> context,
+  std::chrono::duration<Rep, Period> time_to_wait =
+  std::chrono::duration<Rep, Period>(-1));
+template<class MsgT, class Rep = int64_t, class Period = std::milli>
+bool wait_for_message(
+  MsgT & out,
+  node_interfaces::NodeParametersInterface::SharedPtr node_parameters,
+  node_interfaces::NodeTopicsInterface::SharedPtr node_topics,
+  const std::string & topic,
+  std::chrono::duration<Rep, Period> time_to_wait =
+  std::chrono::duration<Rep, Period>(-1),
+  const QoS & qos = SystemDefaultsQoS());
+template<class MsgT, class Rep = int64_t, class Period = std::milli>
+bool wait_for_message(
+  MsgT & out, Node::SharedPtr node, const std::string & topic,
+  std::chrono::duration<Rep, Period> time_to_wait =
+  std::chrono::duration<Rep, Period>(-1),
+  const QoS & qos = SystemDefaultsQoS());
 
 }  // namespace rclcpp
 

@@ -37,6 +37,14 @@ int main(int argc, char** argv)
   // API: actionlib::SimpleActionClient (name, spin_thread).
   actionlib::SimpleActionClient<actionlib::TestAction> client("execute_trajectory", true);
 
+  // API: ros::topic::waitForMessage: a one-shot subscription (an input like any other).
+  sensor_msgs::BatteryState::ConstPtr first_state =
+      ros::topic::waitForMessage<sensor_msgs::BatteryState>("battery", nh, ros::Duration(10.0));
+  if (first_state)
+  {
+    g_battery = first_state->percentage;
+  }
+
   // This Rate paces only the waiting loop below...
   ros::Rate wait_rate(2.0);
   while (ros::ok() && !client.isServerConnected())
