@@ -380,8 +380,19 @@ def _node_classes(merged, function_ids):
 
 
 def _node_name(facts):
-    """(name, namespace) the node's code gives, when it gives one."""
-    given = {(n.name, n.namespace) for n in facts.node_names if n.name}
+    """(name, namespace) the node's code gives, when it gives one.
+
+    The name is a literal, or a parameter (``Base(name) : Node(name)``)
+    that the node's calls pass one literal to.
+    """
+    given = set()
+    for fact in facts.node_names:
+        name = fact.name
+        if name is None and fact.name_param:
+            passed = facts.string_arguments.get(fact.name_param, set())
+            name = next(iter(passed)) if len(passed) == 1 else None
+        if name:
+            given.add((name, fact.namespace))
     if len(given) == 1:
         return given.pop()
     return None, None

@@ -218,6 +218,19 @@ class NodeNameFact:
     name: Optional[str]           # the literal, None when not a literal
     namespace: Optional[str]
     location: str
+    # the parameter of `function` the name is passed in, when it is one:
+    # a base class's constructor ``Base(name) : Node(name)``
+    name_param: Optional[str] = None
+
+
+@dataclass
+class StringArgument:
+    """A string literal passed as argument `index` of a package function."""
+
+    caller: str
+    callee: str
+    index: int
+    value: str
 
 
 @dataclass
@@ -270,6 +283,7 @@ class TuFacts:
     node_names: List[NodeNameFact] = field(default_factory=list)
     clients: List[ClientFact] = field(default_factory=list)
     handle_aliases: List[HandleAlias] = field(default_factory=list)
+    string_arguments: List[StringArgument] = field(default_factory=list)
     plugin_exports: List[List[str]] = field(default_factory=list)
     # the package's own files the unit read (its source and headers)
     files: List[str] = field(default_factory=list)
@@ -290,6 +304,7 @@ class TuFacts:
             'node_handles': NodeHandleFact, 'bindings': ParamBinding,
             'param_reads': ParamRead, 'node_names': NodeNameFact,
             'clients': ClientFact, 'handle_aliases': HandleAlias,
+            'string_arguments': StringArgument,
         }
         kwargs = {}
         for f in fields(cls):

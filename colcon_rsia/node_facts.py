@@ -35,6 +35,8 @@ class NodeFacts:
     rates: Dict[str, model.RateObject] = field(default_factory=dict)
     syncs: List[model.SyncFact] = field(default_factory=list)
     node_names: List[model.NodeNameFact] = field(default_factory=list)
+    # parameter USR -> the string literals the node's calls pass to it
+    string_arguments: Dict[str, set] = field(default_factory=dict)
     clients: List[model.ClientFact] = field(default_factory=list)
     namespaces: Dict[str, str] = field(default_factory=dict)
     # handle USR -> the handles it may stand for (parameters bound by
@@ -132,6 +134,12 @@ def node_facts(facts, function_ids):
         r for r in facts.registrations if r.function in functions)
     result.node_names = unique(
         n for n in facts.node_names if n.function in functions)
+    for argument in facts.string_arguments:
+        callee = functions.get(argument.callee)
+        if argument.caller in functions and callee is not None and \
+                argument.index < len(callee.params):
+            result.string_arguments.setdefault(
+                callee.params[argument.index], set()).add(argument.value)
     result.clients = unique(c for c in facts.clients if owned(c))
     result.rates = {r.handle: r for r in facts.rates}
     result.syncs = unique(facts.syncs)

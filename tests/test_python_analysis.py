@@ -331,7 +331,7 @@ def test_event_handler_analyses_python_packages(python_workspace, path):
 
 def test_node_names_come_from_the_code(tmp_path):
     # written from rospy.init_node('...'), rclpy.create_node('...') and
-    # super().__init__('...') of each node
+    # super().__init__('...') of each node (or of its base class)
     expected = {
         'rsia_py_ros1/aligner.py': 'aligner',
         'rsia_py_ros1/cmd_repeater.py': 'cmd_repeater',
@@ -344,9 +344,8 @@ def test_node_names_come_from_the_code(tmp_path):
         'rsia_py_ros2/planner': 'planner',
         'rsia_py_ros2/pose_broadcaster': 'pose_broadcaster',
         # UltrasonicNode passes 'ultrasonic' to a base class of the package
-        # that hands its parameter to Node: a name through a parameter is
-        # not followed (README, known limitations)
-        'rsia_py_ros2/ultrasonic': None,
+        # that hands its parameter on to Node
+        'rsia_py_ros2/ultrasonic': 'ultrasonic',
     }
     names = {}
     for package in ('rsia_py_ros1', 'rsia_py_ros2'):

@@ -559,7 +559,8 @@ class _Walker:
                 self._store_callable(target, children[-1])
         if ref.kind in FUNCTION_KINDS and self.in_package(ref):
             self._add_call(ctx, ref.get_usr(), cursor)
-            self._bind_arguments(ref.get_usr(), cursor.get_arguments())
+            self._bind_arguments(ref.get_usr(), cursor.get_arguments(),
+                                 caller=ctx.function)
             return
         name = qualified_name(ref)
         api = ros_api.lookup_call(name)
@@ -636,9 +637,20 @@ class _Walker:
             return argument
         return None
 
-    def _bind_arguments(self, callee, arguments, first_index=0):
-        """Record handles passed to a package function's parameters."""
+    def _bind_arguments(self, callee, arguments, first_index=0,
+                        caller=None):
+        """Record what a call passes to a package function's parameters.
+
+        Handles, and string literals (a node name passed to a base class).
+        """
         for index, argument in enumerate(arguments, start=first_index):
+            if caller is not None and _is_string(argument):
+                value, literal = self._topic(argument)
+                if literal:
+                    self.facts.string_arguments.append(model.StringArgument(
+                        caller=caller, callee=callee, index=index,
+                        value=value))
+                    continue
             handle = first_handle(argument)
             if handle is not None and self.in_package(handle):
                 self.facts.bindings.append(model.ParamBinding(
@@ -964,9 +976,17 @@ class _Walker:
         if argument is not None and _is_string(argument):
             namespace, ns_literal = self._topic(argument)
             namespace = namespace if ns_literal else None
+        name_param = None
+        if not literal:
+            # Base(const std::string & name) : Node(name): the name the
+            # callers of Base pass
+            handle = first_handle(self._argument(arguments, api.name_arg))
+            if handle is not None and handle.kind == CK.PARM_DECL:
+                name_param = handle.get_usr()
         self.facts.node_names.append(model.NodeNameFact(
             function=ctx.function, name=node_name if literal else None,
-            namespace=namespace, location=self.location(cursor)))
+            namespace=namespace, location=self.location(cursor),
+            name_param=name_param))
 
     def _on_timed_publisher(self, cursor, ctx, stack, api, name, arguments):
         """An object publishing from a timer of its own (ROS 2 Updater).

@@ -1240,6 +1240,12 @@ class _Extractor:
                                keyword.value, context)
 
     def _bind_one(self, function, position, argument, context):
+        if isinstance(argument, ast.Constant) and \
+                isinstance(argument.value, str):
+            self.facts.string_arguments.append(model.StringArgument(
+                caller=context.function, callee=function.id, index=position,
+                value=argument.value))
+            return
         handle = self._object_handle(argument, context)
         if handle is not None:
             self.facts.bindings.append(model.ParamBinding(
@@ -1442,14 +1448,19 @@ class _Extractor:
         """The node's name: ``rospy.init_node("n")``, ``Node("n", namespace=)``."""
         if name not in python_api.NODE_NAMING:
             return
-        node_name, literal = self._topic(
-            _argument(node, (0, 'name')) or _argument(node, (0, 'node_name')))
+        written = _argument(node, (0, 'name')) or \
+            _argument(node, (0, 'node_name'))
+        node_name, literal = self._topic(written)
         namespace, ns_literal = self._topic(
             _argument(node, (None, 'namespace')))
+        # super().__init__(node_name) in a base class of the package: the
+        # name its subclasses pass
+        name_param = self.project.handle(written, context.scope) \
+            if isinstance(written, ast.Name) else None
         self.facts.node_names.append(model.NodeNameFact(
             function=context.function, name=node_name if literal else None,
             namespace=namespace if ns_literal else None,
-            location=self.location(node)))
+            location=self.location(node), name_param=name_param))
 
     def _on_publisher(self, api, name, node, context):
         msg_type = api.msg_type or self._msg_type(
