@@ -23,6 +23,7 @@ from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.labeling import label_publishers
+from colcon_rsia.node_facts import handles_of
 from colcon_rsia.node_facts import merge_facts
 from colcon_rsia.node_facts import node_facts
 from colcon_rsia.node_facts import resolve_namespace
@@ -389,7 +390,10 @@ def _node_name(facts):
     for fact in facts.node_names:
         name = fact.name
         if name is None and fact.name_param:
-            passed = facts.string_arguments.get(fact.name_param, set())
+            # through every parameter the name was handed on from
+            passed = set()
+            for param in handles_of(facts, fact.name_param):
+                passed |= facts.string_arguments.get(param, set())
             name = next(iter(passed)) if len(passed) == 1 else None
         if name:
             given.add((name, fact.namespace))

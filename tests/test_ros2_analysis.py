@@ -86,9 +86,9 @@ def test_names_without_a_launch_file_come_from_the_code(ros2_build_base):
     # topics from declare_parameter defaults, ~/status under the node name
     assert endpoints['/scan_filter'] == (
         {'/scan_filtered', '/scan_filter/status'}, {'/scan'})
-    # named through its base class: the base's ~/status follows the name
-    assert endpoints['/sonar'] == (
-        {'/range', '/sonar/status'}, {'/sonar_enable'})
+    # named through its classes: the base's ~/status follows the name
+    assert endpoints['/front_sonar'] == (
+        {'/range', '/front_sonar/status'}, {'/sonar_enable'})
     # one executable, two nodes, each under its own name
     assert nodes['rsia_ros2_core/multi_node/detector']['name'] == '/detector'
     assert '/detector/rate' in endpoints['/detector'][0]

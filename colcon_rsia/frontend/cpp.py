@@ -566,12 +566,43 @@ class _Walker:
         api = ros_api.lookup_call(name)
         arguments = None
         if api is None and name in ros_api.FORWARDING_FACTORIES:
+            self._forwarded_package_constructor(cursor, ctx)
             name, api = self._forwarded_constructor(cursor)
         if api is None:
             return
         arguments = list(cursor.get_arguments())
         handler = getattr(self, '_on_' + api.role)
         handler(cursor, ctx, stack, api, name, arguments)
+
+    def _forwarded_package_constructor(self, cursor, ctx):
+        """make_shared<C>(args) of a package class calls C's constructor.
+
+        The constructor taking as many arguments, else the one with the
+        fewest more (defaulted) parameters: what the arguments bind to,
+        such as the node name a subclass of rclcpp::Node receives
+        (``std::make_shared<Talker>("talker")``).
+        """
+        made = cursor.type.get_canonical()
+        if made.get_num_template_arguments() < 1:
+            return
+        declaration = made.get_template_argument_type(0).get_declaration()
+        if declaration is None or declaration.kind == CK.NO_DECL_FOUND or \
+                not self.in_package(declaration):
+            return
+        arguments = list(cursor.get_arguments())
+        candidates = []
+        for constructor in declaration.get_children():
+            if constructor.kind != CK.CONSTRUCTOR:
+                continue
+            extra = sum(1 for p in constructor.get_children()
+                        if p.kind == CK.PARM_DECL) - len(arguments)
+            if extra >= 0:
+                candidates.append((extra, len(candidates), constructor))
+        if candidates:
+            constructor = min(candidates)[2]
+            self._add_call(ctx, constructor.get_usr(), cursor)
+            self._bind_arguments(constructor.get_usr(), arguments,
+                                 caller=ctx.function)
 
     def _forwarded_constructor(self, cursor):
         """make_shared<X>(args) reads like X's constructor.

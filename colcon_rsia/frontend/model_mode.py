@@ -74,6 +74,8 @@ _COMMENT_OR_STRING = re.compile(
 _MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)')
 _CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')
+_ROS2_MSGS_TYPE = re.compile(
+    r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*msg\s*::\s*([A-Z][A-Za-z0-9]*)\b')
 _IDENTIFIER = re.compile(r'^[A-Za-z_]\w*$')
 _CAMEL = re.compile(r'^[A-Z][A-Za-z0-9]*$')
 _PACKAGE = re.compile(r'^[a-z][a-z0-9_]*$')
@@ -420,7 +422,11 @@ def _code_only(text):
 
 
 def _used_names(codes):
-    """(member names, constant names, {pkg: {Name}} of *_msgs types)."""
+    """(member names, constant names, {pkg: {include}} of *_msgs types).
+
+    The include is the message's header: ``std_msgs/Header.h`` (ROS 1) or
+    ``std_msgs/msg/header.hpp`` (ROS 2).
+    """
     members = set()
     constants = set()
     msgs_types = {}
@@ -430,7 +436,11 @@ def _used_names(codes):
         for m in _MSGS_TYPE.finditer(code):
             name = re.sub(r'(?:ConstPtr|Ptr)$', '', m.group(2))
             if name:
-                msgs_types.setdefault(m.group(1), set()).add(name)
+                msgs_types.setdefault(m.group(1), set()).add(
+                    f'{m.group(1)}/{name}.h')
+        for m in _ROS2_MSGS_TYPE.finditer(code):
+            msgs_types.setdefault(m.group(1), set()).add(
+                f'{m.group(1)}/msg/{_snake_case(m.group(2))}.hpp')
     members = {n for n in members if _member_ok(n)}
     constants = {n for n in constants if _member_ok(n)} - members
     return members, constants, msgs_types
@@ -490,9 +500,8 @@ def _write_stand_ins(scanner, codes, stub_dir):
             stubs.update(_stand_ins_for(name, codes))
     unknown, own = _unknown_namespaces(stubs, codes)
     implicit = []
-    for package, names in sorted(msgs_types.items()):
-        for type_name in sorted(names):
-            include = f'{package}/{type_name}.h'
+    for package, includes in sorted(msgs_types.items()):
+        for include in sorted(includes):
             if include in stubs or scanner.resolve(
                     include, False, stub_dir) is not None:
                 continue
@@ -641,12 +650,16 @@ def _empty_stub(name):
     return '\n'.join(lines) + '\n'
 
 
+# include directories whose libraries use another namespace name
+_NAMESPACE_OF_DIRECTORY = {'opencv2': 'cv', 'opencv': 'cv'}
+
+
 def _guessed_namespace(include):
     """The namespace an unknown `dir/...` include probably declares."""
     parts = include.split('/')
     if len(parts) < 2 or not _PACKAGE.match(parts[0]):
         return None
-    namespace = parts[0]
+    namespace = _NAMESPACE_OF_DIRECTORY.get(parts[0], parts[0])
     if namespace in _MODEL_NAMESPACES or namespace.endswith(
             ('_msgs', '_srvs')) or not _member_ok(namespace):
         return None
@@ -821,6 +834,12 @@ def _stand_ins_for(include, codes):
 # ROS 2 interfaces: `<pkg/msg/laser_scan.hpp>` declares
 # `pkg::msg::LaserScan_<ContainerAllocator>` and `pkg::msg::LaserScan`
 _ROS2_INTERFACE_DIRS = frozenset({'msg', 'srv', 'action'})
+
+
+def _snake_case(name):
+    """The header stem rosidl gives a type: ``TFMessage`` -> ``tf_message``."""
+    return re.sub(r'(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])', '_',
+                  name).lower()
 
 
 def _ros2_type_name(package, kind, file_stem, codes):

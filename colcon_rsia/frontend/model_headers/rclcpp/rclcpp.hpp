@@ -27,6 +27,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <type_traits>
@@ -110,7 +111,48 @@ class Context
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Context)
+  using OnShutdownCallback = std::function<void ()>;
+  using PreShutdownCallback = std::function<void ()>;
+  struct OnShutdownCallbackHandle {};
+  struct PreShutdownCallbackHandle {};
+  bool is_valid() const;
+  bool shutdown(const std::string & reason);
+  virtual OnShutdownCallbackHandle add_on_shutdown_callback(
+    OnShutdownCallback callback);
+  virtual bool remove_on_shutdown_callback(
+    const OnShutdownCallbackHandle & callback_handle);
+  virtual PreShutdownCallbackHandle add_pre_shutdown_callback(
+    PreShutdownCallback callback);
+  virtual bool remove_pre_shutdown_callback(
+    const PreShutdownCallbackHandle & callback_handle);
 };
+
+namespace exceptions
+{
+class RCLErrorBase
+{
+public:
+  virtual ~RCLErrorBase() {}
+  int ret;
+  std::string message;
+  std::string file;
+  size_t line;
+  std::string formatted_message;
+};
+class RCLError : public RCLErrorBase, public std::runtime_error
+{
+public:
+  RCLError(const RCLErrorBase & base_exc, const std::string & prefix);
+};
+class InvalidParameterValueException : public std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+class ParameterNotDeclaredException : public std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+}  // namespace exceptions
 
 class InitOptions
 {
@@ -506,6 +548,10 @@ public:
   virtual ~PublisherBase();
   const char * get_topic_name() const;
   std::size_t get_queue_size() const;
+  template<typename DurationRepT = int64_t, typename DurationT = std::milli>
+  bool wait_for_all_acked(
+    std::chrono::duration<DurationRepT, DurationT> timeout =
+    std::chrono::duration<DurationRepT, DurationT>(-1)) const;
   std::size_t get_subscription_count() const;
   std::size_t get_intra_process_subscription_count() const;
   bool can_loan_messages() const;
@@ -1318,6 +1364,15 @@ public:
     const std::string & node_name = "");
   void remove_parameter_callback(
     ParameterCallbackHandle::SharedPtr callback_handle);
+  static bool get_parameter_from_event(
+    const rcl_interfaces::msg::ParameterEvent & event,
+    Parameter & parameter, const std::string & parameter_name,
+    const std::string & node_name = "");
+  static Parameter get_parameter_from_event(
+    const rcl_interfaces::msg::ParameterEvent & event,
+    const std::string & parameter_name, const std::string & node_name = "");
+  static std::vector<Parameter> get_parameters_from_event(
+    const rcl_interfaces::msg::ParameterEvent & event);
 };
 
 // wait_for_message.hpp: one message from an existing subscription, or

@@ -1,6 +1,8 @@
-// A node named through its base class: SonarNode passes "sonar" to
+// A node named through its classes: main makes
+// std::make_shared<SonarNode>("front_sonar"); SonarNode hands the name to
 // SensorNode(const std::string & name), which hands it on to rclcpp::Node.
-// The base class's private ~/status therefore resolves to /sonar/status.
+// The base class's private ~/status therefore resolves to
+// /front_sonar/status.
 // - range and ~/status are published only from the 100 ms timer (status
 //   through the base class's publishStatus): independent (timer, 10 Hz)
 // - the node subscribes to sonar_enable, so pattern 1 does not apply
@@ -39,8 +41,8 @@ private:
 class SonarNode : public SensorNode
 {
 public:
-  SonarNode()
-  : SensorNode("sonar")
+  explicit SonarNode(const std::string & name)
+  : SensorNode(name)
   {
     range_pub_ = create_publisher<sensor_msgs::msg::Range>("range", 10);
     enable_sub_ = create_subscription<std_msgs::msg::Bool>(
@@ -71,7 +73,7 @@ private:
 int main(int argc, char ** argv)
 {
   rclcpp::init(argc, argv);
-  rclcpp::spin(std::make_shared<SonarNode>());
+  rclcpp::spin(std::make_shared<SonarNode>("front_sonar"));
   rclcpp::shutdown();
   return 0;
 }
