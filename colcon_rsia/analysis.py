@@ -22,6 +22,7 @@ from colcon_rsia.frontend.compile_db import CompileEntry
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
+from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
 from colcon_rsia.labeling import label_publishers
 from colcon_rsia.node_facts import handles_of
 from colcon_rsia.node_facts import merge_facts
@@ -305,6 +306,19 @@ def build_summary(*, name, path, build_base, units):
     executables = find_executables(package_path=path, build_base=build_base)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
+    # a unit with its own main() is a program, never library code that
+    # every executable would take in; one no executable builds (CMake we
+    # could not read) is a node named after its file
+    for file, unit in sorted(units.items()):
+        if file not in executable_sources and _defines_main(unit):
+            stem = os.path.splitext(os.path.basename(file))[0]
+            if stem not in executables:
+                executables[stem] = [file]
+                executable_sources.add(file)
+                summary.diagnostics.append(
+                    f'{os.path.relpath(file, path)} defines main() but no '
+                    f"executable of CMakeLists.txt builds it: node '{stem}' "
+                    'named after the file')
     library = [u for f, u in units.items() if f not in executable_sources]
     for executable, sources in sorted(executables.items()):
         own = [units[s] for s in sources if s in units]
@@ -339,6 +353,11 @@ def build_summary(*, name, path, build_base, units):
             name, short, kind, sources, path, merged_library, seeds,
             node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
     return summary
+
+
+def _defines_main(unit):
+    return any(f.name == MAIN_FUNCTION and f.class_id is None
+               for f in unit.functions)
 
 
 def _executable_nodes(package, executable, sources, path, merged, seeds):

@@ -67,22 +67,67 @@ def _executables_from_codemodel(package_path, build_base):
 
 
 _ADD_EXECUTABLE = re.compile(r'add_executable\s*\(([^)]*)\)', re.IGNORECASE)
+_DEFINITION = re.compile(
+    r'^[ \t]*(function|macro)\s*\(\s*(\w+)([^)]*)\)(.*?)'
+    r'^[ \t]*end\1\s*\([^)]*\)', re.IGNORECASE | re.MULTILINE | re.DOTALL)
+_SET = re.compile(r'^[ \t]*set\s*\(\s*(\w+)\s+([^)\s]+)\s*\)',
+                  re.IGNORECASE | re.MULTILINE)
+
+
+def read_cmakelists(package_path):
+    """The package's CMakeLists.txt as the commands that run, or ''.
+
+    Comments are dropped, ``${PROJECT_NAME}`` and single-value ``set()``
+    variables substituted, and calls of the file's own ``function()`` and
+    ``macro()`` expanded with their arguments (packages wrap
+    ``add_executable`` in helpers: ``custom_executable(topics talker)``).
+    """
+    try:
+        with open(os.path.join(package_path, 'CMakeLists.txt'),
+                  encoding='utf-8', errors='replace') as h:
+            text = re.sub(r'#[^\n]*', '', h.read())
+    except OSError:
+        return ''
+    definitions = {}
+    for match in _DEFINITION.finditer(text):
+        definitions[match.group(2).lower()] = (
+            match.group(3).split(), match.group(4))
+    text = _DEFINITION.sub('', text)
+    # helpers calling helpers: a few rounds reach a fixed point
+    for _ in range(3):
+        text = _expand_calls(text, definitions)
+    project = re.search(r'project\s*\(\s*([\w-]+)', text, re.IGNORECASE)
+    variables = {'PROJECT_NAME': project.group(1) if project else ''}
+    for match in _SET.finditer(text):
+        variables.setdefault(match.group(1), match.group(2).strip('"'))
+    return _substitute(text, variables)
+
+
+def _expand_calls(text, definitions):
+    if not definitions:
+        return text
+    call = re.compile(
+        r'\b(' + '|'.join(re.escape(n) for n in definitions) +
+        r')\s*\(([^)]*)\)', re.IGNORECASE)
+
+    def expand(match):
+        params, body = definitions[match.group(1).lower()]
+        arguments = [a.strip('"') for a in match.group(2).split()]
+        values = {'ARGN': ' '.join(arguments[len(params):]),
+                  'ARGV': ' '.join(arguments)}
+        values.update(zip(params, arguments))
+        values.update((f'ARGV{i}', a) for i, a in enumerate(arguments))
+        return _substitute(body, values)
+    return call.sub(expand, text)
 
 
 def _executables_from_cmakelists(package_path):
-    path = os.path.join(package_path, 'CMakeLists.txt')
-    try:
-        with open(path, encoding='utf-8', errors='replace') as h:
-            text = h.read()
-    except OSError:
-        return {}
-    text = re.sub(r'#[^\n]*', '', text)
-    project = re.search(r'project\s*\(\s*([\w-]+)', text, re.IGNORECASE)
-    variables = {'PROJECT_NAME': project.group(1) if project else ''}
+    text = read_cmakelists(package_path)
     executables = {}
     for match in _ADD_EXECUTABLE.finditer(text):
-        words = [_substitute(w, variables) for w in match.group(1).split()]
-        if not words or words[0] in ('IMPORTED', 'ALIAS'):
+        words = match.group(1).split()
+        if not words or words[0] in ('IMPORTED', 'ALIAS') or \
+                '${' in words[0]:
             continue
         sources = [
             os.path.normpath(os.path.join(package_path, w))
@@ -162,14 +207,11 @@ def find_components(*, package_path, exported_classes):
     classes = {c.lstrip(':') for c, base in exported_classes
                if base == COMPONENT_BASE_CLASS}
     executables = {}
-    try:
-        with open(os.path.join(package_path, 'CMakeLists.txt'),
-                  encoding='utf-8', errors='replace') as h:
-            text = re.sub(r'#[^\n]*', '', h.read())
-    except OSError:
-        text = ''
+    text = read_cmakelists(package_path)
     for match in _REGISTER_COMPONENT.finditer(text):
         words = [w.strip('"') for w in match.group(1).split()]
+        if any('${' in w for w in words):
+            continue  # a name we could not work out
         plugin = executable = None
         for keyword, value in zip(words, words[1:]):
             if keyword == 'PLUGIN':
@@ -183,4 +225,13 @@ def find_components(*, package_path, exported_classes):
             classes.add(plugin)
             if executable:
                 executables[plugin] = executable
-    return {executables.get(c, c.split('::')[-1]): c for c in sorted(classes)}
+    shorts = [c.split('::')[-1] for c in classes if c not in executables]
+    components = {}
+    for class_name in sorted(classes):
+        name = executables.get(class_name)
+        if name is None:
+            short = class_name.split('::')[-1]
+            # two namespaces' Talker: the qualified names tell them apart
+            name = short if shorts.count(short) == 1 else class_name
+        components[name] = class_name
+    return components

@@ -289,6 +289,12 @@ class _Walker:
         # callables stored in std::function variables/fields:
         # {variable USR: function ids assigned to it}
         self._callables = {}
+        # string variables/fields: the literals they are set to, and those
+        # also set otherwise (see _resolve_string_names)
+        self._string_values = {}
+        self._string_written = set()
+        # (service fact, variable its name is read from)
+        self._named_by_variable = []
 
     # --- locations ---------------------------------------------------------
 
@@ -340,6 +346,43 @@ class _Walker:
             if not (c.kind == 'ref' and c.callee in self._registered and
                     c.callee in self._lambdas_in_variables)]
         self._resolve_stored_callbacks()
+        self._resolve_string_names()
+
+    def _string_assignment(self, variable, expression):
+        """Note what a string variable/field is set to."""
+        if not _is_string(variable):
+            return
+        value, literal = self._topic(expression)
+        if literal:
+            self._string_values.setdefault(
+                variable.get_usr(), set()).add(value)
+        else:
+            self._string_written.add(variable.get_usr())
+
+    def _resolve_string_names(self):
+        """A name held in a string set only to one literal is that literal.
+
+        ``std::string topic_name_ = "chatter";`` (or set in the
+        constructor) then ``create_subscription<M>(topic_name_, ...)``. A
+        variable also set otherwise, read from a parameter or handed to a
+        function of the package is left as written.
+        """
+        written = self._string_written | {
+            r.handle for r in self.facts.param_reads if r.handle} | {
+            b.handle for b in self.facts.bindings}
+
+        def value(handle):
+            values = self._string_values.get(handle)
+            if handle in written or not values or len(values) != 1:
+                return None
+            return next(iter(values))
+        for fact in self.facts.publishers + self.facts.subscribers:
+            if not fact.topic_is_literal and value(fact.topic_handle):
+                fact.topic = value(fact.topic_handle)
+                fact.topic_is_literal = True
+                fact.topic_handle = None
+        for fact, handle in self._named_by_variable:
+            fact.name = value(handle) or fact.name
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
@@ -370,6 +413,7 @@ class _Walker:
                 self._function(cursor)
         elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
             self._declared_object(cursor, function=None)
+            self._initialized_string(cursor)
 
     def _plugin_exports(self, main_file):
         try:
@@ -411,6 +455,8 @@ class _Walker:
             stack = [_MemberInit(pending_member)] if pending_member else []
             if pending_member is not None and _is_callable(pending_member):
                 self._store_callable(pending_member, child)
+            if pending_member is not None:
+                self._string_assignment(pending_member, child)
             self._visit(child, ctx, stack)
             pending_member = None
 
@@ -456,6 +502,7 @@ class _Walker:
         elif kind == CK.VAR_DECL:
             self._declared_object(cursor, ctx.function)
             self._copied_handle(cursor)
+            self._initialized_string(cursor)
             for child in cursor.get_children():
                 if child.kind == CK.LAMBDA_EXPR:
                     self._lambdas_in_variables.add(self._lambda_id(child))
@@ -481,6 +528,13 @@ class _Walker:
             for child in children:
                 self._visit(child, ctx, stack)
         stack.pop()
+
+    def _initialized_string(self, variable):
+        init = [c for c in variable.get_children()
+                if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
+                                  CK.TEMPLATE_REF)]
+        if len(init) == 1:
+            self._string_assignment(variable, init[0])
 
     def _copied_handle(self, variable):
         """``auto pub = pub_;``: the local copy publishes through `pub_`."""
@@ -557,6 +611,8 @@ class _Walker:
             target = first_handle(children[0]) if children else None
             if target is not None and _is_callable(target):
                 self._store_callable(target, children[-1])
+            elif target is not None and len(children) > 1:
+                self._string_assignment(target, children[-1])
         if ref.kind in FUNCTION_KINDS and self.in_package(ref):
             self._add_call(ctx, ref.get_usr(), cursor)
             self._bind_arguments(ref.get_usr(), cursor.get_arguments(),
@@ -1065,12 +1121,17 @@ class _Walker:
             location=self.location(cursor)))
 
     def _on_service(self, cursor, ctx, stack, api, name, arguments):
-        service, _ = self._topic(self._argument(arguments, api.name_arg))
+        argument = self._argument(arguments, api.name_arg)
+        service, literal = self._topic(argument)
         callback, _ = self._resolve_callback(
             self._argument(arguments, api.callback_arg))
-        self.facts.services.append(model.ServiceFact(
+        fact = model.ServiceFact(
             function=ctx.function, api=name, name=service,
-            callback=callback, location=self.location(cursor)))
+            callback=callback, location=self.location(cursor))
+        self.facts.services.append(fact)
+        handle = first_handle(argument) if not literal else None
+        if handle is not None:
+            self._named_by_variable.append((fact, handle.get_usr()))
 
     def _on_action_server(self, cursor, ctx, stack, api, name, arguments):
         self._action(cursor, ctx, stack, api, name, arguments, 'server')

@@ -79,10 +79,51 @@ struct rmw_request_id_t
   int64_t sequence_number;
 };
 
+// the C layers under rclcpp (rcl, rmw, rcutils) that node code uses
+// directly: return codes, QoS policies, serialized messages, logging
+typedef int32_t rcl_ret_t;
+typedef int32_t rmw_ret_t;
+#define RCL_RET_OK 0
+#define RCL_RET_ERROR 1
+#define RMW_RET_OK 0
+#define RMW_RET_ERROR 1
+enum rmw_qos_reliability_policy_t
+{
+  RMW_QOS_POLICY_RELIABILITY_SYSTEM_DEFAULT,
+  RMW_QOS_POLICY_RELIABILITY_RELIABLE,
+  RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT,
+  RMW_QOS_POLICY_RELIABILITY_UNKNOWN,
+  RMW_QOS_POLICY_RELIABILITY_BEST_AVAILABLE
+};
+enum rmw_qos_history_policy_t
+{
+  RMW_QOS_POLICY_HISTORY_SYSTEM_DEFAULT,
+  RMW_QOS_POLICY_HISTORY_KEEP_LAST,
+  RMW_QOS_POLICY_HISTORY_KEEP_ALL,
+  RMW_QOS_POLICY_HISTORY_UNKNOWN
+};
+enum rmw_qos_durability_policy_t
+{
+  RMW_QOS_POLICY_DURABILITY_SYSTEM_DEFAULT,
+  RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL,
+  RMW_QOS_POLICY_DURABILITY_VOLATILE,
+  RMW_QOS_POLICY_DURABILITY_UNKNOWN,
+  RMW_QOS_POLICY_DURABILITY_BEST_AVAILABLE
+};
 struct rmw_qos_profile_t
 {
+  rmw_qos_history_policy_t history;
   std::size_t depth;
+  rmw_qos_reliability_policy_t reliability;
+  rmw_qos_durability_policy_t durability;
 };
+struct rcutils_allocator_t
+{
+  void * state;
+};
+rcutils_allocator_t rcutils_get_default_allocator();
+bool rcutils_cli_option_exist(char ** begin, char ** end, const char * option);
+char * rcutils_cli_get_option(char ** begin, char ** end, const char * option);
 extern const rmw_qos_profile_t rmw_qos_profile_default;
 extern const rmw_qos_profile_t rmw_qos_profile_services_default;
 extern const rmw_qos_profile_t rmw_qos_profile_sensor_data;
@@ -93,7 +134,17 @@ struct rcl_serialized_message_t
 {
   uint8_t * buffer;
   std::size_t buffer_length;
+  std::size_t buffer_capacity;
+  rcutils_allocator_t allocator;
 };
+typedef rcl_serialized_message_t rmw_serialized_message_t;
+rmw_serialized_message_t rmw_get_zero_initialized_serialized_message();
+rmw_ret_t rmw_serialized_message_init(
+  rmw_serialized_message_t * msg, std::size_t size,
+  const rcutils_allocator_t * allocator);
+rmw_ret_t rmw_serialized_message_resize(
+  rmw_serialized_message_t * msg, std::size_t size);
+rmw_ret_t rmw_serialized_message_fini(rmw_serialized_message_t * msg);
 using rmw_serialized_message_t = rcl_serialized_message_t;
 
 enum rcl_clock_type_t
@@ -291,7 +342,9 @@ public:
       const rmw_qos_profile_t & initial_profile = rmw_qos_profile_default);
   rmw_qos_profile_t & get_rmw_qos_profile();
   const rmw_qos_profile_t & get_rmw_qos_profile() const;
-  QoS & history(int history);
+  QoS & history(rmw_qos_history_policy_t history);
+  QoS & reliability(rmw_qos_reliability_policy_t reliability);
+  QoS & durability(rmw_qos_durability_policy_t durability);
   QoS & keep_last(std::size_t depth);
   QoS & keep_all();
   QoS & reliable();
@@ -1409,6 +1462,16 @@ void rsia_model_rclcpp_log(...);
 #define RSIA_MODEL_RCLCPP_LOG(...) \
   do { rsia_model_rclcpp_log(__VA_ARGS__); } while (0)
 
+#define RCUTILS_LOG_DEBUG(...) RSIA_MODEL_RCLCPP_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_INFO(...) RSIA_MODEL_RCLCPP_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_WARN(...) RSIA_MODEL_RCLCPP_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_ERROR(...) RSIA_MODEL_RCLCPP_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_FATAL(...) RSIA_MODEL_RCLCPP_LOG(__VA_ARGS__)
+#define RCUTILS_LOG_DEBUG_NAMED(name, ...) RSIA_MODEL_RCLCPP_LOG(name, __VA_ARGS__)
+#define RCUTILS_LOG_INFO_NAMED(name, ...) RSIA_MODEL_RCLCPP_LOG(name, __VA_ARGS__)
+#define RCUTILS_LOG_WARN_NAMED(name, ...) RSIA_MODEL_RCLCPP_LOG(name, __VA_ARGS__)
+#define RCUTILS_LOG_ERROR_NAMED(name, ...) RSIA_MODEL_RCLCPP_LOG(name, __VA_ARGS__)
+#define RCUTILS_LOG_FATAL_NAMED(name, ...) RSIA_MODEL_RCLCPP_LOG(name, __VA_ARGS__)
 #define RCLCPP_DEBUG(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_INFO(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
 #define RCLCPP_WARN(logger, ...) RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)

@@ -6,6 +6,7 @@
 // - range and ~/status are published only from the 100 ms timer (status
 //   through the base class's publishStatus): independent (timer, 10 Hz)
 // - the node subscribes to sonar_enable, so pattern 1 does not apply
+// - the range topic is a string member set only by its initializer: "range"
 #include <chrono>
 #include <memory>
 #include <string>
@@ -44,7 +45,7 @@ public:
   explicit SonarNode(const std::string & name)
   : SensorNode(name)
   {
-    range_pub_ = create_publisher<sensor_msgs::msg::Range>("range", 10);
+    range_pub_ = create_publisher<sensor_msgs::msg::Range>(range_topic_, 10);
     enable_sub_ = create_subscription<std_msgs::msg::Bool>(
       "sonar_enable", 1,
       [this](const std_msgs::msg::Bool & msg) {enabled_ = msg.data;});
@@ -65,6 +66,7 @@ private:
   }
 
   bool enabled_ = true;
+  const std::string range_topic_ = "range";
   rclcpp::Publisher<sensor_msgs::msg::Range>::SharedPtr range_pub_;
   rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr enable_sub_;
   rclcpp::TimerBase::SharedPtr timer_;

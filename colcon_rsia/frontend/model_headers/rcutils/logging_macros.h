@@ -1,0 +1,3 @@
+// colcon-rsia model of <rcutils/logging_macros.h>: the declarations node code uses
+// are in <rclcpp/rclcpp.hpp> (rclcpp includes the C layers)
+#include <rclcpp/rclcpp.hpp>
