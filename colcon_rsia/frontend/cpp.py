@@ -537,13 +537,19 @@ class _Walker:
             self._string_assignment(variable, init[0])
 
     def _copied_handle(self, variable):
-        """``auto pub = pub_;``: the local copy publishes through `pub_`."""
+        """``auto pub = pub_;``: the local copy publishes through `pub_`.
+
+        So do ``std::weak_ptr<P> weak = pub_;`` and ``auto p = weak.lock();``.
+        """
         init = [c for c in variable.get_children()
                 if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
                                   CK.TEMPLATE_REF)]
         if len(init) != 1:
             return
         tokens = [t.spelling for t in source_tokens(init[0])]
+        # a weak_ptr's lock() or a smart pointer's get() is the same object
+        if tokens[-4:] in (['.', 'lock', '(', ')'], ['.', 'get', '(', ')']):
+            tokens = tokens[:-4]
         # only a plain name (this->pub_, self.pub_): no call, no index
         if not tokens or any(t in ('(', '[', '{') for t in tokens):
             return

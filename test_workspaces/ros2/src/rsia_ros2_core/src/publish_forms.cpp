@@ -1,6 +1,7 @@
 // Every publish overload of rclcpp::Publisher from one 20 Hz wall timer:
 // by const reference through a local copy of the publisher's shared_ptr,
-// by std::unique_ptr through `this->`, and a loaned message
+// by std::unique_ptr through the lock() of a weak_ptr to `this->twist_pub_`,
+// and a loaned message
 // (borrow_loaned_message + publish(LoanedMessage&&)). All three are
 // independent (timer) although the node subscribes; the stamp echo is
 // published from the subscription callback: dependent.
@@ -42,7 +43,11 @@ private:
 
     auto twist = std::make_unique<geometry_msgs::msg::Twist>();
     twist->linear.x = 0.1;
-    this->twist_pub_->publish(std::move(twist));
+    std::weak_ptr<rclcpp::Publisher<geometry_msgs::msg::Twist>> weak_twist =
+      this->twist_pub_;
+    if (auto locked = weak_twist.lock()) {
+      locked->publish(std::move(twist));
+    }
 
     if (level_pub_->can_loan_messages()) {
       auto loaned = level_pub_->borrow_loaned_message();
