@@ -49,8 +49,11 @@ def main(argv):
     packages = [Path(p).resolve() for p in argv] or sorted(
         p.parent for p in (REPO / 'test_workspaces' / 'python' / 'src').glob(
             '*/package.xml'))
+    all_cold, all_warm = [], []
     for package in packages:
         cold, warm = _per_file(package)
+        all_cold += [c[0] for c in cold]
+        all_warm += [w[0] for w in warm]
         front._MODULE_CACHE.clear()
         started = time.perf_counter()
         summary = build_python_summary(name=package.name, path=str(package))
@@ -64,6 +67,10 @@ def main(argv):
         print(f'  median per file: cold '
               f'{statistics.median(c[0] for c in cold) * 1e3:.2f} ms, warm '
               f'{statistics.median(w[0] for w in warm) * 1e3:.2f} ms')
+    cold_ms = statistics.median(all_cold) * 1e3
+    warm_ms = statistics.median(all_warm) * 1e3
+    print(f'RESULT files={len(all_cold)} cold_ms_per_file={cold_ms:.2f} '
+          f'warm_ms_per_file={warm_ms:.2f} warm_over_cold={warm_ms / cold_ms:.2f}')
 
 
 if __name__ == '__main__':
