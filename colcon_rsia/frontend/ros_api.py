@@ -73,8 +73,9 @@ class Api:
     implicit_topics: tuple = ()
     # image_transport camera APIs also create `<dirname>/camera_info`
     camera: bool = False
-    # the argument holding a period: 'duration' or 'rate' (Hz)
-    period_arg: Optional[int] = None
+    # the argument holding a period (a duration, or a rate in Hz): its
+    # position or FIRST_DURATION
+    period_arg: object = None
     # the public name the analysis reports for this API; default: the key
     label: Optional[str] = None
     # NODE_NAME: the argument holding the node's namespace
