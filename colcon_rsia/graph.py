@@ -71,8 +71,20 @@ class SystemGraph:
         """
         return sorted(
             i.id for i in self.instances.values()
-            if node_id in (i.id, f'{i.package}/{i.executable}') or
-            (i.node is not None and i.node.id == node_id))
+            if node_id in _names_of(i))
+
+    def known_names(self):
+        """Every name :meth:`instances_of` answers to, sorted."""
+        return sorted(
+            {name for i in self.instances.values() for name in _names_of(i)})
+
+
+def _names_of(instance):
+    """Its id, ``package/executable`` and the id of the node it runs."""
+    names = {instance.id, f'{instance.package}/{instance.executable}'}
+    if instance.node is not None:
+        names.add(instance.node.id)
+    return names
 
 
 def instances_from_summaries(summaries):

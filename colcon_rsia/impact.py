@@ -24,9 +24,7 @@ def expand_changed(system, changed):
 
     :raises UnknownNodeError: naming the closest known names
     """
-    known = sorted(set(system.instances) | {
-        f'{i.package}/{i.executable}' for i in system.instances.values()} | {
-        i.node.id for i in system.instances.values() if i.node is not None})
+    known = system.known_names()
     expanded = set()
     for name in changed:
         ids = system.instances_of(name)

@@ -74,6 +74,22 @@ _SET = re.compile(r'^[ \t]*set\s*\(\s*(\w+)\s+([^)\s]+)\s*\)',
                   re.IGNORECASE | re.MULTILINE)
 
 
+def cmakelists_text(package_path):
+    """The package's CMakeLists.txt without its comments, or None."""
+    try:
+        with open(os.path.join(package_path, 'CMakeLists.txt'),
+                  encoding='utf-8', errors='replace') as h:
+            return re.sub(r'#[^\n]*', '', h.read())
+    except OSError:
+        return None
+
+
+def project_name(text):
+    """The name given to ``project()`` in CMake text ('' when none)."""
+    project = re.search(r'\bproject\s*\(\s*([\w-]+)', text, re.IGNORECASE)
+    return project.group(1) if project else ''
+
+
 def read_cmakelists(package_path):
     """The package's CMakeLists.txt as the commands that run, or ''.
 
@@ -82,11 +98,8 @@ def read_cmakelists(package_path):
     ``macro()`` expanded with their arguments (packages wrap
     ``add_executable`` in helpers: ``custom_executable(topics talker)``).
     """
-    try:
-        with open(os.path.join(package_path, 'CMakeLists.txt'),
-                  encoding='utf-8', errors='replace') as h:
-            text = re.sub(r'#[^\n]*', '', h.read())
-    except OSError:
+    text = cmakelists_text(package_path)
+    if text is None:
         return ''
     definitions = {}
     for match in _DEFINITION.finditer(text):
@@ -96,8 +109,7 @@ def read_cmakelists(package_path):
     # helpers calling helpers: a few rounds reach a fixed point
     for _ in range(3):
         text = _expand_calls(text, definitions)
-    project = re.search(r'project\s*\(\s*([\w-]+)', text, re.IGNORECASE)
-    variables = {'PROJECT_NAME': project.group(1) if project else ''}
+    variables = {'PROJECT_NAME': project_name(text)}
     for match in _SET.finditer(text):
         variables.setdefault(match.group(1), match.group(2).strip('"'))
     return _substitute(text, variables)

@@ -28,6 +28,8 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
+from colcon_rsia.nodes import cmakelists_text
+from colcon_rsia.nodes import project_name
 import defusedxml.ElementTree as ElementTree
 
 SCRIPT_DIRECTORIES = ('scripts', 'nodes')
@@ -189,15 +191,10 @@ _COMMAND = re.compile(
 
 def _installed_programs(package_path):
     """[(executable, absolute path)] installed as PROGRAMS by CMake."""
-    try:
-        with open(os.path.join(package_path, 'CMakeLists.txt'),
-                  encoding='utf-8', errors='replace') as h:
-            text = h.read()
-    except OSError:
+    text = cmakelists_text(package_path)
+    if text is None:
         return []
-    text = re.sub(r'#[^\n]*', '', text)
-    project = re.search(r'\bproject\s*\(\s*([\w-]+)', text, re.IGNORECASE)
-    variables = {'PROJECT_NAME': project.group(1) if project else ''}
+    variables = {'PROJECT_NAME': project_name(text)}
     programs = []
     for match in _COMMAND.finditer(text):
         command = match.group(1).lower()

@@ -80,10 +80,14 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
 
     @classmethod
     def _lower_priority(cls):
-        # Linux: the priority of a thread id is that thread's alone
+        # Linux: the priority of a thread id is that thread's alone; the
+        # niceness is added to the build's (setting it outright would raise
+        # the priority of a build already run with `nice`)
         try:
-            os.setpriority(
-                os.PRIO_PROCESS, threading.get_native_id(), cls.NICENESS)
+            thread = threading.get_native_id()
+            niceness = os.getpriority(os.PRIO_PROCESS, thread)
+            os.setpriority(os.PRIO_PROCESS, thread,
+                           min(19, niceness + cls.NICENESS))
         except (AttributeError, OSError):
             pass  # elsewhere the analysis runs at the build's priority
 

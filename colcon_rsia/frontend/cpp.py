@@ -258,6 +258,17 @@ def _call_object(call):
     return None
 
 
+def _made_class(call):
+    """The declaration of X in a ``make_shared<X>(...)`` call, or None."""
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() < 1:
+        return None
+    declaration = made.get_template_argument_type(0).get_declaration()
+    if declaration is None or declaration.kind == CK.NO_DECL_FOUND:
+        return None
+    return declaration
+
+
 def _explicit_template_type(call):
     """The first explicit template argument written at a call site."""
     children = _children(call)
@@ -377,8 +388,9 @@ class _Walker:
                 return None
             return next(iter(values))
         for fact in self.facts.publishers + self.facts.subscribers:
-            if not fact.topic_is_literal and value(fact.topic_handle):
-                fact.topic = value(fact.topic_handle)
+            topic = None if fact.topic_is_literal else value(fact.topic_handle)
+            if topic:
+                fact.topic = topic
                 fact.topic_is_literal = True
                 fact.topic_handle = None
         for fact, handle in self._named_by_variable:
@@ -503,12 +515,11 @@ class _Walker:
             self._declared_object(cursor, ctx.function)
             self._copied_handle(cursor)
             self._initialized_string(cursor)
-            for child in cursor.get_children():
-                if child.kind == CK.LAMBDA_EXPR:
-                    self._lambdas_in_variables.add(self._lambda_id(child))
-                elif _is_callable(cursor) and child.kind not in (
-                        CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF):
-                    self._store_callable(cursor, child)
+            init = _initializer(cursor)
+            if init is not None and init.kind == CK.LAMBDA_EXPR:
+                self._lambdas_in_variables.add(self._lambda_id(init))
+            elif init is not None and _is_callable(cursor):
+                self._store_callable(cursor, init)
         children = _children(cursor)
         stack.append(cursor)
         if kind in LOOP_KINDS:
@@ -530,30 +541,26 @@ class _Walker:
         stack.pop()
 
     def _initialized_string(self, variable):
-        init = [c for c in variable.get_children()
-                if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
-                                  CK.TEMPLATE_REF)]
-        if len(init) == 1:
-            self._string_assignment(variable, init[0])
+        init = _initializer(variable)
+        if init is not None:
+            self._string_assignment(variable, init)
 
     def _copied_handle(self, variable):
         """``auto pub = pub_;``: the local copy publishes through `pub_`.
 
         So do ``std::weak_ptr<P> weak = pub_;`` and ``auto p = weak.lock();``.
         """
-        init = [c for c in variable.get_children()
-                if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
-                                  CK.TEMPLATE_REF)]
-        if len(init) != 1:
+        init = _initializer(variable)
+        if init is None:
             return
-        tokens = [t.spelling for t in source_tokens(init[0])]
+        tokens = [t.spelling for t in source_tokens(init)]
         # a weak_ptr's lock() or a smart pointer's get() is the same object
         if tokens[-4:] in (['.', 'lock', '(', ')'], ['.', 'get', '(', ')']):
             tokens = tokens[:-4]
         # only a plain name (this->pub_, self.pub_): no call, no index
         if not tokens or any(t in ('(', '[', '{') for t in tokens):
             return
-        handle = first_handle(init[0])
+        handle = first_handle(init)
         # the package's own handles: not the fields of a message
         if handle is not None and handle != variable and \
                 self.in_package(handle):
@@ -644,12 +651,8 @@ class _Walker:
         such as the node name a subclass of rclcpp::Node receives
         (``std::make_shared<Talker>("talker")``).
         """
-        made = cursor.type.get_canonical()
-        if made.get_num_template_arguments() < 1:
-            return
-        declaration = made.get_template_argument_type(0).get_declaration()
-        if declaration is None or declaration.kind == CK.NO_DECL_FOUND or \
-                not self.in_package(declaration):
+        declaration = _made_class(cursor)
+        if declaration is None or not self.in_package(declaration):
             return
         arguments = list(cursor.get_arguments())
         candidates = []
@@ -673,11 +676,8 @@ class _Walker:
         (``using Sync = message_filters::Synchronizer<P>``) and a template
         argument of X do not hide it.
         """
-        made = cursor.type.get_canonical()
-        declaration = made.get_template_argument_type(0).get_declaration() \
-            if made.get_num_template_arguments() > 0 else None
-        if declaration is not None and \
-                declaration.kind != CK.NO_DECL_FOUND:
+        declaration = _made_class(cursor)
+        if declaration is not None:
             class_name = qualified_name(declaration)
         else:
             class_name = _explicit_template_type(cursor)
@@ -724,10 +724,7 @@ class _Walker:
             return next((a for a in arguments if by_type(a)), None)
         if isinstance(position, int) and position < len(arguments):
             argument = arguments[position]
-            # a default argument has no tokens of its own
-            if next(iter(argument.get_tokens()), None) is None:
-                return None
-            return argument
+            return argument if _is_written(argument) else None
         return None
 
     def _bind_arguments(self, callee, arguments, first_index=0,
@@ -803,25 +800,16 @@ class _Walker:
 
     def _callbacks(self, arguments, position):
         if position == ros_api.ALL_CALLABLES:
-            found = []
-            for argument in arguments:
-                if _is_callable_argument(argument):
-                    callback, _ = self._resolve_callback(argument)
-                    if callback:
-                        found.append(callback)
-            return found
-        if position == ros_api.FIRST_CALLBACK:
-            found = []
-            for argument in arguments:
-                callback, _ = self._resolve_callback(argument)
-                if callback:
-                    found.append(callback)
-            return found
-        positions = position if isinstance(position, tuple) else (position,)
+            candidates = [a for a in arguments if _is_callable_argument(a)]
+        elif position == ros_api.FIRST_CALLBACK:
+            candidates = arguments
+        else:
+            positions = position if isinstance(position, tuple) \
+                else (position,)
+            candidates = [self._argument(arguments, p) for p in positions]
         found = []
-        for each in positions:
-            callback, _ = self._resolve_callback(
-                self._argument(arguments, each))
+        for argument in candidates:
+            callback, _ = self._resolve_callback(argument)
             if callback:
                 found.append(callback)
         return found
@@ -902,8 +890,7 @@ class _Walker:
         """
         if api.wraps_arg is None:
             return False
-        written = [a for a in arguments
-                   if next(iter(a.get_tokens()), None) is not None]
+        written = _written(arguments)
         wrapped = self._argument(arguments, api.wraps_arg)
         if len(written) != 1 or wrapped is None or _is_string(wrapped):
             return False
@@ -1036,8 +1023,7 @@ class _Walker:
         param, literal = self._topic(self._argument(arguments, 0))
         if not literal:
             return
-        written = [a for a in arguments
-                   if next(iter(a.get_tokens()), None) is not None]
+        written = _written(arguments)
         if api.returns_value or len(written) == 1 or (
                 name.endswith('::param') and len(written) == 2):
             # value = nh.param("name", default);
@@ -1111,7 +1097,7 @@ class _Walker:
             location=location))
 
     def _on_client(self, cursor, ctx, stack, api, name, arguments):
-        service, literal = self._topic(self._argument(arguments, api.name_arg))
+        service, _ = self._topic(self._argument(arguments, api.name_arg))
         self.facts.clients.append(model.ClientFact(
             function=ctx.function, api=name, name=service,
             location=self.location(cursor)))
@@ -1232,8 +1218,7 @@ class _Walker:
         if target is None:
             return
         namespace = ''
-        written = [a for a in arguments
-                   if next(iter(a.get_tokens()), None) is not None]
+        written = _written(arguments)
         parent = first_handle(written[0]) if written else None
         if parent is not None:
             namespace = 'ref:' + parent.get_usr()
@@ -1317,9 +1302,25 @@ def _is_duration(argument):
         'rclcpp::Duration' in argument.type.get_canonical().spelling
 
 
+def _is_written(argument):
+    """Whether an argument is written at the call (a default has no tokens)."""
+    return next(iter(argument.get_tokens()), None) is not None
+
+
+def _written(arguments):
+    return [a for a in arguments if _is_written(a)]
+
+
 def _is_string(argument):
     spelling = argument.type.get_canonical().spelling
     return 'basic_string' in spelling or 'char' in spelling
+
+
+def _initializer(variable):
+    """The expression a variable or field is initialised with, or None."""
+    init = [c for c in variable.get_children()
+            if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF)]
+    return init[0] if len(init) == 1 else None
 
 
 def _camera_info(topic):
