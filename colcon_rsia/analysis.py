@@ -14,8 +14,11 @@ import os
 import time
 
 from colcon_rsia import __version__
+from colcon_rsia import coverage
 from colcon_rsia import model
 from colcon_rsia import store
+from colcon_rsia.call_sites import PUBLISHER
+from colcon_rsia.call_sites import SUBSCRIBER
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
 from colcon_rsia.frontend.compile_db import CompileEntry
@@ -61,7 +64,7 @@ SKIPPED_DIRECTORIES = frozenset({
 
 def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                     nothing_compiled=False, header_mode='exact',
-                    workspace_src_dirs=(), extra_arguments=()):
+                    workspace_package_dirs=(), extra_arguments=()):
     """Analyse a C++ package; store the summary.
 
     The translation units and their flags come from the package's compile
@@ -79,8 +82,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     :param str header_mode: 'exact' parses with the headers the compiler
       used; 'model' with the tool's model headers of the ROS API and
       stand-ins for everything else (no ROS installation needed)
-    :param workspace_src_dirs: source directories of the workspace, whose
-      headers the model mode keeps
+    :param workspace_package_dirs: source directories of every package of
+      the workspace, whose headers the model mode keeps
     :param extra_arguments: more compiler arguments for every TU
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
     :rtype: colcon_rsia.model.PackageSummary
@@ -102,7 +105,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
             raise AnalysisError(str(e)) from None
     else:
         entries = synthesized_entries(
-            path, workspace_src_dirs=workspace_src_dirs,
+            path, workspace_package_dirs=workspace_package_dirs,
             with_system_ros=header_mode == 'exact')
     entries = [e for e in entries if _inside(e.file, path)]
     for entry in entries:
@@ -112,7 +115,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         raise AnalysisError(RESOURCE_DIR_HINT)
     if header_mode == 'model':
         entries = _model_entries(
-            entries, path, workspace_src_dirs,
+            entries, path, workspace_package_dirs,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
 
     units, diagnostics = parse_units(
@@ -121,6 +124,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         jobs=jobs or default_jobs())
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units)
+    summary.coverage = _coverage(path, units, summary.nodes)
     summary.header_mode = header_mode
     summary.diagnostics = diagnostics + summary.diagnostics
     summary.seconds = round(time.monotonic() - started, 3)
@@ -128,7 +132,24 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     return summary
 
 
-def synthesized_entries(path, *, workspace_src_dirs=(), with_system_ros=True):
+def _coverage(path, units, nodes):
+    """The C++ part of a package's coverage (see coverage.py)."""
+    unit_lines = coverage.endpoint_lines(
+        [(PUBLISHER, u.publishers) for u in units.values()] +
+        [(SUBSCRIBER, u.subscribers) for u in units.values()])
+    return model.Coverage(
+        units=[model.UnitCoverage(
+            file=os.path.relpath(file, path), errors=unit.errors,
+            package_errors=unit.package_errors,
+            repair_rounds=unit.repair_rounds)
+            for file, unit in sorted(units.items())],
+        call_sites=coverage.call_site_coverage(
+            coverage.package_call_sites(path, python=False),
+            coverage.node_endpoint_lines(nodes), unit_lines))
+
+
+def synthesized_entries(path, *, workspace_package_dirs=(),
+                        with_system_ros=True):
     """Translation units and flags of a package that was never built.
 
     Every C++ source of the package (tests and build output aside), with
@@ -137,11 +158,11 @@ def synthesized_entries(path, *, workspace_src_dirs=(), with_system_ros=True):
     ROS include directories installed on the machine.
     """
     std = os.environ.get(STD_ENVIRONMENT_VARIABLE, DEFAULT_STD)
-    include_dirs = [os.path.join(path, 'include')]
-    for src in workspace_src_dirs:
-        include_dirs += sorted(glob.glob(os.path.join(src, '*', 'include')))
-        include_dirs += sorted(glob.glob(
-            os.path.join(src, '*', '*', 'include')))
+    # the package's own include directories, also those of the libraries
+    # it vendors (lib/<library>/include), which its CMake would add
+    include_dirs = _own_include_dirs(path)
+    include_dirs += [os.path.join(package, 'include')
+                     for package in sorted(workspace_package_dirs)]
     if with_system_ros:
         include_dirs += sorted(glob.glob('/opt/ros/*/include'))
     include_dirs = [d for d in dict.fromkeys(include_dirs) if os.path.isdir(d)]
@@ -162,14 +183,33 @@ def synthesized_entries(path, *, workspace_src_dirs=(), with_system_ros=True):
     return entries
 
 
-def _model_entries(entries, path, workspace_src_dirs, stub_dir):
+def _own_include_dirs(path):
+    found = []
+    for root, dirs, _ in os.walk(path):
+        dirs[:] = sorted(
+            d for d in dirs
+            if d not in SKIPPED_DIRECTORIES and not d.startswith('.'))
+        if 'include' in dirs:
+            found.append(os.path.join(root, 'include'))
+            dirs.remove('include')
+    return found or [os.path.join(path, 'include')]
+
+
+def _model_entries(entries, path, workspace_package_dirs, stub_dir):
     from colcon_rsia.frontend.model_mode import prepare_model_arguments
+    from colcon_rsia.frontend import repair
     model_entries = []
     for entry in entries:
         arguments = prepare_model_arguments(
             source=entry.file, arguments=entry.arguments,
-            package_path=path, workspace_src_dirs=list(workspace_src_dirs),
+            package_path=path,
+            workspace_package_dirs=list(workspace_package_dirs),
             stub_dir=stub_dir, directory=entry.directory)
+        # what clang's errors show missing is declared there (repair.py)
+        header = repair.repair_header(stub_dir, entry.file)
+        repair.ensure_repair_header(
+            header, os.path.relpath(entry.file, path))
+        arguments += ['-include', header]
         model_entries.append(CompileEntry(
             file=entry.file, directory=entry.directory, arguments=arguments))
     return model_entries
@@ -182,7 +222,13 @@ def _inside(file, directory):
 def parse_units(entries, *, package_path, resource_dir, cache, jobs):
     """Parse the TUs in a thread pool; return (facts by file, messages)."""
     def work(entry):
-        return _unit_facts(entry, package_path, resource_dir, cache)
+        try:
+            return _unit_facts(entry, package_path, resource_dir, cache)
+        except Exception as e:  # noqa: B902
+            # a bug of ours in one unit loses that unit, not the package
+            relative = os.path.relpath(entry.file, package_path)
+            return None, [f'{relative}: not analysed (internal error: '
+                          f'{type(e).__name__}: {e}); please report it']
     units = {}
     diagnostics = []
     with ThreadPoolExecutor(max_workers=jobs) as pool:
@@ -211,14 +257,19 @@ def _unit_facts(entry, package_path, resource_dir, cache):
                       'database?); skipped']
     try:
         index = ci.Index.create()
-        tu = cpp.parse(
-            index, file=entry.file, arguments=entry.arguments,
-            resource_dir=resource_dir, working_directory=entry.directory)
+        tu, rounds = _parse_repaired(
+            index, entry, resource_dir, package_path, relative)
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
     facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
     facts.diagnostics = [
-        f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)]
+        f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)
+    ] + facts.diagnostics
+    errors = cpp.error_diagnostics(tu)
+    facts.errors = len(errors)
+    facts.package_errors = sum(
+        1 for e in errors if e[1] and _inside(e[1], package_path))
+    facts.repair_rounds = rounds
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})
@@ -230,6 +281,82 @@ def _unit_facts(entry, package_path, resource_dir, cache):
         inputs = [i for i in includes if f'/{store.RSIA_DIRNAME}/stubs/' not in i]
         _write_cache(cache_file, entry, [entry.file] + inputs, facts)
     return facts, list(facts.diagnostics)
+
+
+def _parse_repaired(index, entry, resource_dir, package_path, relative):
+    """Parse a TU; in model mode, repair what its errors show missing.
+
+    Returns (the TU with the fewest errors, parses after the first). A
+    round that makes things worse is undone and ends the repair.
+    """
+    from colcon_rsia.frontend import cpp
+    from colcon_rsia.frontend import repair
+
+    def parse():
+        return cpp.parse(
+            index, file=entry.file, arguments=entry.arguments,
+            resource_dir=resource_dir, working_directory=entry.directory)
+    tu = parse()
+    header = _repair_header_of(entry.arguments)
+    if header is None:
+        return tu, 0
+    texts = {}
+
+    def text_of(file):
+        if file not in texts:
+            try:
+                with open(file, encoding='utf-8', errors='replace') as h:
+                    texts[file] = h.read()
+            except OSError:
+                texts[file] = ''
+        return texts[file]
+
+    def read_line(file, line):
+        lines = text_of(file).split('\n')
+        return lines[line - 1] if 0 < line <= len(lines) else ''
+
+    def own_errors(tu):
+        # errors elsewhere (stand-ins, model headers) hide none of the
+        # package's calls, and declarations cannot fix them
+        return [e for e in cpp.error_diagnostics(tu)
+                if e[1] and _inside(e[1], package_path)]
+    errors = own_errors(tu)
+    best = (len(errors), 0, tu, _read_text(header))
+    rounds = 0
+    while errors and rounds < repair.MAX_REPAIR_ROUNDS:
+        own_files = {entry.file} | {
+            i.include.name for i in tu.get_includes()
+            if i.include is not None and _inside(i.include.name, package_path)}
+        repairs = repair.repairs_from_diagnostics(
+            errors, read_line,
+            texts=[text_of(f) for f in sorted({e[1] for e in errors})],
+            declared=repair.declared_names(
+                text_of(f) for f in sorted(own_files)))
+        if not repair.add_repairs(header, relative, repairs):
+            break
+        rounds += 1
+        tu = parse()
+        errors = own_errors(tu)
+        if len(errors) < best[0]:
+            best = (len(errors), rounds, tu, _read_text(header))
+    if best[1] != rounds:
+        # a later round made things worse (a repair can): keep the best,
+        # so that later parses of the unit do not pay for it
+        from colcon_rsia.frontend.model_mode import write_atomically
+        write_atomically(header, best[3])
+    return best[2], rounds
+
+
+def _repair_header_of(arguments):
+    for option, value in zip(arguments, arguments[1:]):
+        if option == '-include' and '/rsia_model/repair/' in value:
+            return value
+    return None
+
+
+def _read_text(path):
+    with open(path, encoding='utf-8', errors='surrogateescape') as h:
+        return h.read()
 
 
 def _file_stamp(path):
@@ -250,7 +377,8 @@ def _frontend_digest():
         here = os.path.dirname(os.path.abspath(__file__))
         files = [os.path.join(here, relative) for relative in (
             'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
-            'frontend/ros_api.py', 'frontend/model_mode.py')]
+            'frontend/ros_api.py', 'frontend/model_mode.py',
+            'frontend/repair.py')]
         for root, dirs, names in sorted(os.walk(
                 os.path.join(here, 'frontend', 'model_headers'))):
             dirs.sort()

@@ -260,6 +260,9 @@ class NodeHandleFact:
     namespace: str                # '' node ns, '~' private, or as written
 
 
+_UNIT_COUNTS = ('errors', 'package_errors', 'repair_rounds')
+
+
 @dataclass
 class TuFacts:
     """Everything a front end found in one translation unit."""
@@ -288,6 +291,11 @@ class TuFacts:
     # the package's own files the unit read (its source and headers)
     files: List[str] = field(default_factory=list)
     diagnostics: List[str] = field(default_factory=list)
+    # parse errors left in the unit (in all, and in the package's own
+    # files), and the parses the model mode's repairs took
+    errors: int = 0
+    package_errors: int = 0
+    repair_rounds: int = 0
 
     def to_dict(self):  # noqa: D102
         return asdict(self)
@@ -308,6 +316,9 @@ class TuFacts:
         }
         kwargs = {}
         for f in fields(cls):
+            if f.name in _UNIT_COUNTS:
+                kwargs[f.name] = int(data.get(f.name, 0))
+                continue
             value = data.get(f.name, [] if f.name != 'source' else '')
             if f.name in types:
                 value = [types[f.name](**item) for item in value]
@@ -317,7 +328,10 @@ class TuFacts:
     def extend(self, other):
         """Append all facts of another unit (duplicates removed later)."""
         for f in fields(self):
-            if f.name != 'source':
+            if f.name in _UNIT_COUNTS:
+                setattr(self, f.name,
+                        getattr(self, f.name) + getattr(other, f.name))
+            elif f.name != 'source':
                 getattr(self, f.name).extend(getattr(other, f.name))
 
 
@@ -450,6 +464,42 @@ class Node:
 
 
 @dataclass
+class UnitCoverage:
+    """How one translation unit parsed."""
+
+    file: str
+    errors: int = 0            # parse errors left, in all
+    package_errors: int = 0    # of which in the package's own files
+    repair_rounds: int = 0     # parses after the first (model mode)
+
+
+@dataclass
+class CallSiteCoverage:
+    """One publisher/subscription call site the source text shows."""
+
+    file: str
+    line: int
+    role: str       # 'publisher' | 'subscriber'
+    api: str
+    recorded: str   # 'node' | 'unit' (facts no node runs) | 'none'
+
+
+@dataclass
+class Coverage:
+    """What the analysis understood of a package (see coverage.py)."""
+
+    units: List[UnitCoverage] = field(default_factory=list)
+    call_sites: List[CallSiteCoverage] = field(default_factory=list)
+
+    @classmethod
+    def from_dict(cls, data):  # noqa: D102
+        return cls(
+            units=[UnitCoverage(**u) for u in data.get('units', [])],
+            call_sites=[CallSiteCoverage(**c)
+                        for c in data.get('call_sites', [])])
+
+
+@dataclass
 class PackageSummary:
     """The analysis result of one package: the content of summary.json."""
 
@@ -461,6 +511,8 @@ class PackageSummary:
     diagnostics: List[str] = field(default_factory=list)
     seconds: float = 0.0
     schema: str = SUMMARY_SCHEMA
+    # optional: summaries of older versions have none
+    coverage: Optional[Coverage] = None
 
     def to_dict(self):  # noqa: D102
         return asdict(self)
@@ -479,7 +531,9 @@ class PackageSummary:
                 tool_version=data['tool_version'],
                 header_mode=data.get('header_mode', 'exact'),
                 nodes=nodes, diagnostics=list(data.get('diagnostics', [])),
-                seconds=float(data.get('seconds', 0.0)))
+                seconds=float(data.get('seconds', 0.0)),
+                coverage=Coverage.from_dict(data['coverage'])
+                if data.get('coverage') else None)
         except (KeyError, TypeError, AttributeError) as e:
             raise ValueError(f'malformed summary: {e!r}') from None
 

@@ -23,9 +23,12 @@ import os
 import time
 
 from colcon_rsia import __version__
+from colcon_rsia import coverage
 from colcon_rsia import model
 from colcon_rsia import store
 from colcon_rsia.analysis import _node
+from colcon_rsia.call_sites import PUBLISHER
+from colcon_rsia.call_sites import SUBSCRIBER
 from colcon_rsia.frontend.python import extract_python_facts
 from colcon_rsia.frontend.python import MODULE_FUNCTION
 from colcon_rsia.node_facts import merge_facts
@@ -87,6 +90,13 @@ def build_python_summary(*, name, path):
             line += '; not analysed: ' + ', '.join(
                 f"node '{e}'" for e in executables)
         summary.diagnostics.append(line)
+    unit_lines = coverage.endpoint_lines(
+        [(PUBLISHER, u.publishers) for u in units.values()] +
+        [(SUBSCRIBER, u.subscribers) for u in units.values()])
+    summary.coverage = model.Coverage(
+        call_sites=coverage.call_site_coverage(
+            coverage.package_call_sites(path, python=True),
+            coverage.node_endpoint_lines(summary.nodes), unit_lines))
     return summary
 
 

@@ -120,13 +120,30 @@ def default_header_mode():
         DEFAULT_HEADER_MODE
 
 
+def workspace_package_dirs(args):
+    """Source directories of every package colcon discovers with `args`.
+
+    Selected or not: a package may include another's headers. Their
+    directories, not the base paths, are the workspace's sources: the
+    default base path is the workspace root, which also holds the build
+    base.
+    """
+    from colcon_core.package_discovery import discover_packages
+    from colcon_core.package_identification import \
+        get_package_identification_extensions
+    descriptors = discover_packages(
+        args, get_package_identification_extensions())
+    return sorted({os.path.abspath(str(d.path)) for d in descriptors})
+
+
 def analyze(*, name, package_type, path, build_base, cmake_args=None,
-            jobs=None, header_mode=None, workspace_src_dirs=(),
+            jobs=None, header_mode=None, workspace_package_dirs=(),
             without_build=False):
     """Analyse one package; return an :class:`Outcome`, never raise.
 
     :param header_mode: 'model' or 'exact'; None: :func:`default_header_mode`
-    :param workspace_src_dirs: the workspace's source directories
+    :param workspace_package_dirs: the source directories of all the
+      workspace's packages (see :func:`workspace_package_dirs`)
     :param bool without_build: analyse a package that has no compile
       database from its sources (else: warn how to get the database)
     """
@@ -134,19 +151,26 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
         return _analyze(
             name=name, package_type=package_type, path=path,
             build_base=build_base, cmake_args=cmake_args, jobs=jobs,
-            header_mode=header_mode, workspace_src_dirs=workspace_src_dirs,
+            header_mode=header_mode,
+            workspace_package_dirs=workspace_package_dirs,
             without_build=without_build)
     except AnalysisError as e:
-        return Outcome(name, error=str(e))
+        outcome = Outcome(name, error=str(e))
     except Exception as e:  # noqa: B902
         # a bug of ours must never fail the user's build: say it and go on
         detail = traceback.format_exc().strip().splitlines()[-1]
-        return Outcome(name, error=f'internal error ({type(e).__name__}: '
-                                   f'{detail}); please report it')
+        outcome = Outcome(name, error=f'internal error ({type(e).__name__}: '
+                                      f'{detail}); please report it')
+    try:
+        # for `colcon rsia coverage`
+        store.write_failure(build_base, name, outcome.error)
+    except OSError:
+        pass
+    return outcome
 
 
 def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
-             header_mode, workspace_src_dirs, without_build):
+             header_mode, workspace_package_dirs, without_build):
     # imported here: most colcon calls never analyse anything
     from colcon_rsia.python_analysis import analyze_python_package
     from colcon_rsia.python_analysis import build_python_summary
@@ -179,13 +203,14 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
     summary = analyze_package(
         name=name, path=path, build_base=build_base, jobs=jobs,
         nothing_compiled=exported and not has_database,
-        header_mode=header_mode, workspace_src_dirs=workspace_src_dirs)
+        header_mode=header_mode, workspace_package_dirs=workspace_package_dirs)
     if has_python:
         started = time.monotonic()
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,
                                key=lambda n: n.id)
         summary.diagnostics += python.diagnostics
+        summary.coverage.call_sites += python.coverage.call_sites
         summary.seconds = round(
             summary.seconds + time.monotonic() - started, 3)
         store.write_summary(build_base, summary)

@@ -10,6 +10,8 @@ from colcon_rsia.model import PackageSummary
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
+# why the last analysis of a package failed (removed by the next success)
+FAILURE_FILENAME = 'failure.json'
 CACHE_DIRNAME = 'cache'
 
 
@@ -50,7 +52,31 @@ def write_summary(package_build_base, summary):
     """Store a package summary; return its path."""
     path = summary_path(package_build_base)
     write_json_atomically(path, summary.to_dict())
+    try:
+        os.unlink(_failure_path(package_build_base))
+    except OSError:
+        pass
     return path
+
+
+def _failure_path(package_build_base):
+    return os.path.join(package_build_base, RSIA_DIRNAME, FAILURE_FILENAME)
+
+
+def write_failure(package_build_base, package, message):
+    """Record that a package's analysis failed, and why."""
+    write_json_atomically(_failure_path(package_build_base),
+                          {'package': package, 'error': message})
+
+
+def read_failure(package_build_base):
+    """The message of the package's last failed analysis, or None."""
+    try:
+        with open(_failure_path(package_build_base), encoding='utf-8') as h:
+            data = json.load(h)
+        return str(data['error'])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
 
 
 class SummaryError(RuntimeError):

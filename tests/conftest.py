@@ -69,11 +69,20 @@ def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S):
 
 
 def build_workspace(src, root, *, handler=True, compile_commands=True,
-                    extra=(), log_base=None):
-    """colcon build a workspace whose sources are `src` into `root`."""
+                    extra=(), log_base=None, from_root=False):
+    """colcon build a workspace whose sources are `src` into `root`.
+
+    With `from_root`, the way users build: `src` is copied to
+    ``root/src`` and colcon runs in `root` with its default base path.
+    """
     root.mkdir(parents=True, exist_ok=True)
     args = ['--log-base', log_base] if log_base else []
-    args += ['build', '--base-paths', str(src)]
+    if from_root:
+        shutil.copytree(src, root / 'src')
+        src = root / 'src'
+        args += ['build']
+    else:
+        args += ['build', '--base-paths', str(src)]
     if handler:
         args += ['--event-handlers', 'rsia+']
     cmake_args = list(CMAKE_ARGS) if compile_commands else CMAKE_ARGS[1:]
@@ -87,7 +96,8 @@ def build_workspace(src, root, *, handler=True, compile_commands=True,
 def ros1_workspace(tmp_path_factory):
     """test_workspaces/ros1 built with the rsia event handler."""
     workspace = build_workspace(
-        WORKSPACES / 'ros1' / 'src', tmp_path_factory.mktemp('ros1'))
+        WORKSPACES / 'ros1' / 'src', tmp_path_factory.mktemp('ros1'),
+        from_root=True)
     assert workspace.returncode == 0, workspace.stdout + workspace.stderr
     return workspace
 
@@ -96,6 +106,7 @@ def ros1_workspace(tmp_path_factory):
 def system_workspace(tmp_path_factory):
     """test_workspaces/system built with the rsia event handler."""
     workspace = build_workspace(
-        WORKSPACES / 'system' / 'src', tmp_path_factory.mktemp('system'))
+        WORKSPACES / 'system' / 'src', tmp_path_factory.mktemp('system'),
+        from_root=True)
     assert workspace.returncode == 0, workspace.stdout + workspace.stderr
     return workspace

@@ -86,7 +86,7 @@ def _model_arguments(workspace, package, entry, stub_dir):
     return model_mode.prepare_model_arguments(
         source=entry.file, arguments=entry.arguments,
         package_path=str(workspace.src / package),
-        workspace_src_dirs=[str(workspace.src)], stub_dir=str(stub_dir),
+        workspace_package_dirs=[str(workspace.src)], stub_dir=str(stub_dir),
         directory=entry.directory)
 
 
@@ -552,7 +552,7 @@ def test_model_facts_equal_exact_facts_for_more_api_forms(
         exact = _facts(exact_tu, package_path=root, file=source)
         model_arguments = model_mode.prepare_model_arguments(
             source=str(source), arguments=arguments, package_path=str(root),
-            workspace_src_dirs=[str(tmp_path / 'src'), str(ROS1_SRC)],
+            workspace_package_dirs=[str(tmp_path / 'src'), str(ROS1_SRC)],
             stub_dir=str(tmp_path / 'stubs'), directory=str(root))
         model_tu = _parse(file=source, arguments=model_arguments,
                           directory=root)
@@ -628,7 +628,7 @@ def test_unknown_and_missing_headers_keep_the_facts(tmp_path):
     arguments = model_mode.prepare_model_arguments(
         source=str(source),
         arguments=['-DROS_PACKAGE_NAME="acme_node"', '-std=gnu++17'],
-        package_path=str(package), workspace_src_dirs=[str(tmp_path / 'src')],
+        package_path=str(package), workspace_package_dirs=[str(tmp_path / 'src')],
         stub_dir=str(stub_dir))
     tu = _parse(file=source, arguments=arguments, directory=package)
     facts = cpp.extract_facts(tu, package_path=str(package),
@@ -686,7 +686,7 @@ def test_arguments_keep_source_trees_only(tmp_path):
             '-isystem', str(other / 'include'), '-I', '/usr/include/xmlrpcpp',
             '-I' + str(build / 'include'),
             '-I' + str(workspace / 'devel' / 'include'), '-Irelative'],
-        package_path=str(package), workspace_src_dirs=[str(workspace / 'src')],
+        package_path=str(package), workspace_package_dirs=[str(workspace / 'src')],
         stub_dir=str(stub_dir), directory=str(package))
     assert arguments[:2] == ['-I', model_mode.MODEL_HEADERS_DIR]
     kept = arguments[2:arguments.index(str(stub_dir)) - 1]
@@ -722,7 +722,7 @@ def test_include_scan_survives_odd_sources(tmp_path):
     arguments = model_mode.prepare_model_arguments(
         source=str(source),
         arguments=['-std=gnu++17', '-I' + str(package / 'include')],
-        package_path=str(package), workspace_src_dirs=[], stub_dir=str(stub_dir))
+        package_path=str(package), workspace_package_dirs=[], stub_dir=str(stub_dir))
 
     def stub(name):
         return (stub_dir / name).read_text()

@@ -46,6 +46,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._pending = []
         self._outcomes = []
         self._started = None
+        self._package_dirs = None
 
     def __call__(self, event):  # noqa: D102
         data = event[0]
@@ -71,12 +72,24 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
                 max_workers=self.PACKAGE_WORKERS,
                 thread_name_prefix='rsia', initializer=self._lower_priority)
             self._started = time.monotonic()
-        base_paths = getattr(self.context.args, 'base_paths', None) or ['.']
         self._pending.append(self._pool.submit(
             analyze, name=pkg.name, package_type=pkg.type,
             path=str(pkg.path), build_base=args.build_base,
             cmake_args=getattr(args, 'cmake_args', None),
-            workspace_src_dirs=[os.path.abspath(p) for p in base_paths]))
+            workspace_package_dirs=self._workspace_package_dirs(pkg)))
+
+    def _workspace_package_dirs(self, pkg):
+        # discovered once, on the first package analysed, with the build's
+        # own arguments
+        from colcon_rsia.runner import workspace_package_dirs
+        if self._package_dirs is None:
+            try:
+                self._package_dirs = workspace_package_dirs(self.context.args)
+            except Exception:  # noqa: B902
+                # discovery has already succeeded once for this build; if
+                # it fails now, each package still has its own headers
+                self._package_dirs = []
+        return sorted(set(self._package_dirs) | {os.path.abspath(str(pkg.path))})
 
     @classmethod
     def _lower_priority(cls):
@@ -126,3 +139,11 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             f'packages ({nodes} nodes) in '
             f'{time.monotonic() - self._started:.1f}s; '
             "see 'colcon rsia graph' and 'colcon rsia impact'", flush=True)
+        if not analysed:
+            return
+        from colcon_rsia.coverage import total_line
+        from colcon_rsia.coverage import workspace_report
+        print(total_line(workspace_report(
+            [o.summary for o in analysed],
+            {o.package: o.error for o in self._outcomes
+             if o.error is not None})), flush=True)

@@ -96,6 +96,17 @@ def parse_diagnostics(tu):
     return messages
 
 
+def error_diagnostics(tu):
+    """(message, file, line, column) of every error of a parsed unit."""
+    errors = []
+    for diag in tu.diagnostics:
+        if diag.severity >= ci.Diagnostic.Error:
+            loc = diag.location
+            errors.append((diag.spelling, loc.file.name if loc.file else None,
+                           loc.line, loc.column))
+    return errors
+
+
 def extract_facts(tu, *, package_path, source):
     """Walk the package's own code in a parsed TU and return its facts.
 
@@ -106,7 +117,17 @@ def extract_facts(tu, *, package_path, source):
     """
     walker = _Walker(package_path, model.TuFacts(source=source))
     walker.walk(tu)
+    walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
     return walker.facts
+
+
+def same_cursor(a, b):
+    """Whether two cursors are the same; None is no cursor, never equal.
+
+    libclang returns None (or a null cursor) for what invalid code leaves
+    unresolved, and ``Cursor.__eq__`` raises on anything but a cursor.
+    """
+    return a is not None and b is not None and a == b
 
 
 def qualified_name(cursor):
@@ -306,6 +327,8 @@ class _Walker:
         self._string_written = set()
         # (service fact, variable its name is read from)
         self._named_by_variable = []
+        # declarations whose walk failed: one line each, the rest goes on
+        self.problems = []
 
     # --- locations ---------------------------------------------------------
 
@@ -350,6 +373,10 @@ class _Walker:
         for cursor in tu.cursor.get_children():
             if self.in_package(cursor):
                 self._declaration(cursor)
+        if len(self.problems) > MAX_DIAGNOSTICS_PER_TU:
+            lost = len(self.problems) - MAX_DIAGNOSTICS_PER_TU
+            del self.problems[MAX_DIAGNOSTICS_PER_TU:]
+            self.problems.append(f'... and {lost} more declarations skipped')
         # a lambda stored in a variable and then registered as a callback
         # is a root, not something its defining function calls
         self.facts.calls = [
@@ -415,17 +442,29 @@ class _Walker:
             fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
 
     def _declaration(self, cursor):
-        kind = cursor.kind
+        try:
+            kind = cursor.kind
+        except ValueError:
+            return  # a cursor kind this libclang binding does not know
         if kind in SCOPE_KINDS:
             for child in cursor.get_children():
                 if self.in_package(child):
                     self._declaration(child)
-        elif kind in FUNCTION_KINDS:
-            if cursor.is_definition():
-                self._function(cursor)
-        elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
-            self._declared_object(cursor, function=None)
-            self._initialized_string(cursor)
+            return
+        # what invalid code leaves in the AST may surprise any rule below:
+        # such a declaration loses its own facts, never the unit's
+        try:
+            if kind in FUNCTION_KINDS:
+                if cursor.is_definition():
+                    self._function(cursor)
+            elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
+                self._declared_object(cursor, function=None)
+                self._initialized_string(cursor)
+        except Exception as e:  # noqa: B902
+            self.problems.append(
+                f'{self.location(cursor)}: {cursor.spelling or kind.name} '
+                f'not analysed (internal error: {type(e).__name__}: {e}); '
+                'please report it')
 
     def _plugin_exports(self, main_file):
         try:
@@ -602,7 +641,7 @@ class _Walker:
             return
         for parent in stack[-2:]:
             if getattr(parent, 'kind', None) == CK.CALL_EXPR and \
-                    parent.referenced == ref:
+                    same_cursor(parent.referenced, ref):
                 return  # the callee of a call, counted by _call
         self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
 

@@ -161,7 +161,7 @@ _system_dirs_cache = []
 
 
 def prepare_model_arguments(*, source, arguments, package_path,
-                            workspace_src_dirs, stub_dir, directory=None):
+                            workspace_package_dirs, stub_dir, directory=None):
     """Return the libclang arguments of the model mode for one TU.
 
     Keeps ``-D``, ``-U``, ``-std`` and the include directories inside the
@@ -175,19 +175,20 @@ def prepare_model_arguments(*, source, arguments, package_path,
     :param list arguments: the TU's libclang arguments from the compile
       database (see :func:`colcon_rsia.frontend.compile_db.clang_arguments`)
     :param str package_path: the package's source directory
-    :param workspace_src_dirs: the workspace's source directories
+    :param workspace_package_dirs: the source directories of the
+      workspace's packages (their headers are the workspace's own)
     :param str stub_dir: where stand-ins are written (created if missing;
-      never inside a source tree)
+      never inside a package's source directory)
     :param str directory: the compile command's directory, for relative
       include directories (default: the current directory)
     :rtype: list
     """
-    roots = [_real(package_path)] + [_real(d) for d in workspace_src_dirs]
+    roots = [_real(package_path)] + [_real(d) for d in workspace_package_dirs]
     stub_dir = os.path.abspath(stub_dir)
     if any(_inside(_real(stub_dir), root) for root in roots):
         raise ValueError(
-            f"the stub directory '{stub_dir}' lies in a source tree; stand-ins "
-            'are never written among the sources')
+            f"the stub directory '{stub_dir}' lies in a package's source "
+            'directory; stand-ins are never written among the sources')
     kept, search = _filter_arguments(arguments, roots, directory)
     scanner = _Scanner(roots=roots, search=search, stub_dir=stub_dir)
     scanner.scan(os.path.abspath(source))
@@ -196,6 +197,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
     up_dirs, own = _write_stand_ins(scanner, codes, stub_dir)
     result = ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += _std_defines(codes)
+    result += _export_macro_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace}' for namespace in own]
     if scanner.ros2:
         # the headers ROS 1 and ROS 2 share by name (tf2_ros/*.h,
@@ -416,6 +418,23 @@ def _system_include_dirs():
 
 # --- what the sources use ----------------------------------------------------
 
+# visibility and export macros, defined by headers CMake generates into the
+# build tree (or by ones the model lacks): FOO_PUBLIC class Bar
+_EXPORT_MACRO = re.compile(
+    r'\b([A-Z][A-Z0-9_]*_(?:EXPORT|PUBLIC|LOCAL|IMPORT|API|PUBLIC_TYPE'
+    r'|DECLSPEC|VISIBILITY))\b(?!\s*\()')
+
+
+def _export_macro_defines(codes):
+    """``-DFOO_PUBLIC=`` for each export macro no scanned file defines."""
+    used = set()
+    defined = set()
+    for code in codes:
+        used.update(_EXPORT_MACRO.findall(code))
+        defined.update(re.findall(r'^\s*#\s*define\s+(\w+)', code, re.M))
+    return [f'-D{name}=' for name in sorted(used - defined)]
+
+
 def _code_only(text):
     """The text without comments, literals and include lines."""
     return _INCLUDE.sub(' ', _COMMENT_OR_STRING.sub(' ', text))
@@ -565,7 +584,7 @@ def _write_stub(target, content):
             if _stub_kind(existing) == 'service_message':
                 return
             content = _combined_stub_from(content)
-    _write_atomically(target, content)
+    write_atomically(target, content)
 
 
 def _stub_kind(text):
@@ -573,7 +592,8 @@ def _stub_kind(text):
     return match.group(1) if match else None
 
 
-def _write_atomically(path, content):
+def write_atomically(path, content):
+    """Write a text file whole or not at all (readers never see half)."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
     fd, temporary = tempfile.mkstemp(
         dir=os.path.dirname(path), prefix='.rsia-', suffix='.tmp')
@@ -614,7 +634,7 @@ def _merge_fields(stub_dir, members, constants):
     for i, name in enumerate(all_constants):
         lines += [f'#ifndef {name}', f'RSIA_MODEL_CONSTANT({name}, {i + 1})',
                   '#endif']
-    _write_atomically(path, '\n'.join(lines) + '\n')
+    write_atomically(path, '\n'.join(lines) + '\n')
 
 
 def _merge_implicit(stub_dir, implicit):
@@ -630,7 +650,7 @@ def _merge_implicit(stub_dir, implicit):
         '// messages of *_msgs packages the sources name without including',
         '// them (the real message headers include what their fields use)']
     lines += [f'#include <{n}>' for n in sorted(old_includes | set(implicit))]
-    _write_atomically(path, '\n'.join(lines) + '\n')
+    write_atomically(path, '\n'.join(lines) + '\n')
 
 
 def _empty_stub(name):
@@ -745,8 +765,10 @@ def _merge_unknown(stub_dir, namespace, names):
         '#include <rsia_model/message.h>', '', f'namespace {namespace}', '{']
     for name in sorted(types):
         members = sorted(types[name])
+        # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
-                  f'#ifndef {name}',
+                  f'#if !defined({name}) && '
+                  f'!defined(RSIA_REPAIRED__{namespace}__{name})',
                   f'struct {name} : ::rsia_model::Unknown', '{',
                   '  using ::rsia_model::Unknown::Unknown;']
         for member in members:
@@ -762,7 +784,7 @@ def _merge_unknown(stub_dir, namespace, names):
     lines += ['', f'}}  // namespace {namespace}', '', f'#endif  // {guard}', '']
     content = '\n'.join(lines)
     if content != old:
-        _write_atomically(path, content)
+        write_atomically(path, content)
 
 
 def _printable(text):

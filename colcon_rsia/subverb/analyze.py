@@ -7,6 +7,8 @@ import time
 from colcon_core.logging import colcon_logger
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.coverage import total_line
+from colcon_rsia.coverage import workspace_report
 from colcon_rsia.runner import analyze
 from colcon_rsia.subverb import add_workspace_arguments
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
@@ -37,13 +39,15 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def main(self, *, context):  # noqa: D102
         args = context.args
-        decorators = [d for d in get_packages(args) if d.selected]
-        workspace_src_dirs = sorted({
-            os.path.abspath(p) for p in (getattr(args, 'base_paths', None) or
-                                         ['.'])})
+        packages = get_packages(args)
+        decorators = [d for d in packages if d.selected]
+        package_dirs = sorted({
+            os.path.abspath(str(d.descriptor.path)) for d in packages})
         build_base = os.path.abspath(args.build_base)
         started = time.monotonic()
         analysed = 0
+        summaries = []
+        failures = {}
         for number, decorator in enumerate(decorators, start=1):
             pkg = decorator.descriptor
             print(f'[{number}/{len(decorators)}] analysing {pkg.name} ...',
@@ -52,9 +56,14 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                 name=pkg.name, package_type=pkg.type, path=str(pkg.path),
                 build_base=os.path.join(build_base, pkg.name),
                 jobs=args.jobs, header_mode=args.header_mode,
-                workspace_src_dirs=workspace_src_dirs, without_build=True)
+                workspace_package_dirs=package_dirs, without_build=True)
             print(outcome.line(), flush=True)
             analysed += outcome.summary is not None
+            if outcome.summary is not None:
+                summaries.append(outcome.summary)
+            elif outcome.error is not None:
+                failures[pkg.name] = outcome.error
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
               f'{time.monotonic() - started:.1f}s', flush=True)
+        print(total_line(workspace_report(summaries, failures)), flush=True)
         return 0

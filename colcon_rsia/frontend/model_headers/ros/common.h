@@ -12,6 +12,7 @@
 #include <boost/function.hpp>
 #include <boost/make_shared.hpp>
 #include <boost/shared_ptr.hpp>
+#include <ros/assert.h>
 #include <ros/exception.h>
 #include <ros/forwards.h>
 #include <ros/macros.h>

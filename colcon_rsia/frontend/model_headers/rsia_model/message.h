@@ -203,6 +203,9 @@ struct Unknown : Fields
   Any& operator()(RsiaArgs&&...) const;
 };
 
+// the value of a function-like macro the model lacks (see repair.py)
+Any& any_value();
+
 }  // namespace rsia_model
 
 // messages other headers refer to without including them (see model_mode.py)

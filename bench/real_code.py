@@ -1,0 +1,237 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""How much of a real workspace the analysis understands, unbuilt.
+
+Runs ``colcon rsia analyze`` from the root of any workspace (its packages
+never built: the default model header mode), the way a user runs it, then
+compares what the summaries record with what the source text shows:
+
+- call-site recall: of the calls that create a publisher or subscription in
+  the packages' own code (tests aside; found by
+  :mod:`colcon_rsia.call_sites`), the share that ended up as a fact of a
+  node in the summaries (same file, same line, or within two lines for a
+  call spread over several);
+- translation units, and those with parse errors located in package code;
+- packages that failed (internal errors are bugs);
+- wall seconds per translation unit and the peak memory of the analysis.
+
+Ends with one line:
+
+RESULT ws=<name> packages=<n> failed=<n> internal_errors=<n> units=<n>
+units_with_errors=<n> (<pct>%) pub_recall=<pct> (<hit>/<sites>)
+sub_recall=<pct> (<hit>/<sites>) pub_in_nodes=<pct> sub_in_nodes=<pct>
+s_per_unit=<s> peak_mb=<mb>
+
+The recall counts a call site with a fact anywhere in the package's units;
+``*_in_nodes`` only those a node of the summary runs (a plugin's are in no
+node until plugins are analysed as nodes).
+
+Usage: python3 bench/real_code.py WS [--colcon EXE] [--jobs N]
+  [--build-base DIR] [--base-paths P ...] [--missed]
+"""
+
+import argparse
+import collections
+import json
+import os
+from pathlib import Path
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+from common import colcon
+from common import REPO
+
+sys.path.insert(0, str(REPO))
+from colcon_rsia.call_sites import PUBLISHER  # noqa: E402,I100,I202
+from colcon_rsia.call_sites import scan_package  # noqa: E402
+from colcon_rsia.call_sites import SUBSCRIBER  # noqa: E402
+from colcon_rsia.coverage import match_sites  # noqa: E402
+
+CXX_SOURCES = ('.cpp', '.cc', '.cxx', '.c++', '.C')
+
+
+def _analyze(ws, build_base, colcon_exe, jobs, base_paths):
+    args = [colcon_exe, 'rsia', 'analyze', '--build-base', str(build_base)]
+    if base_paths:
+        args += ['--base-paths'] + base_paths
+    if jobs:
+        args += ['--jobs', str(jobs)]
+    env = dict(os.environ, COLCON_HOME=str(build_base / '.colcon_home'))
+    started = time.monotonic()
+    result = subprocess.run(args, cwd=str(ws), env=env,
+                            capture_output=True, text=True)
+    elapsed = time.monotonic() - started
+    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    if result.returncode != 0:
+        raise SystemExit(f'analyze failed ({result.returncode}):\n'
+                         f'{result.stdout[-3000:]}\n{result.stderr[-3000:]}')
+    return elapsed, peak_kb / 1024, result.stdout
+
+
+def _packages(ws, output):
+    """[(name, absolute path)] of the packages the analysis went through.
+
+    The names are those ``analyze`` announced; the paths those of the
+    ``package.xml`` naming them (every package of a ROS workspace has one).
+    """
+    names = re.findall(r'^\[\d+/\d+\] analysing (\S+) \.\.\.$', output,
+                       re.MULTILINE)
+    paths = {}
+    for root, dirs, files in os.walk(ws):
+        dirs[:] = [d for d in dirs if not d.startswith(('.', 'build'))
+                   and d not in ('install', 'log')]
+        if 'package.xml' in files:
+            with open(os.path.join(root, 'package.xml'), 'rb') as h:
+                match = re.search(rb'<name>\s*([^<\s]+)\s*</name>', h.read())
+            if match:
+                paths.setdefault(match.group(1).decode(), root)
+    return [(name, paths[name]) for name in names if name in paths]
+
+
+def _summary(build_base, package):
+    try:
+        with open(build_base / package / 'rsia' / 'summary.json',
+                  encoding='utf-8') as h:
+            return json.load(h)
+    except (OSError, ValueError):
+        return None
+
+
+def _recorded(summary, sites):
+    """({sites with a fact}, {sites with a fact of a node}).
+
+    From the summary's coverage section; a summary of an older analyser
+    has none: its nodes' endpoints are matched here (node facts only).
+    """
+    coverage = summary.get('coverage') if summary else None
+    if coverage is None:
+        lines = _node_lines(summary) if summary else {}
+        hits = match_sites(sites, lines)
+        return hits, hits
+    recorded = {(c['file'], c['line'], c['role']): c['recorded']
+                for c in coverage.get('call_sites', [])}
+    facts = {s for s in sites
+             if recorded.get((s.file, s.line, s.role), 'none') != 'none'}
+    in_nodes = {s for s in sites
+                if recorded.get((s.file, s.line, s.role)) == 'node'}
+    return facts, in_nodes
+
+
+def _node_lines(summary):
+    """{(file, role): [lines]} of the endpoints of the summary's nodes."""
+    lines = collections.defaultdict(list)
+    for node in summary.get('nodes', []):
+        for role, key in ((PUBLISHER, 'publishers'),
+                          (SUBSCRIBER, 'subscribers')):
+            for fact in node.get(key, []):
+                file, _, line = fact['location'].rpartition(':')
+                if line.isdigit():
+                    lines[(file, role)].append(int(line))
+    return lines
+
+
+def _units(summary, path):
+    """(units, units with errors in package code) of one package.
+
+    A package without a summary (its analysis failed) has lost all its
+    units.
+    """
+    coverage = summary.get('coverage') if summary else None
+    if coverage is not None:
+        units = coverage.get('units', [])
+        return len(units), sum(1 for u in units if u.get('package_errors'))
+    # a summary without coverage (an older analyser): count the sources
+    # it parses, and the units whose parse errors name a package file
+    units = 0
+    for root, dirs, files in os.walk(path):
+        dirs[:] = [d for d in dirs if d not in (
+            'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles')
+            and not d.startswith('.')]
+        units += sum(1 for f in files if f.endswith(CXX_SOURCES))
+    if summary is None:
+        return units, units
+    with_errors = set()
+    for line in summary.get('diagnostics', []):
+        match = re.match(r'^(.*?): parse error: (/[^:]*):\d+:', line)
+        if match and match.group(2).startswith(path.rstrip('/') + '/'):
+            with_errors.add(match.group(1))
+    return units, len(with_errors)
+
+
+def _percent(part, whole):
+    return f'{100.0 * part / whole:.1f}' if whole else 'n/a'
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument('ws', help='the workspace root (holding src/)')
+    parser.add_argument('--colcon', default=None,
+                        help="the colcon executable (default: this venv's)")
+    parser.add_argument('--jobs', type=int, default=None)
+    parser.add_argument(
+        '--build-base', default=None,
+        help='where the summaries go (default: WS/build_rsia_bench, '
+             'removed first)')
+    parser.add_argument(
+        '--base-paths', nargs='+', default=None,
+        help="passed on to colcon (default: colcon's, the workspace root)")
+    parser.add_argument('--missed', action='store_true',
+                        help='list every call site without a fact')
+    args = parser.parse_args()
+    ws = Path(args.ws).resolve()
+    build_base = Path(args.build_base) if args.build_base else \
+        ws / 'build_rsia_bench'
+    if build_base.exists():
+        shutil.rmtree(build_base)
+    build_base.mkdir(parents=True)
+    elapsed, peak_mb, output = _analyze(
+        ws, build_base, args.colcon or colcon(), args.jobs, args.base_paths)
+    failed = [line for line in output.splitlines()
+              if 'analysis failed' in line]
+    internal = [line for line in failed if 'internal error' in line]
+    packages = re.search(r'analysed \d+ of (\d+) packages', output)
+    totals = collections.Counter()
+    missed = []
+    for package, path in _packages(ws, output):
+        summary = _summary(build_base, package)
+        units, with_errors = _units(summary, path)
+        totals['units'] += units
+        totals['units_with_errors'] += with_errors
+        sites = scan_package(path)
+        hits, in_nodes = _recorded(summary, sites)
+        for role in (PUBLISHER, SUBSCRIBER):
+            totals[role + '_sites'] += sum(1 for s in sites if s.role == role)
+            totals[role + '_hits'] += sum(1 for s in hits if s.role == role)
+            totals[role + '_nodes'] += sum(
+                1 for s in in_nodes if s.role == role)
+        internal += [line for line in (summary or {}).get('diagnostics', [])
+                     if 'internal error' in line]
+        missed += [(package, s) for s in sites if s not in hits]
+    for line in failed:
+        print(line)
+    if args.missed:
+        for package, site in missed:
+            print(f'missed {site.role}: {package}/{site.file}:{site.line} '
+                  f'({site.api})')
+    units = totals['units']
+    pub = (totals[PUBLISHER + '_hits'], totals[PUBLISHER + '_sites'])
+    sub = (totals[SUBSCRIBER + '_hits'], totals[SUBSCRIBER + '_sites'])
+    print(f'RESULT ws={ws.name} '
+          f'packages={packages.group(1) if packages else "?"} '
+          f'failed={len(failed)} internal_errors={len(internal)} '
+          f'units={units} units_with_errors={totals["units_with_errors"]} '
+          f'({_percent(totals["units_with_errors"], units)}%) '
+          f'pub_recall={_percent(*pub)} ({pub[0]}/{pub[1]}) '
+          f'sub_recall={_percent(*sub)} ({sub[0]}/{sub[1]}) '
+          f'pub_in_nodes={_percent(totals[PUBLISHER + "_nodes"], pub[1])} '
+          f'sub_in_nodes={_percent(totals[SUBSCRIBER + "_nodes"], sub[1])} '
+          f's_per_unit={elapsed / units if units else 0:.2f} '
+          f'peak_mb={peak_mb:.0f}')
+
+
+if __name__ == '__main__':
+    main()

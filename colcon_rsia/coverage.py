@@ -1,0 +1,222 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""What the analysis of a package understood, against its source text.
+
+The call sites that create publishers and subscriptions are found in the
+package's own files by text (:mod:`colcon_rsia.call_sites`), independently
+of the front ends; each is then looked up among the facts: recorded for a
+node, recorded only in a unit's facts (code no node runs, such as a plugin),
+or not recorded at all (a blind spot). With the parse errors left in each
+translation unit, this is the ``coverage`` section of a summary.
+"""
+
+import collections
+
+from colcon_rsia import model
+from colcon_rsia.call_sites import CXX_HEADER_EXTENSIONS
+from colcon_rsia.call_sites import CXX_SOURCE_EXTENSIONS
+from colcon_rsia.call_sites import PUBLISHER
+from colcon_rsia.call_sites import scan_package
+from colcon_rsia.call_sites import SUBSCRIBER
+
+# a call written over several lines is recorded at the line of its callee
+# name or of its object: both lie within this many lines of each other
+LINE_SLACK = 2
+
+RECORDED_IN_NODE = 'node'
+RECORDED_IN_UNIT = 'unit'
+NOT_RECORDED = 'none'
+
+
+def endpoint_lines(fact_lists):
+    """{(file, role): [lines]} of (role, facts with a 'file:line' location)."""
+    lines = collections.defaultdict(list)
+    for role, facts in fact_lists:
+        for fact in facts:
+            file, _, line = fact.location.rpartition(':')
+            if line.isdigit():
+                lines[(file, role)].append(int(line))
+    return lines
+
+
+def node_endpoint_lines(nodes):
+    """:func:`endpoint_lines` of the publishers and subscribers of nodes."""
+    return endpoint_lines(
+        [(PUBLISHER, n.publishers) for n in nodes] +
+        [(SUBSCRIBER, n.subscribers) for n in nodes])
+
+
+def match_sites(sites, lines):
+    """The call sites matched one to one with a recorded line.
+
+    A site takes the fact on its own line first, else the nearest within
+    :data:`LINE_SLACK` lines.
+    """
+    free = {key: collections.Counter(value) for key, value in lines.items()}
+    matched = set()
+    for site in sites:
+        candidates = free.get((site.file, site.role))
+        if candidates and candidates[site.line] > 0:
+            candidates[site.line] -= 1
+            matched.add(site)
+    for site in sites:
+        if site in matched:
+            continue
+        candidates = free.get((site.file, site.role)) or {}
+        near = sorted((abs(line - site.line), line)
+                      for line, count in candidates.items()
+                      if count > 0 and abs(line - site.line) <= LINE_SLACK)
+        if near:
+            candidates[near[0][1]] -= 1
+            matched.add(site)
+    return matched
+
+
+def call_site_coverage(sites, node_lines, unit_lines=None):
+    """[model.CallSiteCoverage] of these sites against recorded facts."""
+    in_nodes = match_sites(sites, node_lines)
+    rest = [s for s in sites if s not in in_nodes]
+    in_units = match_sites(rest, unit_lines) if unit_lines else set()
+    result = []
+    for site in sites:
+        recorded = RECORDED_IN_NODE if site in in_nodes else \
+            RECORDED_IN_UNIT if site in in_units else NOT_RECORDED
+        result.append(model.CallSiteCoverage(
+            file=site.file, line=site.line, role=site.role, api=site.api,
+            recorded=recorded))
+    return result
+
+
+def package_call_sites(path, *, python):
+    """The package's call sites in Python files, or in C++ files."""
+    cxx = CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS
+    return [s for s in scan_package(path)
+            if s.file.endswith(cxx) != python]
+
+
+# --- the workspace report (`colcon rsia coverage`) --------------------------
+
+COVERAGE_SCHEMA = 'colcon-rsia/coverage@1'
+
+# package states in the report
+ANALYSED = 'analysed'
+FAILED = 'failed'
+NOT_ANALYSED = 'not analysed'
+
+
+def package_report(summary):
+    """The coverage of one analysed package, as the JSON contract has it."""
+    report = {'package': summary.package, 'status': ANALYSED,
+              'has_coverage': summary.coverage is not None}
+    coverage = summary.coverage or model.Coverage()
+    report['units'] = len(coverage.units)
+    report['units_with_errors'] = sum(
+        1 for u in coverage.units if u.package_errors)
+    report['units_repaired'] = sum(
+        1 for u in coverage.units if u.repair_rounds)
+    report['call_sites'] = {}
+    for role in (PUBLISHER, SUBSCRIBER):
+        sites = [c for c in coverage.call_sites if c.role == role]
+        report['call_sites'][role] = {
+            'sites': len(sites),
+            'in_nodes': sum(1 for c in sites
+                            if c.recorded == RECORDED_IN_NODE),
+            'in_units_only': sum(1 for c in sites
+                                 if c.recorded == RECORDED_IN_UNIT)}
+    report['missed'] = [
+        {'file': c.file, 'line': c.line, 'role': c.role, 'api': c.api}
+        for c in coverage.call_sites if c.recorded == NOT_RECORDED]
+    report['unresolved_topics'] = [
+        {'node': node.id, 'role': role, 'topic': endpoint.topic,
+         'location': endpoint.location}
+        for node in summary.nodes
+        for role, endpoints in ((PUBLISHER, node.publishers),
+                                (SUBSCRIBER, node.subscribers))
+        for endpoint in endpoints if not endpoint.topic_is_literal]
+    report['unnamed_nodes'] = sorted(
+        node.id for node in summary.nodes if not node.name)
+    return report
+
+
+def workspace_report(summaries, failures=None, not_analysed=()):
+    """The coverage of a workspace: per package and in total.
+
+    :param summaries: the packages' summaries
+    :param failures: {package: why its last analysis failed}
+    :param not_analysed: selected packages with neither
+    """
+    packages = [package_report(s) for s in summaries]
+    for package, error in sorted((failures or {}).items()):
+        packages = [p for p in packages if p['package'] != package]
+        packages.append({'package': package, 'status': FAILED,
+                         'error': error})
+    packages += [{'package': p, 'status': NOT_ANALYSED}
+                 for p in sorted(not_analysed)]
+    packages.sort(key=lambda p: p['package'])
+    analysed = [p for p in packages if p['status'] == ANALYSED]
+    total = {
+        'packages': len(packages),
+        'failed': sum(1 for p in packages if p['status'] == FAILED),
+        'not_analysed': sum(
+            1 for p in packages if p['status'] == NOT_ANALYSED),
+        'units': sum(p['units'] for p in analysed),
+        'units_with_errors': sum(p['units_with_errors'] for p in analysed),
+        'unresolved_topics': sum(
+            len(p['unresolved_topics']) for p in analysed),
+        'unnamed_nodes': sum(len(p['unnamed_nodes']) for p in analysed),
+        'call_sites': {}}
+    for role in (PUBLISHER, SUBSCRIBER):
+        total['call_sites'][role] = {
+            key: sum(p['call_sites'][role][key] for p in analysed)
+            for key in ('sites', 'in_nodes', 'in_units_only')}
+    total['percent'] = recorded_percent(total)
+    return {'schema': COVERAGE_SCHEMA, 'packages': packages, 'total': total}
+
+
+def recorded_percent(counts):
+    """The share of call sites with a fact (in a node or a unit), in %."""
+    sites = sum(c['sites'] for c in counts['call_sites'].values())
+    recorded = sum(c['in_nodes'] + c['in_units_only']
+                   for c in counts['call_sites'].values())
+    return round(100.0 * recorded / sites, 1) if sites else 100.0
+
+
+def total_line(report):
+    """One line: the workspace total (the end of ``analyze``)."""
+    total = report['total']
+    pub = total['call_sites'][PUBLISHER]
+    sub = total['call_sites'][SUBSCRIBER]
+    return (
+        f"rsia: coverage {total['percent']:.1f}% of "
+        f"{pub['sites'] + sub['sites']} publisher/subscription call sites "
+        f'recorded ({_fraction(pub)} publishers, {_fraction(sub)} '
+        f"subscriptions); {total['units_with_errors']} of "
+        f"{total['units']} translation units with errors in package code; "
+        f"{total['failed']} packages failed; see 'colcon rsia coverage'")
+
+
+def _fraction(counts):
+    return f"{counts['in_nodes'] + counts['in_units_only']}/{counts['sites']}"
+
+
+def report_to_text(report, *, missed=False):
+    """The report as a table, one package a line, then the total."""
+    lines = [f"{'package':<40} {'units':>6} {'errors':>6} "
+             f"{'pub':>9} {'sub':>9} {'unres.':>6} {'unnamed':>7}"]
+    for p in report['packages']:
+        if p['status'] != ANALYSED:
+            why = f": {p['error']}" if p.get('error') else ''
+            lines.append(f"{p['package']:<40} {p['status']}{why}")
+            continue
+        calls = p['call_sites']
+        lines.append(
+            f"{p['package']:<40} {p['units']:>6} {p['units_with_errors']:>6} "
+            f'{_fraction(calls[PUBLISHER]):>9} '
+            f'{_fraction(calls[SUBSCRIBER]):>9} '
+            f"{len(p['unresolved_topics']):>6} {len(p['unnamed_nodes']):>7}"
+            + ('' if p['has_coverage'] else '  (re-analyse: no coverage)'))
+        if missed:
+            lines += [f"  missed {m['role']}: {m['file']}:{m['line']} "
+                      f"({m['api']})" for m in p['missed']]
+    lines.append(total_line(report))
+    return '\n'.join(lines) + '\n'

@@ -1,0 +1,354 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Self-completing model mode: declarations made up from clang's errors.
+
+The model headers cover the ROS API; stand-ins cover the includes nothing
+provides. Real packages still use names neither declares (``cv::Mat_``,
+``CV_8UC1``, ``hardware_interface::...``, ``FMT_COMPILE(...)``, a base class
+from a library the model lacks, which makes every ``override`` an error).
+Every such error can hide a call we look for, so after a parse with errors
+this module reads clang's diagnostics, declares what they say is missing in
+a per-unit *repair header* (force-included, in the stub directory) and the
+unit is parsed again, a bounded number of rounds.
+
+The declarations are permissive: classes derive from
+``rsia_model::Unknown`` (constructible from anything, with every member
+name the sources use), objects and functions are of or return
+``rsia_model::Any``. How a name is used decides what it becomes: the
+characters after it on its line (``::`` a namespace, ``(`` a function or a
+function-like macro, ``<`` a template).
+
+A repair header only grows, and a unit whose sources did not change is
+read from the cache: a package is repaired once.
+"""
+
+import hashlib
+import os
+import re
+
+from colcon_rsia.frontend.model_mode import write_atomically
+
+# parses of a unit after the first: each round fixes what the previous one
+# revealed (a namespace, then the names used in it)
+MAX_REPAIR_ROUNDS = 3
+
+REPAIR_DIR = os.path.join('rsia_model', 'repair')
+_MARKER = '// colcon-rsia repairs v1'
+
+_UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'")
+_UNKNOWN_TYPE = re.compile(r"^unknown type name '(\w+)'")
+_UNKNOWN_TEMPLATE = re.compile(r"^unknown template name '(\w+)'")
+_IN_NAMESPACE = re.compile(
+    r"^no (type|template|member|class) named '(\w+)' in namespace '([\w:]+)'")
+_NOT_NAMESPACE = re.compile(
+    r"^use of undeclared identifier '(\w+)'|^expected namespace name")
+_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)'$")
+_ARGUMENT_NOT_VALUE = re.compile(
+    r"^'\w+' does not refer to a value|"
+    r"^expected '\(' for function-style cast")
+_UNDEFINED_MACRO = re.compile(r"^function-like macro '(\w+)' is not defined")
+_OVERRIDE = re.compile(
+    r"only virtual member functions can be marked '(?:override|final)'|"
+    r"marked '(?:override|final)' but does not override")
+_NAMESPACE_ALIAS = re.compile(
+    r'\bnamespace\s+\w+\s*=\s*(?:::)?([A-Za-z_][\w:]*)|'
+    r'\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)')
+_ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]*$')
+_CAMEL = re.compile(r'^_?[A-Z]')
+_KEYWORDS = frozenset("""
+    alignas alignof asm auto bool break case catch char class const constexpr
+    continue decltype default delete do double else enum explicit export
+    extern false float for friend goto if inline int long mutable namespace
+    new noexcept nullptr operator private protected public register return
+    short signed sizeof static struct switch template this throw true try
+    typedef typeid typename union unsigned using virtual void volatile while
+    std rsia_model
+""".split())
+
+# what a name becomes
+NAMESPACE = 'namespace'
+TYPE = 'type'
+TEMPLATE = 'template'
+FUNCTION = 'function'
+OBJECT = 'object'
+CONSTANT = 'constant'
+MACRO_VALUE = 'macro-value'        # FOO(...) used as a value
+MACRO_EMPTY = 'macro-empty'        # FOO_EXPORT at declaration level
+MACRO_VOID = 'macro-void'          # FOO(...) at declaration level
+MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
+NO_OVERRIDE = 'no-override'        # `override` made a no-op
+MEMBER = 'member'                  # a static member of a type declared here
+
+
+def repair_header(stub_dir, source):
+    """The path of a unit's repair header (one per main file)."""
+    digest = hashlib.sha1(os.path.abspath(source).encode(
+        'utf-8', 'surrogateescape')).hexdigest()[:16]
+    stem = re.sub(r'\W', '_', os.path.basename(source))[:40]
+    return os.path.join(stub_dir, REPAIR_DIR, f'{stem}_{digest}.h')
+
+
+def ensure_repair_header(path, source):
+    """Create an empty repair header, so that it can be force-included."""
+    if not os.path.isfile(path):
+        write_atomically(path, _render({}, source))
+
+
+def read_repairs(path):
+    """{(kind, qualified name)} already declared in a repair header."""
+    try:
+        with open(path, encoding='utf-8') as h:
+            text = h.read()
+    except OSError:
+        return set()
+    return set(re.findall(r'^// repair (\S+) (\S+)$', text, re.MULTILINE))
+
+
+def add_repairs(path, source, repairs):
+    """Add declarations to a unit's repair header; return whether it grew."""
+    known = read_repairs(path)
+    if repairs <= known:
+        return False
+    write_atomically(path, _render(known | repairs, source))
+    return True
+
+
+def repairs_from_diagnostics(diagnostics, read_line, texts=(),
+                             declared=frozenset()):
+    """{(kind, qualified name)} that would fix these errors.
+
+    :param diagnostics: (message, file, line, column) of each error
+    :param read_line: returns the text of (file, line), or ''
+    :param texts: the code of the files with errors: a namespace declared
+      here gets the names these use of it at once (clang reports those only
+      once the namespace exists: one parse saved)
+    :param declared: names the package's own code declares (see
+      :func:`declared_names`): never declared again, their errors come
+      from elsewhere
+    """
+    repairs = _repairs(diagnostics, read_line)
+    for kind, name in list(repairs):
+        if kind == NAMESPACE and name not in declared:
+            repairs |= _uses_of_namespace(name, texts)
+    return {r for r in repairs if r[0] and not _declared(r[1], declared)
+            and not any(part in _KEYWORDS for part in r[1].split('::'))}
+
+
+def _declared(name, declared):
+    """Whether the package declares this name (in its own namespace)."""
+    *namespaces, short = name.split('::')
+    if short not in declared:
+        return False
+    # tf2::Transform is missing even if karto::Transform exists: only a
+    # namespace the package opens itself may hold its declaration
+    return not namespaces or namespaces[0] in declared
+
+
+_DECLARATION = re.compile(
+    r'\b(?:class|struct|union|enum(?:\s+class)?|namespace)\s+'
+    r'(?:\w+\s+)?(\w+)\s*[:{;]|'
+    r'\busing\s+(\w+)\s*=|\btypedef\b[^;{}]*?\b(\w+)\s*;|'
+    r'^\s*#\s*define\s+(\w+)', re.MULTILINE)
+
+
+def declared_names(texts):
+    """Names that classes, namespaces, aliases and macros of texts declare."""
+    names = set()
+    for text in texts:
+        for match in _DECLARATION.finditer(text):
+            names.update(g for g in match.groups() if g)
+    return names
+
+
+def _uses_of_namespace(namespace, texts):
+    """(kind, name) of what the texts use after ``namespace::``."""
+    pattern = re.compile(
+        r'(?<![\w:])' + re.escape(namespace).replace('::', r'\s*::\s*') +
+        r'\s*::\s*(\w+)(?:\s*::\s*(\w+))?(.{0,3})')
+    found = set()
+    for text in texts:
+        for match in pattern.finditer(text):
+            name, member, after = match.groups()
+            if name in _KEYWORDS or name == 'template':
+                continue
+            after = '::' if member else after.lstrip()
+            kind, _ = _by_use(name, after, unqualified=False)
+            found.add((kind, f'{namespace}::{name}'))
+            if member and kind == TYPE and member not in _KEYWORDS:
+                found.add((MEMBER, f'{namespace}::{name}::{member}'))
+    return found
+
+
+def _repairs(diagnostics, read_line):
+    repairs = set()
+    for message, file, line, column in diagnostics:
+        text = read_line(file, line) if file else ''
+        after = _after(text, column, message)
+        match = _UNDECLARED.match(message)
+        if match:
+            kind, name = _by_use(match.group(1), after, unqualified=True)
+            # an undeclared lower-case variable is nearly always a local
+            # whose declaration failed (an error of its own): declaring a
+            # global of that name would only hide the cause
+            if kind != OBJECT:
+                repairs.add((kind, name))
+            continue
+        match = _UNKNOWN_TYPE.match(message)
+        if match:
+            name = _qualified(match.group(1), text, column)
+            if _ALL_CAPS.match(name) and '_' in name:
+                # FOO_EXPORT class X, BOOST_CLASS_EXPORT(X): macros of a
+                # header the model lacks, at declaration level
+                repairs.add((MACRO_VOID if after.startswith('(')
+                             else MACRO_EMPTY, name))
+            else:
+                repairs.add((TEMPLATE if after.startswith('<') else TYPE,
+                             name))
+            continue
+        match = _UNKNOWN_TEMPLATE.match(message)
+        if match:
+            repairs.add((TEMPLATE, _qualified(match.group(1), text, column)))
+            continue
+        match = _IN_CLASS.match(message)
+        if match:
+            # a member of a class we declared (added only if we did)
+            repairs.add((MEMBER, f'{match.group(2)}::{match.group(1)}'))
+            continue
+        match = _IN_NAMESPACE.match(message)
+        if match:
+            what, name, namespace = match.groups()
+            if what in ('type', 'class'):
+                kind = TEMPLATE if after.startswith('<') else TYPE
+            elif what == 'template':
+                kind = TEMPLATE
+            else:
+                kind = _by_use(name, after, unqualified=False)[0]
+            repairs.add((kind, f'{namespace}::{name}'))
+            continue
+        match = _UNDEFINED_MACRO.match(message)
+        if match:
+            repairs.add((MACRO_CONDITION, match.group(1)))
+            continue
+        if _OVERRIDE.search(message):
+            repairs.add((NO_OVERRIDE, 'override'))
+            continue
+        if _ARGUMENT_NOT_VALUE.match(message):
+            # FOO_NVP(Base) with FOO_NVP unknown: the macro's argument is a
+            # type; the macro is what is missing
+            before = text[:max(0, column - 1)]
+            macro = re.search(r'\b([A-Z][A-Z0-9_]*)\s*\(\s*$', before)
+            if macro:
+                repairs.add((MACRO_VALUE, macro.group(1)))
+            continue
+        if message.startswith('expected namespace name'):
+            for match in _NAMESPACE_ALIAS.finditer(text):
+                name = (match.group(1) or match.group(2)).rstrip(':')
+                if name:
+                    repairs.add((NAMESPACE, name))
+    return repairs
+
+
+def _qualified(name, text, column):
+    """`ns::Name` when the line qualifies the name clang calls unknown."""
+    before = text[:max(0, column - 1)]
+    match = re.search(r'((?:[A-Za-z_]\w*\s*::\s*)+)$', before)
+    if not match:
+        return name
+    return re.sub(r'\s+', '', match.group(1)) + name
+
+
+def _after(text, column, message):
+    """What follows the name the message is about, on its line."""
+    match = re.search(r"'(\w+)'", message)
+    if not text or not match:
+        return ''
+    name = match.group(1)
+    start = max(0, column - 1)
+    found = text.find(name, start)
+    if found < 0:
+        found = text.find(name)
+    if found < 0:
+        return ''
+    return text[found + len(name):].lstrip()
+
+
+def _by_use(name, after, *, unqualified):
+    """(kind, name) of a name from what follows it."""
+    if after.startswith('::'):
+        # undeclared: a namespace (Eigen::, karto::); a class of the
+        # package would be declared (and never repaired); qualified: by
+        # convention namespaces are lower case, classes CamelCase
+        if _CAMEL.match(name) and not _ALL_CAPS.match(name) and \
+                not unqualified:
+            return TYPE, name
+        return NAMESPACE, name
+    if after.startswith('('):
+        if _ALL_CAPS.match(name) and unqualified:
+            return MACRO_VALUE, name
+        return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
+                else FUNCTION), name
+    if after.startswith('<') and not after.startswith(('<<', '<=')):
+        return TEMPLATE, name
+    if _ALL_CAPS.match(name):
+        return CONSTANT, name
+    if _CAMEL.match(name) or re.match(r'(?:[&*]\s*)?[A-Za-z_]', after):
+        # CamelCase, or a name followed by a name: `ns::archive ar(...)`
+        return TYPE, name
+    return OBJECT, name
+
+
+def _render(repairs, source):
+    """The repair header holding these declarations."""
+    lines = [
+        f'{_MARKER} for {_printable(source)}',
+        "// declarations clang said were missing (see colcon_rsia's repair.py)",
+        '#pragma once', '#include <rsia_model/message.h>', '']
+    constant_values = {}
+    members = {}
+    for kind, name in repairs:
+        if kind == MEMBER:
+            owner, member = name.rsplit('::', 1)
+            members.setdefault(owner, set()).add(member)
+    for kind, name in sorted(repairs):
+        lines.append(f'// repair {kind} {name}')
+        *namespaces, short = name.split('::')
+        if kind == MEMBER:
+            continue  # in its type's declaration
+        if kind == NO_OVERRIDE:
+            lines += ['#define override', '#define final']
+            continue
+        if kind.startswith('macro-'):
+            definition = {
+                MACRO_VALUE: f'{short}(...) (::rsia_model::any_value())',
+                MACRO_VOID: f'{short}(...)', MACRO_EMPTY: short,
+                MACRO_CONDITION: f'{short}(...) 1'}[kind]
+            lines += [f'#ifndef {short}', f'#define {definition}', '#endif']
+            continue
+        if kind == NAMESPACE:
+            namespaces, body = namespaces + [short], ''
+        elif kind in (TYPE, TEMPLATE):
+            head = 'template <class...> ' if kind == TEMPLATE else ''
+            body = ''.join(
+                f' static ::rsia_model::Any {m};'
+                for m in sorted(members.get(name, ())))
+            body = (f'{head}struct {short} : ::rsia_model::Unknown '
+                    f'{{ using ::rsia_model::Unknown::Unknown;{body} }};')
+        elif kind == FUNCTION:
+            body = (f'template <class... RsiaArgs> ::rsia_model::Any& '
+                    f'{short}(RsiaArgs&&...);')
+        elif kind == CONSTANT:
+            value = constant_values.setdefault(name, len(constant_values) + 1)
+            body = f'constexpr int {short} = {value};'
+        else:
+            body = f'extern ::rsia_model::Any {short};'
+        opening = ' '.join(f'namespace {n} {{' for n in namespaces)
+        closing = '}' * len(namespaces)
+        guard = '__'.join(['RSIA_REPAIRED'] + namespaces + [short])
+        lines += [f'#ifndef {short}', f'#define {guard}',
+                  f'{opening} {body} {closing}'.strip(), '#endif']
+    lines.append('')
+    return '\n'.join(lines)
+
+
+def _printable(text):
+    return text.encode('ascii', 'replace').decode('ascii')

@@ -1,0 +1,73 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+import json
+import os
+
+from colcon_core.logging import colcon_logger
+from colcon_core.package_selection import get_packages
+from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.subverb import add_workspace_arguments
+from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+
+logger = colcon_logger.getChild(__name__)
+
+# the exit code when --fail-under is not met (as --fail-on's)
+CHECK_FAILED = 2
+
+
+class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
+    """Show what the analysis understood of each package, and what not."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def add_arguments(self, *, parser):  # noqa: D102
+        add_workspace_arguments(parser)
+        parser.add_argument(
+            '--format', choices=('text', 'json'), default='text',
+            help='Output format (default: text)')
+        parser.add_argument(
+            '--missed', action='store_true',
+            help='List every call site without a fact (text format)')
+        parser.add_argument(
+            '--fail-under', type=float, metavar='PERCENT', default=None,
+            help='Exit with 2 when fewer than PERCENT %% of the publisher '
+                 'and subscription call sites have a fact, or a package '
+                 'failed (for CI)')
+
+    def main(self, *, context):  # noqa: D102
+        from colcon_rsia import store
+        from colcon_rsia.coverage import FAILED
+        from colcon_rsia.coverage import report_to_text
+        from colcon_rsia.coverage import workspace_report
+        args = context.args
+        build_base = os.path.abspath(args.build_base)
+        selected = [d.descriptor.name for d in get_packages(args)
+                    if d.selected]
+        summaries = []
+        failures = {}
+        not_analysed = []
+        for name in selected:
+            package_build = os.path.join(build_base, name)
+            failure = store.read_failure(package_build)
+            if failure is not None:
+                failures[name] = failure
+                continue
+            try:
+                summaries.append(store.read_summary(
+                    store.summary_path(package_build)))
+            except store.SummaryError:
+                not_analysed.append(name)
+        report = workspace_report(summaries, failures, not_analysed)
+        if args.format == 'json':
+            print(json.dumps(report, indent=2, sort_keys=True))
+        else:
+            print(report_to_text(report, missed=args.missed), end='')
+        if args.fail_under is not None and (
+                report['total']['percent'] < args.fail_under or
+                any(p['status'] == FAILED for p in report['packages'])):
+            return CHECK_FAILED
+        return 0

@@ -1,0 +1,248 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The self-completing model mode, and failures that stay local."""
+
+from colcon_rsia import analysis
+from colcon_rsia.frontend import cpp
+from colcon_rsia.frontend import repair
+import pytest
+
+# a ROS 2 node written against libraries the model does not have: OpenCV,
+# Eigen, a base class from another library, a generated visibility header
+DETECTOR = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <sensor_msgs/msg/image.hpp>
+#include <opencv2/core.hpp>
+#include <Eigen/Core>
+#include <vision_core/filter_base.hpp>
+#include "acme_vision/visibility_control.h"
+
+namespace acme_vision
+{
+
+class ACME_VISION_PUBLIC Detector
+  : public rclcpp::Node, public vision_core::FilterBase<float>
+{
+public:
+  Detector() : Node("detector")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("detections", 10);
+    sub_ = create_subscription<sensor_msgs::msg::Image>(
+      "image", 10,
+      [this](sensor_msgs::msg::Image::ConstSharedPtr msg) { onImage(msg); });
+  }
+
+  void configure() override { threshold_ = CV_8UC1; }
+
+private:
+  void onImage(sensor_msgs::msg::Image::ConstSharedPtr msg)
+  {
+    cv::Mat_<float> kernel(3, 3);
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    geometry::shift(kernel, offset);
+#if RSIA_TEST_VERSION_GTE(2, 0, 0)
+    std_msgs::msg::String out;
+    pub_->publish(out);
+#endif
+  }
+
+  int threshold_ = 0;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<sensor_msgs::msg::Image>::SharedPtr sub_;
+};
+
+}  // namespace acme_vision
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<acme_vision::Detector>());
+  return 0;
+}
+"""
+
+CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(acme_vision)
+add_executable(detector_node src/detector_node.cpp)
+"""
+
+
+def _package(tmp_path):
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(DETECTOR)
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    return package
+
+
+def _analyze(package, build_base):
+    return analysis.analyze_package(
+        name='acme_vision', path=str(package), build_base=str(build_base),
+        jobs=1, header_mode='model',
+        workspace_package_dirs=[str(package)])
+
+
+def test_model_mode_repairs_what_unknown_libraries_leave_undeclared(
+        tmp_path):
+    package = _package(tmp_path)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+
+    [unit] = summary.coverage.units
+    assert unit.file == 'src/detector_node.cpp'
+    assert unit.package_errors == 0, summary.diagnostics
+    assert unit.repair_rounds >= 1
+    [node] = summary.nodes
+    assert node.id == 'acme_vision/detector_node'
+    [publisher] = node.publishers
+    assert publisher.topic == 'detections'
+    # published from the subscription's callback, inside the #if that
+    # only the repaired function-like macro lets through
+    assert publisher.label == 'dependent'
+    assert len(publisher.publish_sites) == 1
+    assert [s.topic for s in node.subscribers] == ['image']
+    recorded = {(c.role, c.recorded) for c in summary.coverage.call_sites}
+    assert recorded == {('publisher', 'node'), ('subscriber', 'node')}
+
+    # the repairs are remembered: a second analysis (no cache) needs none
+    again = analysis.analyze_package(
+        name='acme_vision', path=str(package),
+        build_base=str(tmp_path / 'build' / 'acme_vision'), jobs=1,
+        header_mode='model', workspace_package_dirs=[str(package)],
+        use_cache=False)
+    [unit] = again.coverage.units
+    assert (unit.package_errors, unit.repair_rounds) == (0, 0)
+
+
+def _lines(text):
+    lines = text.split('\n')
+
+    def read_line(file, line):
+        return lines[line - 1]
+    return read_line
+
+
+@pytest.mark.parametrize('message,line,column,expected', [
+    ("use of undeclared identifier 'cv'", 'cv::Mat m;', 1,
+     {('namespace', 'cv')}),
+    ("use of undeclared identifier 'CV_8UC1'", 'int t = CV_8UC1;', 9,
+     {('constant', 'CV_8UC1')}),
+    ("use of undeclared identifier 'FMT_COMPILE'",
+     'auto s = fmt::format(FMT_COMPILE("{}"), x);', 22,
+     {('macro-value', 'FMT_COMPILE')}),
+    # a local whose declaration failed: its own error says why
+    ("use of undeclared identifier 'scan'", 'use(scan);', 5, set()),
+    ("unknown type name 'FOO_PUBLIC'", 'class FOO_PUBLIC Bar {', 7,
+     {('macro-empty', 'FOO_PUBLIC')}),
+    ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
+     {('macro-void', 'BOOST_CLASS_EXPORT')}),
+    ("unknown template name 'Controller'",
+     'class C : public controller_interface::Controller<Iface> {', 40,
+     {('template', 'controller_interface::Controller')}),
+    ("no type named 'Vector3d' in namespace 'Eigen'",
+     'Eigen::Vector3d v;', 8, {('type', 'Eigen::Vector3d')}),
+    ("no member named 'MatchedInfo' in namespace 'rclcpp'",
+     'rclcpp::MatchedInfo info;', 9, {('type', 'rclcpp::MatchedInfo')}),
+    ("no member named 'get_value' in namespace 'acme'",
+     'acme::get_value(3);', 7, {('function', 'acme::get_value')}),
+    ("function-like macro 'RCLCPP_VERSION_GTE' is not defined",
+     '#if RCLCPP_VERSION_GTE(28, 0, 0)', 5,
+     {('macro-condition', 'RCLCPP_VERSION_GTE')}),
+    ("only virtual member functions can be marked 'override'",
+     'void f() override;', 10, {('no-override', 'override')}),
+    ('expected namespace name', 'namespace bacc = boost::accumulators;', 18,
+     {('namespace', 'boost::accumulators')}),
+])
+def test_repairs_from_one_diagnostic(message, line, column, expected):
+    found = repair.repairs_from_diagnostics(
+        [(message, 'a.cpp', 1, column)], _lines(line))
+    assert found == expected
+
+
+def test_a_new_namespace_gets_what_the_code_uses_of_it():
+    text = ('karto::Pose2 pose;\n'
+            'karto::LaserRangeFinder * laser = karto::make(3);\n'
+            'int n = karto::MAX_RANGE + karto::Grid::Size;\n')
+    found = repair.repairs_from_diagnostics(
+        [("use of undeclared identifier 'karto'", 'a.cpp', 1, 1)],
+        _lines(text), texts=[text])
+    assert found == {
+        ('namespace', 'karto'), ('type', 'karto::Pose2'),
+        ('type', 'karto::LaserRangeFinder'), ('function', 'karto::make'),
+        ('constant', 'karto::MAX_RANGE'), ('type', 'karto::Grid'),
+        ('member', 'karto::Grid::Size')}
+
+
+def test_names_the_package_declares_are_never_repaired():
+    header = 'namespace karto {\nclass Transform\n{\n};\n}\n'
+    declared = repair.declared_names([header])
+    found = repair.repairs_from_diagnostics(
+        [("no type named 'Transform' in namespace 'karto'", 'a.cpp', 1, 8),
+         ("no type named 'Transform' in namespace 'tf2'", 'a.cpp', 2, 6)],
+        _lines('karto::Transform a;\ntf2::Transform b;'), declared=declared)
+    # karto is the package's own namespace; tf2's Transform is missing
+    assert found == {('type', 'tf2::Transform')}
+
+
+def test_a_failing_declaration_loses_only_itself(tmp_path, monkeypatch):
+    package = _package(tmp_path)
+    original = cpp._Walker._function
+
+    def failing(walker, cursor):
+        if cursor.spelling == 'onImage':
+            raise RuntimeError('boom')
+        return original(walker, cursor)
+    monkeypatch.setattr(cpp._Walker, '_function', failing)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [node] = summary.nodes
+    # the constructor's facts survive; the publish site was in onImage
+    assert [p.topic for p in node.publishers] == ['detections']
+    assert node.publishers[0].publish_sites == []
+    problems = [d for d in summary.diagnostics if 'onImage' in d]
+    assert len(problems) == 1
+    assert 'src/detector_node.cpp:' in problems[0]
+    assert 'internal error: RuntimeError: boom' in problems[0]
+
+
+def test_a_failing_unit_loses_only_itself(tmp_path, monkeypatch):
+    package = _package(tmp_path)
+    (package / 'src' / 'other.cpp').write_text(
+        '#include <ros/ros.h>\nvoid advertise_status(ros::NodeHandle& nh)\n'
+        '{\n  nh.advertise<std_msgs::String>("status", 1);\n}\n')
+    original = cpp.extract_facts
+
+    def failing(tu, *, package_path, source):
+        if source == 'src/other.cpp':
+            raise RuntimeError('boom')
+        return original(tu, package_path=package_path, source=source)
+    monkeypatch.setattr(cpp, 'extract_facts', failing)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    assert [n.id for n in summary.nodes] == ['acme_vision/detector_node']
+    assert any(d.startswith('src/other.cpp: not analysed (internal error: '
+                            'RuntimeError: boom)')
+               for d in summary.diagnostics)
+
+
+def test_unresolved_callees_are_no_crash(tmp_path):
+    # a call libclang cannot resolve (its callee undeclared) taking a
+    # function of the package: the call's cursor references nothing
+    package = tmp_path / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    source = package / 'src' / 'node.cpp'
+    source.write_text(
+        '#include <ros/ros.h>\n'
+        'void onTick(const ros::TimerEvent&) {}\n'
+        'int main(int argc, char** argv)\n'
+        '{\n'
+        '  ros::init(argc, argv, "n");\n'
+        '  ros::NodeHandle nh;\n'
+        '  undeclared_helper(onTick, &onTick);\n'
+        '  ros::Publisher p = nh.advertise<std_msgs::String>("out", 1);\n'
+        '}\n')
+    summary = analysis.analyze_package(
+        name='pkg', path=str(package), build_base=str(tmp_path / 'build'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    assert not [d for d in summary.diagnostics if 'internal error' in d]
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['out']
