@@ -215,6 +215,8 @@ def graph_section(data, drawing):
         focus = ('<button id="focus-impact" type="button" aria-pressed="true"'
                  ' title="dim what the change does not reach">impact focus'
                  '</button>')
+    # a small graph gets a box no higher than it needs
+    box_height = max(300.0, drawing.height + 40)
     collapse = ''
     if drawing.clusters:
         collapse = ('<button id="collapse-all" type="button" '
@@ -231,9 +233,11 @@ autocomplete="off" aria-label="find a node or topic">
 edge: its evidence &middot; click a cluster's name: hide or show it</span>
 </div>
 <div class="graph-main">
-<div id="graph-box">{graph_svg(data, drawing)}</div>
-<aside id="graph-panel" aria-live="polite"><p class="muted">Click a node, a
-topic or an edge to see its evidence (<code>file:line</code>).</p></aside>
+<div id="graph-box" style="height: min(70vh, {_fmt(box_height)}px)">
+{graph_svg(data, drawing)}</div>
+<aside class="graph-side"><div id="graph-panel" aria-live="polite">
+<p class="muted">Click a node, a topic or an edge to see its evidence
+(<code>file:line</code>).</p></div></aside>
 </div>
 <script type="application/json" id="graph-data">{_json_for_script(graph_data(data))}</script>"""
 
