@@ -19,7 +19,6 @@ import time
 from colcon_rsia import model
 from colcon_rsia.graph import graph_to_json
 from colcon_rsia.report import build_report
-from colcon_rsia.report import run_dot
 from colcon_rsia.report import write_report
 from colcon_rsia.report.html import CSP
 from colcon_rsia.report.html import render_html
@@ -71,11 +70,13 @@ def _report(system, directory, changed=None, **kwargs):
 def test_report_writes_every_file(system, tmp_path):
     written, notes = _report(system, tmp_path, [LASER])
     expected = {'index.html', 'graph.dot', 'graph.json', 'impact.json',
-                'summary.md'}
+                'summary.md', 'graph.svg'}
     if shutil.which('dot'):
-        expected.add('graph.svg')
+        assert notes == []
     else:
-        assert notes == ['Graphviz dot is not on PATH: graph.svg not written']
+        assert notes == ["Graphviz dot is not on PATH: the page's graph is "
+                         'drawn by the simple built-in layout (top to '
+                         'bottom, no clusters)']
     assert set(written) == expected
     assert set(os.listdir(tmp_path)) == expected
 
@@ -107,6 +108,14 @@ def test_report_writes_every_file(system, tmp_path):
         'fillcolor="#e9c46a"];' in dot
     assert '"node:sysbot_navigation/planner" -> "topic:/plan" ' \
         '[style=dashed, label="independent"];' in dot
+
+    # graph.svg: the page's drawing, standalone
+    svg = (tmp_path / 'graph.svg').read_text()
+    assert svg.startswith('<svg id="graph" xmlns="http://www.w3.org/2000/svg" ')
+    assert '<style>' in svg and 'svg .edge.independent' in svg
+    assert svg.count('<g class="vertex node') == len(system.instances)
+    assert f'<g class="vertex node changed" data-name="{LASER}"' in svg
+    assert svg.count('<path class="edge') == system.graph.number_of_edges()
 
 
 def test_report_without_changes_has_no_impact(system, tmp_path):
@@ -216,27 +225,6 @@ def test_layout_is_deterministic_and_layered(system):
             assert left.x + left.width < right.x  # no overlap
 
 
-def test_dot_is_optional_and_bounded(tmp_path):
-    dot = tmp_path / 'graph.dot'
-    dot.write_text('digraph x {}\n')
-    svg = tmp_path / 'graph.svg'
-    if not shutil.which('dot'):
-        assert run_dot(str(dot), str(svg)) == \
-            'Graphviz dot is not on PATH: graph.svg not written'
-    fake = tmp_path / 'fake-dot'
-    fake.write_text('#!/bin/sh\necho "<svg/>" > "$3"\n')
-    fake.chmod(0o755)
-    assert run_dot(str(dot), str(svg), executable=str(fake)) is None
-    assert svg.read_text() == '<svg/>\n'
-    broken = tmp_path / 'broken-dot'
-    broken.write_text('#!/bin/sh\necho "syntax error in line 1" >&2\nexit 1\n')
-    broken.chmod(0o755)
-    svg.unlink()
-    note = run_dot(str(dot), str(svg), executable=str(broken))
-    assert note == 'dot failed (1): syntax error in line 1; graph.svg not ' \
-        'written'
-
-
 # --- the command line --------------------------------------------------------
 
 def _rsia(workspace, *args):
@@ -255,7 +243,7 @@ def test_report_subverb(system_workspace, tmp_path):
         (out / 'summary.md').read_text()
     both = _rsia(system_workspace, 'report', '--changed', LASER, '--since',
                  'HEAD', '--output', str(out))
-    assert both.returncode != 0
+    assert both.returncode == 1  # a usage error: 2 is --fail-on's
     assert 'not allowed with argument' in both.stderr
 
 
@@ -411,7 +399,7 @@ def test_since_on_the_command_line(git_workspace, tmp_path):
         'repository' in bad.stderr
     assert 'Traceback' not in bad.stderr
     exclusive = _git_colcon(tmp_path, 'impact', '--since', 'HEAD', '--all')
-    assert exclusive.returncode != 0
+    assert exclusive.returncode == 1
     assert 'not allowed with argument' in exclusive.stderr
 
 
@@ -449,8 +437,11 @@ ROWS_JS = """(function () {
 })()"""
 
 PAGE_JS = """(function () {
-  var graph = document.getElementById('graph').getBBox();
-  var chart = document.getElementById('chart').getBBox();
+  // the drawing, without the view's pan and zoom
+  var graph = document.getElementById('graph-view').getBBox();
+  var box = document.getElementById('graph-box').getBoundingClientRect();
+  var impact = document.querySelectorAll(
+    '#graph g.vertex.changed, #graph g.vertex.rate');
   function classes(selector) {
     return Array.prototype.map.call(document.querySelectorAll(selector),
       function (e) { return e.getAttribute('data-name'); }).sort();
@@ -465,8 +456,15 @@ PAGE_JS = """(function () {
     dashed: getComputedStyle(
       document.querySelector('#graph path.edge.independent')).strokeDasharray,
     graph: [graph.width, graph.height],
-    chart: [chart.width, chart.height],
-    bars: document.querySelectorAll('#chart g.chart-row rect.bar').length,
+    impactOnScreen: impact.length > 0 && Array.prototype.every.call(
+      impact, function (v) {
+        var r = v.getBoundingClientRect();
+        return r.left >= box.left && r.right <= box.right &&
+          r.top >= box.top && r.bottom <= box.bottom;
+      }),
+    impactRows: document.querySelectorAll('#all-impact tbody tr').length,
+    bars: document.querySelectorAll('#all-impact .bar').length,
+    overflow: document.documentElement.scrollWidth - window.innerWidth,
     changed: classes('#graph g.vertex.changed'),
     rate: classes('#graph g.vertex.rate'),
     traditional: classes('#graph g.vertex.traditional'),
@@ -518,15 +516,19 @@ def test_index_html_in_headless_chromium(system, tmp_path):
         assert state['rendered'] == 'true'  # the inline script ran
         assert state['nodeRows'] == node_rows
         assert state['topicRows'] == len(graph['topics'])
-        assert state['rows'] == node_rows + len(graph['topics'])
+        assert state['rows'] == node_rows + len(graph['topics']) + \
+            len(EXPECTED['all'])
         assert state['count'] == f'{state["rows"]} of {state["rows"]} rows'
         assert state['vertices'] == len(system.instances) + \
             len(graph['topics'])
         assert state['edges'] == system.graph.number_of_edges()
         assert state['dashed'] not in ('', 'none')  # the CSS applied
-        assert state['graph'][0] > 300 and state['graph'][1] > 300
-        assert state['chart'][0] > 300 and state['chart'][1] > 100
+        # laid out left to right: wider than high
+        assert state['graph'][0] > 600 and state['graph'][1] > 150
+        assert state['impactOnScreen']  # the first view shows the impact
+        assert state['impactRows'] == len(EXPECTED['all'])
         assert state['bars'] == 2 * len(EXPECTED['all'])
+        assert state['overflow'] <= 0  # the tables fit the window
         assert state['changed'] == [LASER]
         assert state['rate'] == LASER_CASE['rate_impact']
         assert state['traditional'] == sorted(

@@ -5,9 +5,12 @@
 :func:`write_report` writes
 
 * ``index.html``: self-contained (inline CSS, JS and SVG; nothing is
-  fetched): the system graph, per-node and per-topic tables, the all-nodes
-  impact chart and a filter box;
-* ``graph.dot`` and, when Graphviz ``dot`` is on PATH, ``graph.svg``;
+  fetched): the system graph (laid out by Graphviz ``dot`` when it is on
+  PATH, see :mod:`colcon_rsia.report.drawing`) with pan, zoom, search and
+  an evidence panel, the per-node impact table, per-node and per-topic
+  tables, and a filter box;
+* ``graph.svg``: the page's drawing of the graph on its own;
+* ``graph.dot``: the graph for Graphviz;
 * ``graph.json`` (graph@1) and, when nodes changed, ``impact.json``
   (impact@1);
 * ``summary.md``: a short Markdown summary for a pull-request comment.
@@ -18,8 +21,6 @@ from dataclasses import dataclass
 from dataclasses import field
 import json
 import os
-import shutil
-import subprocess
 from typing import Dict
 from typing import List
 from typing import Optional
@@ -30,8 +31,6 @@ from colcon_rsia.graph import graph_to_dot
 from colcon_rsia.graph import graph_to_json
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
-
-DOT_TIMEOUT_S = 60
 
 # the status of a node instance in a report
 CHANGED = 'changed'
@@ -192,28 +191,6 @@ def build_report(system, *, changed=None, reasons=None, since=None):
     return data
 
 
-def run_dot(dot_path, svg_path, *, executable=None):
-    """Render graph.svg with Graphviz; return a note when it could not."""
-    executable = executable or shutil.which('dot')
-    if not executable:
-        return 'Graphviz dot is not on PATH: graph.svg not written'
-    try:
-        result = subprocess.run(
-            [executable, '-Tsvg', '-o', svg_path, dot_path],
-            capture_output=True, timeout=DOT_TIMEOUT_S)
-    except subprocess.TimeoutExpired:
-        return f'dot did not finish within {DOT_TIMEOUT_S} s: graph.svg ' \
-            'not written'
-    except OSError as e:
-        return f'dot could not be run ({e.strerror}): graph.svg not written'
-    if result.returncode != 0 or not os.path.isfile(svg_path):
-        message = result.stderr.decode('utf-8', 'replace').strip()
-        return f'dot failed ({result.returncode}): ' \
-            f"{message.splitlines()[-1] if message else 'no message'}; " \
-            'graph.svg not written'
-    return None
-
-
 def write_report(system, output, *, changed=None, reasons=None, since=None,
                  dot_executable=None):
     """Write the report files into the directory `output`.
@@ -222,11 +199,15 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     :param reasons: {instance id: [why it counts as changed]}
     :param since: the ``--since`` revision, when the changes came from git
     :param dot_executable: Graphviz ``dot``; default: ``dot`` on PATH
-    :returns: (names of the files written, notes on what was not written)
+    :returns: (names of the files written, notes on what could not be
+      done as usual)
     """
+    from colcon_rsia.report.drawing import draw_system
+    from colcon_rsia.report.html import graph_svg
     from colcon_rsia.report.html import render_html
     from colcon_rsia.report.markdown import render_summary
     data = build_report(system, changed=changed, reasons=reasons, since=since)
+    drawing, layout_note = draw_system(system, dot_executable=dot_executable)
     os.makedirs(output, exist_ok=True)
     written = []
     notes = []
@@ -236,7 +217,7 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
             h.write(text)
         written.append(name)
 
-    write('index.html', render_html(data))
+    write('index.html', render_html(data, drawing))
     impact = data.impact or {}
     write('graph.dot', graph_to_dot(
         system, changed=set(data.changed or ()),
@@ -250,14 +231,9 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     else:
         stale.append('impact.json')
     write('summary.md', render_summary(data))
-    svg = os.path.join(output, 'graph.svg')
-    note = run_dot(os.path.join(output, 'graph.dot'), svg,
-                   executable=dot_executable)
-    if note is None:
-        written.append('graph.svg')
-    else:
-        notes.append(note)
-        stale.append('graph.svg')
+    write('graph.svg', graph_svg(data, drawing, standalone=True) + '\n')
+    if layout_note:
+        notes.append(layout_note)
     # files of an earlier report that this one does not have
     for name in stale:
         try:

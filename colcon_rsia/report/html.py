@@ -8,14 +8,14 @@ the summaries is escaped.
 """
 
 from html import escape
+import json
+import os
 
 from colcon_rsia import model
 from colcon_rsia.report import CHANGED
-from colcon_rsia.report import edge_patterns
 from colcon_rsia.report import RATE
 from colcon_rsia.report import TRADITIONAL
 from colcon_rsia.report.layout import BOX_HEIGHT
-from colcon_rsia.report.layout import layered_layout
 
 CSP = ("default-src 'none'; style-src 'unsafe-inline'; "
        "script-src 'unsafe-inline'; img-src data:")
@@ -26,123 +26,12 @@ STATUS_TEXT = {
     TRADITIONAL: 'traditional only',
 }
 
-STYLE = """
-:root { --changed: #219ebc; --rate: #e76f51; --traditional: #e9c46a;
-  --ink: #1d1d1f; --muted: #6b6b70; --line: #d7d7db; --stop: #7b2cbf; }
-* { box-sizing: border-box; }
-body { font: 14px/1.45 "DejaVu Sans", "Helvetica Neue", Arial, sans-serif;
-  color: var(--ink); margin: 0 auto; padding: 16px 24px 48px;
-  max-width: 1600px; }
-h1 { font-size: 22px; margin: 4px 0 2px; }
-h2 { font-size: 17px; margin: 28px 0 8px; border-bottom: 1px solid
-  var(--line); padding-bottom: 4px; }
-.meta, .muted { color: var(--muted); }
-code { font: 12px "DejaVu Sans Mono", Menlo, monospace; }
-.facts { display: grid; grid-template-columns: max-content 1fr;
-  gap: 2px 14px; margin: 10px 0; }
-.facts dt { font-weight: bold; }
-.facts dd { margin: 0; }
-.legend { display: flex; flex-wrap: wrap; gap: 14px; margin: 6px 0;
-  font-size: 13px; }
-.swatch { display: inline-block; width: 14px; height: 14px;
-  border: 1px solid #555; vertical-align: -2px; margin-right: 4px;
-  border-radius: 3px; }
-.swatch.changed { background: var(--changed); }
-.swatch.rate { background: var(--rate); }
-.swatch.traditional { background: var(--traditional); }
-.swatch.unaffected { background: #fff; }
-.swatch.dashed { border: 0; border-top: 2px dashed #555; height: 0;
-  width: 22px; vertical-align: 4px; border-radius: 0; }
-.scroll { overflow: auto; border: 1px solid var(--line); border-radius: 6px;
-  background: #fcfcfd; }
-svg text { font: 12px "DejaVu Sans", Arial, sans-serif; fill: var(--ink); }
-svg .vertex rect { fill: #fff; stroke: #555; stroke-width: 1.2; }
-svg .vertex.topic rect { fill: #f1f1f4; stroke: #888; }
-svg .vertex.topic.crossed rect { stroke: var(--rate); stroke-width: 2; }
-svg .vertex.changed rect { fill: var(--changed); stroke: #023047;
-  stroke-width: 2.5; }
-svg .vertex.rate rect { fill: var(--rate); stroke: #8a2d16;
-  stroke-width: 2; }
-svg .vertex.traditional rect { fill: var(--traditional); }
-svg .vertex.dimmed { opacity: 0.2; }
-svg .edge { fill: none; stroke: #8a8a90; stroke-width: 1.3; }
-svg .edge.independent { stroke-dasharray: 6 4; }
-svg .edge.crossed { stroke: var(--rate); stroke-width: 2.2; }
-svg .edge.stopped { stroke: var(--stop); stroke-width: 2.2; }
-svg .arrow path { fill: #8a8a90; }
-svg #arrow-crossed path { fill: var(--rate); }
-svg #arrow-stopped path { fill: var(--stop); }
-svg .bar.rate { fill: var(--rate); }
-svg .bar.traditional { fill: #9aa0a6; }
-svg .grid { stroke: #e4e4e8; }
-svg .average { stroke-width: 1.5; stroke-dasharray: 5 3; }
-svg .average.rate { stroke: var(--rate); }
-svg .average.traditional { stroke: #5f6368; }
-svg .value { font-size: 10px; fill: var(--muted); }
-.filter { position: sticky; top: 0; background: #fff; padding: 8px 0;
-  z-index: 2; display: flex; gap: 12px; align-items: center; }
-.filter input { font: inherit; padding: 5px 8px; width: 420px;
-  border: 1px solid #aaa; border-radius: 4px; }
-table { border-collapse: collapse; width: 100%; font-size: 13px; }
-th, td { border-bottom: 1px solid var(--line); padding: 4px 8px;
-  text-align: left; vertical-align: top; }
-th { background: #f4f4f6; position: sticky; top: 46px; }
-td ul { margin: 0; padding-left: 16px; }
-td.nowrap { white-space: nowrap; }
-tr.changed td:first-child { box-shadow: inset 5px 0 var(--changed); }
-tr.rate td:first-child { box-shadow: inset 5px 0 var(--rate); }
-tr.traditional td:first-child { box-shadow: inset 5px 0 var(--traditional); }
-.label-independent { color: #1b7f3b; font-weight: bold; }
-.label-dependent { color: #a4161a; font-weight: bold; }
-"""
+ASSETS = os.path.dirname(os.path.abspath(__file__))
 
-SCRIPT = r"""
-(function () {
-  'use strict';
-  var input = document.getElementById('filter');
-  var count = document.getElementById('filter-count');
-  var rows = Array.prototype.slice.call(
-    document.querySelectorAll('tr[data-filter]'));
-  var vertices = Array.prototype.slice.call(
-    document.querySelectorAll('#graph g.vertex'));
-  var tables = Array.prototype.slice.call(
-    document.querySelectorAll('table[data-filterable]'));
-  var texts = rows.map(function (row) {
-    return row.textContent.toLowerCase();
-  });
-  function matches(text, words) {
-    return words.every(function (word) { return text.indexOf(word) >= 0; });
-  }
-  function apply() {
-    var words = input.value.trim().toLowerCase().split(/\s+/)
-      .filter(function (word) { return word.length > 0; });
-    var shown = 0;
-    rows.forEach(function (row, index) {
-      var match = matches(texts[index], words);
-      row.hidden = !match;
-      if (match) { shown += 1; }
-    });
-    vertices.forEach(function (vertex) {
-      var name = (vertex.getAttribute('data-name') || '').toLowerCase();
-      vertex.classList.toggle(
-        'dimmed', words.length > 0 && !matches(name, words));
-    });
-    tables.forEach(function (table) {
-      table.setAttribute('data-shown', String(
-        table.querySelectorAll('tr[data-filter]:not([hidden])').length));
-    });
-    count.textContent = shown + ' of ' + rows.length + ' rows';
-    document.body.setAttribute('data-shown-rows', String(shown));
-  }
-  input.addEventListener('input', apply);
-  // '#filter=words' in the address fills the box
-  var preset = /^#filter=(.*)$/.exec(window.location.hash);
-  if (preset) { input.value = decodeURIComponent(preset[1]); }
-  apply();
-  document.body.setAttribute('data-rows', String(rows.length));
-  document.body.setAttribute('data-rendered', 'true');
-})();
-"""
+
+def _asset(name):
+    with open(os.path.join(ASSETS, name), encoding='utf-8') as h:
+        return h.read()
 
 
 def _e(text):
@@ -155,169 +44,233 @@ def _fmt(number):
 
 # --- the graph ------------------------------------------------------------
 
-def graph_svg(data):
-    """The system graph as inline SVG (no xmlns: it is parsed as HTML)."""
-    system = data.system
-    layout = layered_layout(system.graph)
+ARROWS = ('arrow', 'arrow-crossed', 'arrow-stopped')
+
+
+def _json_for_script(value):
+    """JSON safe inside a ``<script type="application/json">`` element."""
+    return json.dumps(value, separators=(',', ':'), sort_keys=True) \
+        .replace('<', '\\u003c').replace('>', '\\u003e') \
+        .replace('&', '\\u0026')
+
+
+def graph_data(data):
+    """What the evidence panel shows, by node id and topic name."""
+    nodes = {}
+    for instance in data.system.instances.values():
+        why = data.via.get(instance.id) or \
+            '; '.join(data.reasons.get(instance.id, []))
+        nodes[instance.id] = {
+            'status': data.status.get(instance.id, ''),
+            'why': why,
+            'exe': f'{instance.package}/{instance.executable}',
+            'fqn': instance.fqn,
+            'analysed': instance.node is not None,
+            'pub': [[
+                entry['resolved'] or f"{entry['publisher'].topic} "
+                '(not resolved)',
+                entry['publisher'].label, entry['publisher'].pattern,
+                entry['publisher'].rate_hz, entry['publisher'].location,
+                [[e.kind, e.location, e.detail]
+                 for e in entry['publisher'].evidence]]
+                for entry in instance.publishers],
+            'sub': [[
+                entry['resolved'] or f"{entry['subscriber'].topic} "
+                '(not resolved)',
+                entry['subscriber'].location, entry['subscriber'].callback]
+                for entry in instance.subscribers],
+        }
+    graph = data.system.graph
+    topics = {}
+    for topic in data.graph['topics']:
+        vertex = ('topic', topic['name'])
+        topics[topic['name']] = {
+            'pub': [[p, graph.edges[('node', p), vertex].get(
+                'label', model.DEPENDENT)] for p in topic['publishers']],
+            'sub': topic['subscribers'],
+        }
+    return {'nodes': nodes, 'topics': topics}
+
+
+def _svg_style():
+    """The rules of page.css between ``graph.svg: begin`` and ``end``."""
+    css = _asset('page.css')
+    parts = []
+    for chunk in css.split('/* graph.svg: begin */')[1:]:
+        parts.append(chunk.split('/* graph.svg: end */')[0].strip())
+    return '\n'.join(parts)
+
+
+def graph_svg(data, drawing, *, standalone=False):
+    """The system graph as SVG.
+
+    Inline in the page it has no xmlns (it is parsed as HTML) and fills its
+    box; `standalone` (graph.svg) adds the namespace, its size and its
+    style. With changed nodes, what the change does not reach carries the
+    class ``faded`` (dimmed while the impact focus is on).
+    """
+    focus = data.changed is not None
     crossed_topics = {t for _, t in data.crossed if t[0] == 'topic'}
-    stopped = {(('node', s.node), ('topic', s.topic)) for s in data.stopped}
-    width, height = _fmt(layout.width), _fmt(layout.height)
+    stopped_edges = {(('node', s.node), ('topic', s.topic))
+                     for s in data.stopped}
+    stopped_topics = {('topic', s.topic) for s in data.stopped}
+    width, height = _fmt(drawing.width), _fmt(drawing.height)
+    size = ''
+    if standalone:
+        size = (f'xmlns="http://www.w3.org/2000/svg" width="{width}" '
+                f'height="{height}" viewBox="0 0 {width} {height}" ')
     out = [
-        f'<svg id="graph" width="{width}" height="{height}" '
-        f'viewBox="0 0 {width} {height}" role="img" '
+        f'<svg id="graph" {size}class="{"focus" if focus else ""}" '
+        f'data-width="{width}" data-height="{height}" '
+        f'data-layout="{_e(drawing.engine)}" role="img" '
         'aria-label="system graph: node instances, topics and publisher '
-        'edges">',
-        '<defs>']
-    for name in ('arrow', 'arrow-crossed', 'arrow-stopped'):
+        'edges">']
+    if standalone:
+        out.append(f'<style>{_svg_style()}</style>')
+    out.append('<defs>')
+    for name in ARROWS:
         out.append(
             f'<marker id="{name}" class="arrow" viewBox="0 0 10 10" '
-            'refX="9" refY="5" markerWidth="8" markerHeight="8" '
+            'refX="10" refY="5" markerWidth="8" markerHeight="8" '
             'markerUnits="userSpaceOnUse" orient="auto-start-reverse">'
             '<path d="M0,0 L10,5 L0,10 z"/>'
             '</marker>')
-    out.append('</defs>')
-    out.append('<g class="edges">')
-    for source, target, edge in sorted(system.graph.edges(data=True)):
-        out.append(_edge_svg(layout, source, target, edge,
-                             (source, target) in data.crossed,
-                             (source, target) in stopped))
+    out.append('</defs><g id="graph-view">')
+    out.append('<g class="clusters">')
+    for cluster in drawing.clusters:
+        out.append(
+            f'<g class="cluster" data-cluster="{cluster.key}">'
+            f'<rect x="{_fmt(cluster.x)}" y="{_fmt(cluster.y)}" '
+            f'width="{_fmt(cluster.width)}" height="{_fmt(cluster.height)}" '
+            f'rx="6"/><text x="{_fmt(cluster.x + 8)}" '
+            f'y="{_fmt(cluster.y + 15)}">{_e(cluster.label)}'
+            f'<title>click: hide or show its {len(cluster.members)} '
+            'boxes</title></text></g>')
+    out.append('</g><g class="edges">')
+    for index, edge in enumerate(drawing.edges):
+        source, target = edge.edge
+        classes = ['edge']
+        if source[0] == 'node' and data.system.graph.edges[edge.edge].get(
+                'label', model.DEPENDENT) == model.INDEPENDENT:
+            classes.append('independent')
+        marker = 'arrow'
+        if edge.edge in data.crossed:
+            classes.append('crossed')
+            marker = 'arrow-crossed'
+        elif edge.edge in stopped_edges:
+            classes.append('stopped')
+            marker = 'arrow-stopped'
+        elif focus:
+            classes.append('faded')
+        out.append(
+            f'<path class="{" ".join(classes)}" data-key="e{index}" '
+            f'data-source="{edge.source}" data-target="{edge.target}" '
+            f'd="{edge.path}" marker-end="url(#{marker})"/>')
     out.append('</g><g class="vertices">')
-    for vertex in sorted(layout.boxes, key=lambda v: (v[0], v[1])):
-        box = layout.boxes[vertex]
-        classes = ['vertex', vertex[0]]
-        if vertex[0] == 'node':
-            status = data.status.get(vertex[1])
+    for vertex in drawing.vertices:
+        kind, name = vertex.vertex
+        classes = ['vertex', kind]
+        if kind == 'node':
+            status = data.status.get(name)
             if status:
                 classes.append(status)
-            tip = f'{vertex[1]}: {STATUS_TEXT.get(status, "unaffected")}'
+            elif focus:
+                classes.append('faded')
+            tip = f'{name}: {STATUS_TEXT.get(status, "unaffected")}'
             radius = BOX_HEIGHT / 2
         else:
-            if vertex in crossed_topics:
+            if vertex.vertex in crossed_topics:
                 classes.append('crossed')
-            tip = f'topic {vertex[1]}'
+            elif vertex.vertex in stopped_topics:
+                classes.append('stopped')
+            elif focus:
+                classes.append('faded')
+            tip = f'topic {name}'
+            if vertex.copies > 1:
+                tip += f' (hub: drawn in {vertex.copies} clusters)'
             radius = 3
+        attributes = ''
+        if vertex.cluster is not None:
+            attributes += f' data-cluster="{vertex.cluster}"'
+        if vertex.copies > 1:
+            attributes += f' data-copies="{vertex.copies}"'
         out.append(
-            f'<g class="{" ".join(classes)}" data-name="{_e(vertex[1])}">'
+            f'<g class="{" ".join(classes)}" data-name="{_e(name)}" '
+            f'data-key="{vertex.key}"{attributes}>'
             f'<title>{_e(tip)}</title>'
-            f'<rect x="{_fmt(box.x)}" y="{_fmt(box.y)}" '
-            f'width="{_fmt(box.width)}" height="{_fmt(box.height)}" '
+            f'<rect x="{_fmt(vertex.x)}" y="{_fmt(vertex.y)}" '
+            f'width="{_fmt(vertex.width)}" height="{_fmt(vertex.height)}" '
             f'rx="{_fmt(radius)}"/>'
-            f'<text x="{_fmt(box.x + box.width / 2)}" '
-            f'y="{_fmt(box.y + box.height / 2)}" text-anchor="middle" '
-            f'dominant-baseline="central">{_e(vertex[1])}</text></g>')
-    out.append('</g></svg>')
+            f'<text x="{_fmt(vertex.x + vertex.width / 2)}" '
+            f'y="{_fmt(vertex.y + vertex.height / 2)}" text-anchor="middle" '
+            f'dominant-baseline="central">{_e(name)}</text></g>')
+    out.append('</g></g></svg>')
     return '\n'.join(out)
 
 
-def _edge_svg(layout, source, target, edge, crossed, stopped):
-    boxes = [layout.boxes[source]] + layout.waypoints.get(
-        (source, target), []) + [layout.boxes[target]]
-    down = boxes[-1].y > boxes[0].y
-    # where the edge leaves and enters each box, in drawing order
-    points = []
-    for index, box in enumerate(boxes):
-        top = (box.x + box.width / 2, box.y)
-        bottom = (box.x + box.width / 2, box.y + box.height)
-        enter, leave = (top, bottom) if down else (bottom, top)
-        if index > 0:
-            points.append(enter)
-        if index < len(boxes) - 1:
-            points.append(leave)
-    # curves between rows, straight lines through the waypoints
-    path = [f'M{_fmt(points[0][0])},{_fmt(points[0][1])}']
-    for i in range(1, len(points)):
-        (x1, y1), (x2, y2) = points[i - 1], points[i]
-        if i % 2:
-            bend = (y2 - y1) / 2
-            path.append(f'C{_fmt(x1)},{_fmt(y1 + bend)} {_fmt(x2)},'
-                        f'{_fmt(y2 - bend)} {_fmt(x2)},{_fmt(y2)}')
-        else:
-            path.append(f'L{_fmt(x2)},{_fmt(y2)}')
-    path = ' '.join(path)
-    classes = ['edge']
-    marker = 'arrow'
-    if source[0] == 'node':
-        label = edge.get('label', model.DEPENDENT)
-        if label == model.INDEPENDENT:
-            classes.append('independent')
-        tip = f'{source[1]} publishes {target[1]}: {label} ' \
-            f"({', '.join(edge_patterns(edge))})"
-    else:
-        tip = f'{target[1]} subscribes {source[1]}'
-    if crossed:
-        classes.append('crossed')
-        marker = 'arrow-crossed'
-        tip += '; the rate change goes through'
-    elif stopped:
-        classes.append('stopped')
-        marker = 'arrow-stopped'
-        tip += '; the rate change stops here'
-    return (f'<path class="{" ".join(classes)}" d="{path}" '
-            f'marker-end="url(#{marker})"><title>{_e(tip)}</title></path>')
+def graph_section(data, drawing):
+    """The tools, the graph view, the evidence panel and their data."""
+    focus = ''
+    if data.changed is not None:
+        focus = ('<button id="focus-impact" type="button" aria-pressed="true"'
+                 ' title="dim what the change does not reach">impact focus'
+                 '</button>')
+    # a small graph gets a box no higher than it needs
+    box_height = max(300.0, drawing.height + 40)
+    collapse = ''
+    if drawing.clusters:
+        collapse = ('<button id="collapse-all" type="button" '
+                    'aria-pressed="false">collapse clusters</button>')
+    return f"""<div class="graph-tools">
+<input id="graph-search" type="search" placeholder="find a node or topic (Enter: next)"
+autocomplete="off" aria-label="find a node or topic">
+<span id="graph-found" class="muted"></span>
+<button id="zoom-in" type="button" title="zoom in">+</button>
+<button id="zoom-out" type="button" title="zoom out">&minus;</button>
+<button id="zoom-fit" type="button" title="show the whole graph">fit</button>
+{focus}{collapse}
+<span class="muted">drag: pan &middot; wheel: zoom &middot; click a box or an
+edge: its evidence &middot; click a cluster's name: hide or show it</span>
+</div>
+<div class="graph-main">
+<div id="graph-box" style="height: min(70vh, {_fmt(box_height)}px)">
+{graph_svg(data, drawing)}</div>
+<aside class="graph-side"><div id="graph-panel" aria-live="polite">
+<p class="muted">Click a node, a topic or an edge to see its evidence
+(<code>file:line</code>).</p></div></aside>
+</div>
+<script type="application/json" id="graph-data">{_json_for_script(graph_data(data))}</script>"""
 
 
-# --- the all-nodes chart (the paper's Fig. 3 and 7) -----------------------
+# --- the impact of every node (the paper's Fig. 3 and 7) -------------------
 
-def chart_svg(all_impact):
-    """Traditional vs rate-aware impact set size per node, with averages."""
+def impact_table(all_impact):
+    """Traditional vs rate-aware impact set size per node, as bars."""
     rows = all_impact['nodes']
     if not rows:
-        return ('<p class="muted" id="chart">No node\'s change reaches '
+        return ('<p class="muted" id="all-impact">No node\'s change reaches '
                 'another node.</p>')
-    label_width = 16 + 7 * max(len(r['id']) for r in rows)
-    plot = 480.0
-    top = 44.0
-    row_height = 30.0
-    bar = 10.0
     largest = max(max(r['traditional_impact'], r['rate_impact'])
                   for r in rows) or 1
-    scale = plot / largest
-    width = label_width + plot + 190
-    height = top + row_height * len(rows) + 26
-    out = [f'<svg id="chart" width="{_fmt(width)}" height="{_fmt(height)}" '
-           f'viewBox="0 0 {_fmt(width)} {_fmt(height)}" role="img" '
-           'aria-label="impact set size per changed node">']
-    # legend
-    out.append(
-        '<rect class="bar traditional" x="0" y="4" width="12" height="12"/>'
-        '<text x="18" y="14">traditional</text>'
-        '<rect class="bar rate" x="110" y="4" width="12" height="12"/>'
-        '<text x="128" y="14">rate-aware</text>')
-    step = max(1, -(-largest // 10))
-    for tick in range(0, largest + 1, step):
-        x = label_width + tick * scale
+    out = ['<table id="all-impact" class="sortable" '
+           'data-filterable="impact"><thead><tr><th>changed node</th>'
+           '<th>traditional</th><th>rate-aware</th>'
+           '<th>rate-aware / traditional</th><th>sizes</th></tr></thead>'
+           '<tbody>']
+    for row in rows:
+        traditional, rate = row['traditional_impact'], row['rate_impact']
+        ratio = rate / traditional if traditional else 1.0
         out.append(
-            f'<line class="grid" x1="{_fmt(x)}" y1="{_fmt(top - 6)}" '
-            f'x2="{_fmt(x)}" y2="{_fmt(height - 22)}"/>'
-            f'<text class="value" x="{_fmt(x)}" y="{_fmt(height - 8)}" '
-            f'text-anchor="middle">{tick}</text>')
-    for index, row in enumerate(rows):
-        y = top + index * row_height
-        out.append(
-            f'<g class="chart-row" data-name="{_e(row["id"])}">'
-            f'<text x="{_fmt(label_width - 8)}" y="{_fmt(y + bar)}" '
-            f'text-anchor="end" dominant-baseline="central">'
-            f'{_e(row["id"])}</text>')
-        for offset, kind in ((0, 'traditional'), (bar + 1, 'rate')):
-            value = row[f'{kind}_impact']
-            out.append(
-                f'<rect class="bar {kind}" x="{_fmt(label_width)}" '
-                f'y="{_fmt(y + offset)}" width="{_fmt(value * scale)}" '
-                f'height="{_fmt(bar)}"><title>{_e(row["id"])}: {kind} '
-                f'impact {value}</title></rect>'
-                f'<text class="value" x="{_fmt(label_width + value * scale + 4)}" '
-                f'y="{_fmt(y + offset + bar / 2)}" '
-                f'dominant-baseline="central">{value}</text>')
-        out.append('</g>')
-    for kind, dy in (('traditional', 0), ('rate', 14)):
-        average = all_impact[f'average_{kind}_impact']
-        x = label_width + average * scale
-        out.append(
-            f'<line class="average {kind}" x1="{_fmt(x)}" y1="{_fmt(top - 8)}" '
-            f'x2="{_fmt(x)}" y2="{_fmt(height - 22)}"/>'
-            f'<text class="value" x="{_fmt(x + 3)}" y="{_fmt(top - 16 + dy - 8)}">'
-            f'average {kind} {average:g}</text>')
-    out.append('</svg>')
+            f'<tr data-filter="impact"><td><code>{_e(row["id"])}</code></td>'
+            f'<td class="number">{traditional}</td>'
+            f'<td class="number">{rate}</td>'
+            f'<td class="number">{ratio:.2f}</td>'
+            f'<td class="bars" data-sort="{rate}">'
+            f'<span class="bar traditional" style="width: '
+            f'{100 * traditional / largest:.1f}%"></span>'
+            f'<span class="bar rate" style="width: '
+            f'{100 * rate / largest:.1f}%"></span></td></tr>')
+    out.append('</tbody></table>')
     return '\n'.join(out)
 
 
@@ -329,7 +282,7 @@ def _status_cell(status):
 
 def node_table(data):
     """One row per publisher (one for a node publishing nothing)."""
-    out = ['<table id="nodes" data-filterable="nodes"><thead><tr>'
+    out = ['<table id="nodes" class="sortable" data-filterable="nodes"><thead><tr>'
            '<th>node</th><th>impact</th><th>topic</th><th>label</th>'
            '<th>pattern</th><th>rate</th><th>evidence</th></tr></thead>'
            '<tbody>']
@@ -373,7 +326,8 @@ def node_table(data):
                 f'<td class="nowrap label-{_e(publisher.label)}">'
                 f'{_e(publisher.label)}</td>'
                 f'<td class="nowrap">{_e(publisher.pattern)}</td>'
-                f'<td class="nowrap">{_e(rate)}</td>'
+                f'<td class="nowrap" data-sort="{publisher.rate_hz or 0:g}">'
+                f'{_e(rate)}</td>'
                 f'<td><ul>{"".join(evidence)}</ul></td></tr>')
     out.append('</tbody></table>')
     return '\n'.join(out)
@@ -382,7 +336,7 @@ def node_table(data):
 def topic_table(data):
     """One row per topic: who publishes it (with the label), who reads it."""
     graph = data.system.graph
-    out = ['<table id="topics" data-filterable="topics"><thead><tr>'
+    out = ['<table id="topics" class="sortable" data-filterable="topics"><thead><tr>'
            '<th>topic</th><th>publishers</th><th>subscribers</th></tr>'
            '</thead><tbody>']
     for topic in data.graph['topics']:
@@ -435,13 +389,22 @@ def _impact_section(data):
         f'<dt>stopped at</dt><dd><ul>{stopped}</ul></dd></dl>')
 
 
-def render_html(data):
-    """The whole page."""
+def render_html(data, drawing=None):
+    """The whole page.
+
+    :param drawing: the laid out system graph; default: laid out here
+      (:func:`colcon_rsia.report.drawing.draw_system`)
+    """
+    if drawing is None:
+        from colcon_rsia.report.drawing import draw_system
+        drawing, _ = draw_system(data.system)
     all_impact = data.all_impact
     notes = ''.join(f'<li>{_e(n)}</li>' for n in data.notes)
     notes = f'<h2>Notes</h2><ul id="notes">{notes}</ul>' if notes else ''
     nodes = len(data.system.instances)
     topics = len(data.graph['topics'])
+    layout = 'Graphviz dot' if drawing.engine == 'dot' else \
+        'the built-in layered layout (Graphviz dot was not available)'
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -451,13 +414,12 @@ def render_html(data):
 <meta name="generator" content="colcon-rsia {_e(data.version)}">
 <link rel="icon" href="data:,">
 <title>colcon-rsia report</title>
-<style>{STYLE}</style>
+<style>{_asset('page.css')}</style>
 </head>
 <body>
 <h1>Rate impact report</h1>
 <p class="meta">colcon-rsia {_e(data.version)} &middot; {nodes} node
 instance{'' if nodes == 1 else 's'}, {topics} topic{'' if topics == 1 else 's'}</p>
-{_impact_section(data)}
 <h2>System graph</h2>
 <div class="legend">
 <span><i class="swatch changed"></i>changed</span>
@@ -465,26 +427,30 @@ instance{'' if nodes == 1 else 's'}, {topics} topic{'' if topics == 1 else 's'}<
 <span><i class="swatch traditional"></i>traditional impact only</span>
 <span><i class="swatch unaffected"></i>unaffected node</span>
 <span><i class="swatch dashed"></i>independent edge</span>
+<span><i class="swatch stopped"></i>the rate change stops here</span>
 <span class="muted">rounded: node &middot; square: topic &middot; red edges: the
-rate change propagates &middot; purple: it stops at an independent edge</span>
+rate change propagates &middot; laid out by {layout}</span>
 </div>
-<div class="scroll">{graph_svg(data)}</div>
+{graph_section(data, drawing)}
+<h2>Impact</h2>
+{_impact_section(data)}
+<div class="filter"><label for="filter">Filter the tables</label>
+<input id="filter" type="search" placeholder="node, topic, label, file…"
+autocomplete="off"><span id="filter-count" class="muted"></span>
+<span class="muted">click a column's name to sort</span></div>
 <h2>Impact of each node (the paper's Fig. 3 and 7)</h2>
 <p class="meta">For every node whose change reaches another node: the size of
 its traditional and its rate-aware impact set. Averages: traditional
 {all_impact['average_traditional_impact']:g}, rate-aware
 {all_impact['average_rate_impact']:g}; ratio (rate-aware / traditional)
 {all_impact['ratio']:g}.</p>
-<div class="scroll">{chart_svg(all_impact)}</div>
-<div class="filter"><label for="filter">Filter</label>
-<input id="filter" type="search" placeholder="node, topic, label, file…"
-autocomplete="off"><span id="filter-count" class="muted"></span></div>
+{impact_table(all_impact)}
 <h2>Nodes and their publishers</h2>
 {node_table(data)}
 <h2>Topics</h2>
 {topic_table(data)}
 {notes}
-<script>{SCRIPT}</script>
+<script>{_asset('page.js')}</script>
 </body>
 </html>
 """
