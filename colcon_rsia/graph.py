@@ -315,10 +315,17 @@ def _triggers_json(entry):
     }
 
 
-def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=()):
-    """Graphviz DOT: nodes as ellipses, topics as boxes, independent dashed."""
+def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
+                 rates=None):
+    """Graphviz DOT: nodes as ellipses, topics as boxes, independent dashed.
+
+    :param rates: {topic: :class:`colcon_rsia.rates.Rate`}: each topic's
+      label shows its predicted rate and where it comes from
+    """
     def quote(text):
-        return '"' + text.replace('\\', '\\\\').replace('"', '\\"') + '"'
+        # a line break stays DOT's own \n escape
+        return '"' + text.replace('\\', '\\\\').replace('"', '\\"').replace(
+            '\n', '\\n') + '"'
     lines = ['digraph rsia {', '  rankdir=LR;',
              '  node [fontname="Helvetica", fontsize=10];']
     for instance in sorted(system.instances.values(), key=lambda i: i.id):
@@ -334,13 +341,22 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=()):
             f'  {quote("node:" + instance.id)} [label={quote(instance.id)}, '
             f'shape=ellipse, style={style}, fillcolor="{color}"];')
     for name in system.topics():
+        label = name
+        rate = (rates or {}).get(name)
+        if rate is not None:
+            hz = f'{rate.hz:g} Hz' if rate.hz is not None else 'unknown'
+            label += f'\n{hz}' + (
+                f' ({rate.source})' if rate.hz is not None else '')
         lines.append(
-            f'  {quote("topic:" + name)} [label={quote(name)}, shape=box];')
+            f'  {quote("topic:" + name)} [label={quote(label)}, shape=box];')
     for source, target, data in sorted(system.graph.edges(data=True)):
         attributes = ''
         if source[0] == 'node':
             if data['label'] == model.INDEPENDENT:
                 attributes = ' [style=dashed, label="independent"]'
+            elif ALL_INPUTS not in data.get('triggers', {ALL_INPUTS}):
+                triggers = ', '.join(sorted(data['triggers']))
+                attributes = f' [label={quote("triggered by " + triggers)}]'
         lines.append(
             f'  {quote(source[0] + ":" + source[1])} -> '
             f'{quote(target[0] + ":" + target[1])}{attributes};')

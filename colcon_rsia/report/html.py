@@ -474,7 +474,10 @@ rate change propagates &middot; purple: it stops at an independent edge</span>
 its traditional and its rate-aware impact set. Averages: traditional
 {all_impact['average_traditional_impact']:g}, rate-aware
 {all_impact['average_rate_impact']:g}; ratio (rate-aware / traditional)
-{all_impact['ratio']:g}.</p>
+{all_impact['ratio']:g} ({all_impact['model']} model). Paper model: average
+{all_impact['average_paper_impact']:g}, ratio {all_impact['paper_ratio']:g};
+trigger model: average {all_impact['average_trigger_impact']:g}, ratio
+{all_impact['trigger_ratio']:g}.</p>
 <div class="scroll">{chart_svg(all_impact)}</div>
 <div class="filter"><label for="filter">Filter</label>
 <input id="filter" type="search" placeholder="node, topic, label, file…"

@@ -153,9 +153,9 @@ def _impact_text(result, traditional):
     data = result['traditional_impact']
     lines = [
         f"changed: {', '.join(result['changed']) or '(none)'}",
-        f"rate impact ({result['model']} model): {len(rate)} nodes; "
-        f"paper: {len(result['paper_impact'])}, trigger: "
-        f"{len(result['trigger_impact'])}, traditional: {len(data)}"]
+        f'rate impact: {len(rate)} nodes; traditional: {len(data)} '
+        f"({result['model']} model; paper {len(result['paper_impact'])}, "
+        f"trigger {len(result['trigger_impact'])})"]
     lines += [f'  {node_id}' for node_id in rate]
     if traditional:
         lines.append('traditional impact:')
