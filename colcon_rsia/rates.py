@@ -95,7 +95,7 @@ class _Predictor:
 
     def _publisher(self, instance, entry):
         publisher = entry['publisher']
-        where = f"{instance.id} {publisher.location}"
+        where = f'{instance.id} {publisher.location}'
         if publisher.label == model.INDEPENDENT:
             hz = publisher.rate_hz or publisher.paced_rate_hz
             pattern = publisher.paced_by or publisher.pattern
@@ -253,7 +253,7 @@ def rates_to_text(result):
         for change in result['changes']:
             to = 'may change' if change['may_change'] else _fmt(change['to'])
             lines.append(f"  {change['topic']}: {_fmt(change['from'])} -> "
-                         f"{to}")
+                         + to)
         for keep in result['kept']:
             lines.append(f"  {keep['topic']} keeps {_fmt(keep['hz'])}: "
                          f"{keep['edge']} stops {keep['via']}")

@@ -8,12 +8,7 @@ test_workspaces/triggers/src/trig_nodes/src (see the EXPECT comments there).
 
 import json
 
-from conftest import build_workspace
-from conftest import WORKSPACES
-import pytest
-
 from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import rate_impact
 from colcon_rsia.impact import traditional_impact
 from colcon_rsia.rates import predict_rates
@@ -21,6 +16,9 @@ from colcon_rsia.rates import what_if
 from colcon_rsia.store import find_summaries
 from colcon_rsia.store import read_summary
 from colcon_rsia.subverb.rates import parse_set_rates
+from conftest import build_workspace
+from conftest import WORKSPACES
+import pytest
 
 SRC = WORKSPACES / 'triggers' / 'src'
 

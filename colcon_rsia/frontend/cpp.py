@@ -16,9 +16,9 @@ from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.const_eval import evaluate_number
-from colcon_rsia.frontend.every_nth import every_nth
 from colcon_rsia.frontend.const_eval import is_chrono_duration
 from colcon_rsia.frontend.const_eval import source_tokens
+from colcon_rsia.frontend.every_nth import every_nth
 
 CK = ci.CursorKind
 

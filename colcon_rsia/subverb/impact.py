@@ -96,7 +96,7 @@ def add_model_argument(parser):
     parser.add_argument(
         '--model', choices=MODELS, default=PAPER,
         help='How a rate change crosses a node: paper (to every dependent '
-             'publisher, the paper\'s Algorithm 2) or trigger (only to '
+             "publisher, the paper's Algorithm 2) or trigger (only to "
              'the dependent publishers the incoming topic triggers) '
              '(default: paper)')
 

@@ -74,7 +74,7 @@ def parse_set_rates(values):
         except ValueError:
             number = None
         if not topic.startswith('/') or number is None or number < 0:
-            return None, f"--set-rate {value!r}: expected /TOPIC=HZ " \
+            return None, f'--set-rate {value!r}: expected /TOPIC=HZ ' \
                 '(a global topic name and a rate >= 0)'
         rates[topic] = number
     return rates, None
