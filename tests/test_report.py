@@ -120,7 +120,8 @@ def test_report_without_changes_has_no_impact(system, tmp_path):
     assert not (tmp_path / 'impact.json').exists()  # an old one is removed
     summary = (tmp_path / 'summary.md').read_text()
     assert 'No changed nodes were given' in summary
-    assert '| `sysbot_navigation/planner` | 3 | 4 |' in summary
+    # traditional, paper, trigger
+    assert '| `sysbot_navigation/planner` | 4 | 3 | 3 |' in summary
     page = (tmp_path / 'index.html').read_text()
     assert 'No changed nodes were given' in page
 

@@ -107,7 +107,9 @@ def test_graph_dot_draws_independent_edges_dashed(system_workspace):
     assert dot.startswith('digraph rsia {')
     assert '"node:sysbot_navigation/planner" -> "topic:/plan" ' \
         '[style=dashed, label="independent"];' in dot
-    assert '"node:sysbot_navigation/controller" -> "topic:/cmd_vel";' in dot
+    # a dependent edge names the topics that trigger it
+    assert '"node:sysbot_navigation/controller" -> "topic:/cmd_vel" ' \
+        '[label="triggered by /plan"];' in dot
 
 
 def test_analyze_subverb_reproduces_the_handler_summary(system_workspace):

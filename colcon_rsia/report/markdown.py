@@ -67,7 +67,7 @@ def render_summary(data):
 
 def _without_changes(data):
     lines = ['No changed nodes were given: the impact of each node '
-             '(rate-aware vs traditional impact set size).', '']
+             '(traditional, paper and trigger model impact set sizes).', '']
     rows = data.all_impact['nodes']
     if not rows:
         return lines + ["No node's change reaches another node."]
