@@ -164,6 +164,51 @@ def _connect(system, instance):
             graph.edges[topic, vertex]['subscribers'].append(subscriber)
         else:
             graph.add_edge(topic, vertex, subscribers=[subscriber])
+    _attach_triggers(system, instance)
+
+
+ALL_INPUTS = '*'
+
+
+def resolve_triggers(instance, publisher):
+    """The triggers of a dependent publisher as the instance runs it.
+
+    :returns: [(name, trigger or None)]: resolved topic names,
+      ``service:<name>``, ``action:<name>``, or ``*`` (every input; the
+      trigger is None for a summary written before triggers were recorded)
+    """
+    if publisher.label == model.INDEPENDENT:
+        return []
+    if publisher.triggers is None:
+        return [(ALL_INPUTS, None)]
+    resolved = []
+    for trigger in publisher.triggers:
+        if trigger.kind == model.TRIGGER_ALL:
+            resolved.append((ALL_INPUTS, trigger))
+        elif trigger.kind == 'subscriber':
+            names = {s['resolved'] for s in instance.subscribers
+                     if s['subscriber'].location == trigger.location and
+                     s['subscriber'].topic == trigger.name}
+            if None in names or not names:
+                # a topic we cannot name: the edge follows every input
+                resolved.append((ALL_INPUTS, trigger))
+            resolved += [(name, trigger) for name in sorted(names - {None})]
+        else:
+            resolved.append((f'{trigger.kind}:{trigger.name}', trigger))
+    return resolved
+
+
+def _attach_triggers(system, instance):
+    """Each dependent publisher edge: the topics that trigger it."""
+    vertex = ('node', instance.id)
+    for entry in instance.publishers:
+        publisher = entry['publisher']
+        entry['triggers'] = resolve_triggers(instance, publisher)
+        if entry['resolved'] is None or publisher.label == model.INDEPENDENT:
+            continue
+        data = system.graph.edges[vertex, ('topic', entry['resolved'])]
+        data.setdefault('triggers', set()).update(
+            name for name, _ in entry['triggers'])
 
 
 def _add_publisher_edge(graph, vertex, topic, publisher):
@@ -190,7 +235,8 @@ def _connect_unknown(system, instance):
                            namespace=instance.namespace)
         topic = ('topic', resolved)
         graph.add_edge(topic, vertex, subscribers=[])
-        graph.add_edge(vertex, topic, label=model.DEPENDENT, publishers=[])
+        graph.add_edge(vertex, topic, label=model.DEPENDENT, publishers=[],
+                       triggers={ALL_INPUTS})
 
 
 def graph_to_json(system):
@@ -217,6 +263,7 @@ def graph_to_json(system):
                     {'kind': e.kind, 'location': e.location,
                      'detail': e.detail}
                     for e in p['publisher'].evidence],
+                **_triggers_json(p),
             } for p in instance.publishers],
             'subscribers': [{
                 'topic': s['subscriber'].topic,
@@ -251,10 +298,34 @@ def graph_to_json(system):
     return {'schema': GRAPH_SCHEMA, 'nodes': nodes, 'topics': topics}
 
 
-def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=()):
-    """Graphviz DOT: nodes as ellipses, topics as boxes, independent dashed."""
+def _triggers_json(entry):
+    """The optional ``triggers`` of a dependent publisher in graph@1."""
+    if entry['publisher'].label == model.INDEPENDENT:
+        return {}
+    return {
+        'triggers': sorted({name for name, _ in entry['triggers']}),
+        'trigger_evidence': [{
+            'trigger': name,
+            'location': trigger.location if trigger else None,
+            'detail': trigger.detail if trigger else
+            'the summary records no triggers: re-analyse the package',
+            'every': trigger.every if trigger else None,
+            'sync': trigger.sync if trigger else None,
+        } for name, trigger in entry['triggers']],
+    }
+
+
+def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
+                 rates=None):
+    """Graphviz DOT: nodes as ellipses, topics as boxes, independent dashed.
+
+    :param rates: {topic: :class:`colcon_rsia.rates.Rate`}: each topic's
+      label shows its predicted rate and where it comes from
+    """
     def quote(text):
-        return '"' + text.replace('\\', '\\\\').replace('"', '\\"') + '"'
+        # a line break stays DOT's own \n escape
+        return '"' + text.replace('\\', '\\\\').replace('"', '\\"').replace(
+            '\n', '\\n') + '"'
     lines = ['digraph rsia {', '  rankdir=LR;',
              '  node [fontname="Helvetica", fontsize=10];']
     for instance in sorted(system.instances.values(), key=lambda i: i.id):
@@ -270,13 +341,22 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=()):
             f'  {quote("node:" + instance.id)} [label={quote(instance.id)}, '
             f'shape=ellipse, style={style}, fillcolor="{color}"];')
     for name in system.topics():
+        label = name
+        rate = (rates or {}).get(name)
+        if rate is not None:
+            hz = f'{rate.hz:g} Hz' if rate.hz is not None else 'unknown'
+            label += f'\n{hz}' + (
+                f' ({rate.source})' if rate.hz is not None else '')
         lines.append(
-            f'  {quote("topic:" + name)} [label={quote(name)}, shape=box];')
+            f'  {quote("topic:" + name)} [label={quote(label)}, shape=box];')
     for source, target, data in sorted(system.graph.edges(data=True)):
         attributes = ''
         if source[0] == 'node':
             if data['label'] == model.INDEPENDENT:
                 attributes = ' [style=dashed, label="independent"]'
+            elif ALL_INPUTS not in data.get('triggers', {ALL_INPUTS}):
+                triggers = ', '.join(sorted(data['triggers']))
+                attributes = f' [label={quote("triggered by " + triggers)}]'
         lines.append(
             f'  {quote(source[0] + ":" + source[1])} -> '
             f'{quote(target[0] + ":" + target[1])}{attributes};')

@@ -5,6 +5,7 @@
 import difflib
 
 from colcon_rsia import model
+from colcon_rsia.graph import ALL_INPUTS
 import networkx as nx
 
 IMPACT_SCHEMA = 'colcon-rsia/impact@1'
@@ -41,131 +42,211 @@ def expand_changed(system, changed):
     return sorted(expanded)
 
 
-def _impact(system, changed, rate_aware):
+# the models of rate dependency a dependent publisher edge is crossed by
+PAPER = 'paper'      # every input of its node drives it (Algorithm 2)
+TRIGGER = 'trigger'  # only the inputs whose callbacks reach it (triggers)
+TRADITIONAL = 'traditional'  # data flow: every edge
+MODELS = (PAPER, TRIGGER)
+
+
+def crosses(data, via, model_name):
+    """Whether a rate change arriving on topic `via` crosses an edge.
+
+    :param data: the node -> topic edge's data
+    :param via: the topic the change came in on; None: the node changed
+      (its edges are all relabelled dependent)
+    """
+    if via is None or model_name == TRADITIONAL:
+        return True
+    if data['label'] == model.INDEPENDENT:
+        return False
+    if model_name == PAPER:
+        return True
+    triggers = data.get('triggers', {ALL_INPUTS})
+    return ALL_INPUTS in triggers or via in triggers
+
+
+def _impact(system, changed, model_name, untriggered=None):
+    """Walk from the changed nodes; a state is (node, topic it came on)."""
     graph = system.graph
-    changed_vertices = {('node', c) for c in changed}
     impact = set()
     visited = set()
-    for start in sorted(changed_vertices):
-        todo = [start]
-        while todo:
-            current = todo.pop()
-            if current in visited:
+    todo = [(('node', c), None) for c in sorted(changed, reverse=True)]
+    while todo:
+        state = todo.pop()
+        if state in visited:
+            continue
+        visited.add(state)
+        current, via = state
+        for topic in sorted(graph.successors(current)):
+            data = graph.edges[current, topic]
+            if not crosses(data, via, model_name):
+                if untriggered is not None and \
+                        data['label'] != model.INDEPENDENT:
+                    untriggered.add((current[1], via, topic[1]))
                 continue
-            visited.add(current)
-            for topic in graph.successors(current):
-                label = graph.edges[current, topic]['label']
-                # a changed node's edges are all relabelled dependent
-                if rate_aware and label == model.INDEPENDENT and \
-                        current not in changed_vertices:
-                    continue
-                for subscriber in graph.successors(topic):
-                    # reached again through a cycle: listed, not re-walked
-                    impact.add(subscriber[1])
-                    if subscriber not in visited:
-                        todo.append(subscriber)
+            for subscriber in graph.successors(topic):
+                # reached again through a cycle: listed, not re-walked
+                impact.add(subscriber[1])
+                todo.append((subscriber, topic[1]))
     return sorted(impact)
 
 
-def rate_impact(system, changed):
-    """The nodes whose publishing rate may follow a change (Algorithm 2)."""
-    return _impact(system, changed, rate_aware=True)
+def rate_impact(system, changed, model_name=PAPER):
+    """The nodes whose publishing rate may follow a change (Algorithm 2).
+
+    :param model_name: ``paper`` (a dependent publisher follows every
+      input of its node) or ``trigger`` (only the inputs that trigger it)
+    """
+    return _impact(system, changed, model_name)
 
 
 def traditional_impact(system, changed):
     """Every node reachable along data flow from the changed nodes."""
-    return _impact(system, changed, rate_aware=False)
+    return _impact(system, changed, TRADITIONAL)
 
 
-def impact_to_json(system, changed):
-    """The impact@1 contract (see the README); `changed` are instance ids."""
+def not_triggered(system, changed):
+    """Why the trigger model's set is smaller than the paper's.
+
+    :returns: [{node, via, topic, triggers}]: the dependent edges the
+      trigger walk reached on a topic that does not trigger them
+    """
+    untriggered = set()
+    _impact(system, changed, TRIGGER, untriggered)
+    return [_untriggered_json(system, *edge)
+            for edge in sorted(untriggered)]
+
+
+def _untriggered_json(system, node_id, via, topic):
+    triggers = []
+    for entry in system.instances[node_id].publishers:
+        if entry['resolved'] == topic:
+            triggers += [
+                {'trigger': name,
+                 'evidence': f'{trigger.detail} ({trigger.location})'
+                 if trigger else 'no triggers recorded'}
+                for name, trigger in entry.get('triggers', [])]
+    return {'node': node_id, 'via': via, 'topic': topic,
+            'triggers': triggers}
+
+
+def impact_to_json(system, changed, model_name=PAPER):
+    """The impact@1 contract (see the README); `changed` are instance ids.
+
+    ``rate_impact`` is the set under `model_name`; both models' sets and
+    the edges that make the trigger model's smaller are there too.
+    """
+    paper = rate_impact(system, changed, PAPER)
+    trigger = rate_impact(system, changed, TRIGGER)
     return {
         'schema': IMPACT_SCHEMA,
         'changed': sorted(changed),
-        'rate_impact': rate_impact(system, changed),
+        'model': model_name,
+        'rate_impact': paper if model_name == PAPER else trigger,
         'traditional_impact': traditional_impact(system, changed),
+        'paper_impact': paper,
+        'trigger_impact': trigger,
+        'not_triggered': not_triggered(system, changed),
     }
 
 
-def _node_edges(system):
-    """Node-to-node edges: {node: {successor: reached by a dependent edge}}."""
+def _state_edges(system, model_name):
+    """Edges between walk states (node, topic it was reached on)."""
     graph = system.graph
-    edges = {}
-    for vertex in graph:
-        if vertex[0] != 'node':
+    edges = []
+    for topic in graph:
+        if topic[0] != 'topic':
             continue
-        successors = edges.setdefault(vertex[1], {})
-        for topic in graph.successors(vertex):
-            dependent = graph.edges[vertex, topic]['label'] != \
-                model.INDEPENDENT
-            for subscriber in graph.successors(topic):
-                successors[subscriber[1]] = \
-                    successors.get(subscriber[1], False) or dependent
+        for node in graph.successors(topic):
+            for out in graph.successors(node):
+                if crosses(graph.edges[node, out], topic[1], model_name):
+                    edges += [((node[1], topic[1]), (subscriber[1], out[1]))
+                              for subscriber in graph.successors(out)]
     return edges
 
 
-def _closures(nodes, edges, keep):
-    """Reflexive-transitive reachability of every node, as bit sets.
+def _closures(states, edges, bit):
+    """Reflexive-transitive reachability of every state, as node bit sets.
 
     Computed once over the condensation (strongly connected components in
     reverse topological order), so that every node's impact set is a union
     of its successors' closures instead of a traversal of its own.
     """
     graph = nx.DiGraph()
-    graph.add_nodes_from(nodes)
-    graph.add_edges_from(
-        (u, v) for u, successors in edges.items()
-        for v, flag in successors.items() if keep(flag))
+    graph.add_nodes_from(states)
+    graph.add_edges_from(edges)
     condensed = nx.condensation(graph)
-    bit = {node: 1 << index for index, node in enumerate(nodes)}
     closure_of_component = {}
     for component in reversed(list(nx.topological_sort(condensed))):
         bits = 0
         for member in condensed.nodes[component]['members']:
-            bits |= bit[member]
+            bits |= bit[member[0]]
         for successor in condensed.successors(component):
             bits |= closure_of_component[successor]
         closure_of_component[component] = bits
     mapping = condensed.graph['mapping']
-    return {node: closure_of_component[mapping[node]] for node in nodes}
+    return {state: closure_of_component[mapping[state]] for state in states}
 
 
-def impact_all(system):
-    """Both impact sizes for every node whose change reaches another node.
+def _ratio(part, whole):
+    return round(part / whole, 3) if whole else 1.0
+
+
+def impact_all(system, model_name=PAPER):
+    """The impact set sizes of every node whose change reaches another.
 
     Leaf nodes (traditional impact empty) are left out, as in the paper's
     Fig. 3 and 7. A changed node reaches each subscriber of its topics
-    (its own edges count as dependent) and from there whatever those reach:
-    along dependent edges for the rate-aware set, along every edge for the
-    traditional one.
+    (its own edges count as dependent) and from there whatever those
+    reach: along the edges each model crosses (:func:`crosses`).
+    ``rate_impact`` and ``ratio`` are those of `model_name`.
     """
+    graph = system.graph
     nodes = sorted(system.instances)
-    edges = _node_edges(system)
-    dependent_closure = _closures(nodes, edges, lambda dependent: dependent)
-    any_closure = _closures(nodes, edges, lambda dependent: True)
+    bit = {node: 1 << index for index, node in enumerate(nodes)}
+    states = [(node[1], topic[1]) for topic in graph if topic[0] == 'topic'
+              for node in graph.successors(topic)]
+    closures = {
+        name: _closures(states, _state_edges(system, name), bit)
+        for name in (TRADITIONAL, PAPER, TRIGGER)}
     rows = []
     for node_id in nodes:
-        successors = edges.get(node_id, {})
-        traditional = rate = 0
-        for successor in successors:
-            traditional |= any_closure[successor]
-            rate |= dependent_closure[successor]
-        if not traditional:
+        sizes = {}
+        for name, closure in closures.items():
+            bits = 0
+            for topic in graph.successors(('node', node_id)):
+                for subscriber in graph.successors(topic):
+                    bits |= closure[(subscriber[1], topic[1])]
+            sizes[name] = bin(bits).count('1')
+        if not sizes[TRADITIONAL]:
             continue
         rows.append({
             'id': node_id,
-            'rate_impact': bin(rate).count('1'),
-            'traditional_impact': bin(traditional).count('1'),
+            'rate_impact': sizes[model_name],
+            'traditional_impact': sizes[TRADITIONAL],
+            'paper_impact': sizes[PAPER],
+            'trigger_impact': sizes[TRIGGER],
         })
-    rate_sum = sum(r['rate_impact'] for r in rows)
-    traditional_sum = sum(r['traditional_impact'] for r in rows)
+        if sizes[TRIGGER] < sizes[PAPER]:
+            # the evidence of each difference
+            rows[-1]['not_triggered'] = not_triggered(system, [node_id])
     count = len(rows)
-    return {
+    sums = {key: sum(r[key] for r in rows) for key in (
+        'rate_impact', 'traditional_impact', 'paper_impact',
+        'trigger_impact')}
+    result = {
         'schema': IMPACT_ALL_SCHEMA,
+        'model': model_name,
         'nodes': rows,
-        'average_rate_impact': round(rate_sum / count, 3) if count else 0.0,
-        'average_traditional_impact':
-            round(traditional_sum / count, 3) if count else 0.0,
-        'ratio': round(rate_sum / traditional_sum, 3)
-        if traditional_sum else 1.0,
+        'ratio': _ratio(sums['rate_impact'], sums['traditional_impact']),
+        'paper_ratio': _ratio(sums['paper_impact'],
+                              sums['traditional_impact']),
+        'trigger_ratio': _ratio(sums['trigger_impact'],
+                                sums['traditional_impact']),
+        'trigger_to_paper': _ratio(sums['trigger_impact'],
+                                   sums['paper_impact']),
     }
+    for key, total in sums.items():
+        result['average_' + key] = round(total / count, 3) if count else 0.0
+    return result

@@ -18,6 +18,7 @@ unpaced edges contains a loop-free path using a subset of them).
 """
 
 from colcon_rsia import model
+from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.node_facts import handles_of
 from colcon_rsia.node_facts import resolve_namespace
@@ -124,6 +125,7 @@ def label_publishers(facts):
         callers_of.setdefault(call.callee, []).append(call)
 
     driven = has_inputs(facts)
+    triggers = _TriggerWalk(facts, roots, is_paced)
     labelled = []
     for publisher in facts.publishers:
         sites = [s for s in facts.publish_sites
@@ -143,10 +145,14 @@ def label_publishers(facts):
             evidence.append(model.Evidence(
                 'no_subscribers', publisher.location,
                 'the node has no subscriber, service or action server'))
+            # its own pacing still sets its rate (`colcon rsia rates`)
+            paced = _label_sites(
+                sites, facts, roots, is_paced, unpaced_from_others,
+                bad_parents, from_timers, from_others, callers_of, [])
             labelled.append(model.LabelledPublisher(
                 label=model.INDEPENDENT,
                 pattern=model.PATTERN_NO_SUBSCRIBERS, rate_hz=None,
-                evidence=evidence, **base))
+                evidence=evidence, **base, **_paced_rate(sites, *paced)))
             continue
         if not sites:
             evidence.append(model.Evidence(
@@ -154,7 +160,11 @@ def label_publishers(facts):
                 'no publish call through this publisher was found'))
             labelled.append(model.LabelledPublisher(
                 label=model.DEPENDENT, pattern=model.PATTERN_NONE,
-                rate_hz=None, evidence=evidence, **base))
+                rate_hz=None, evidence=evidence,
+                triggers=[triggers.all_inputs(
+                    publisher.location,
+                    'no publish call through this publisher was found')],
+                **base))
             continue
         label, pattern, rates = _label_sites(
             sites, facts, roots, is_paced, unpaced_from_others, bad_parents,
@@ -164,7 +174,9 @@ def label_publishers(facts):
             rate_hz = next(iter(rates))
         labelled.append(model.LabelledPublisher(
             label=label, pattern=pattern, rate_hz=rate_hz,
-            evidence=evidence, **base))
+            evidence=evidence,
+            triggers=triggers.of(sites) if label == model.DEPENDENT
+            else None, **base, **_paced_rate(sites, label, pattern, rates)))
     root_list = [model.Root(facts.functions[f].name, kind, location)
                  for f, (kind, location) in roots.items()]
     return labelled, sorted(root_list, key=lambda r: (r.location, r.function))
@@ -253,3 +265,119 @@ def _bad_path(site, facts, roots, parents):
         'path', location,
         f'{kind} root {name} reaches the publish site without a timer or '
         f'a rate loop (via {" <- ".join(path)})')
+
+
+def _paced_rate(sites, label, pattern, rates):
+    """The ``paced_rate_hz``/``paced_by`` fields of a publisher."""
+    if not sites or label != model.INDEPENDENT or len(rates) != 1 or \
+            pattern == model.PATTERN_MIXED:
+        return {}
+    rate = next(iter(rates))
+    return {'paced_rate_hz': rate, 'paced_by': pattern} if rate else {}
+
+
+class _TriggerWalk:
+    """Which inputs of a node drive each dependent publisher.
+
+    The walk is Algorithm 1's: unpaced call edges, one start at a time.
+    An input whose callback reaches a publish site along it triggers the
+    publisher; a root that is no input's callback (``main``, a nodelet's
+    ``onInit``, a function nobody calls) reaching it along it, or an input
+    whose callback cannot be followed, leaves every input as a trigger.
+    """
+
+    def __init__(self, facts, roots, is_paced):
+        self.facts = facts
+        self.roots = roots
+        self.unpaced = _edges(facts.calls, lambda c: not is_paced(c.loops))
+        self.is_paced = is_paced
+        self.inputs = _inputs(facts)
+        callbacks = {i[3] for i in self.inputs if i[3]}
+        # timer callbacks are paced roots: they never make a path unpaced
+        others = [f for f, (kind, _) in roots.items()
+                  if kind != model.ROOT_TIMER and f not in callbacks]
+        self.other_parents = {}
+        self.from_others = _reach(others, self.unpaced, self.other_parents)
+        self.reached = {}  # callback -> (functions reached, parents)
+
+    def _reach_from(self, callback):
+        if callback not in self.reached:
+            parents = {}
+            self.reached[callback] = (
+                _reach([callback], self.unpaced, parents), parents)
+        return self.reached[callback]
+
+    def all_inputs(self, location, why):
+        """The trigger that stands for every input of the node."""
+        return model.Trigger(
+            kind=model.TRIGGER_ALL, name=None, location=location, detail=why)
+
+    def of(self, sites):
+        """The triggers of a dependent publisher with these sites."""
+        unpaced_sites = [s for s in sites if not self.is_paced(s.loops)]
+        for site in unpaced_sites:
+            if site.function in self.from_others:
+                path = _bad_path(
+                    site, self.facts, self.roots, self.other_parents)
+                return [self.all_inputs(path.location, path.detail)]
+        for kind, name, location, callback, _, _ in self.inputs:
+            if callback is None or callback not in self.facts.functions:
+                return [self.all_inputs(
+                    location, f'the callback of the {kind} {name} at '
+                    f'{location} could not be followed')]
+        triggers = []
+        for kind, name, location, callback, sync, listener in self.inputs:
+            reached, parents = self._reach_from(callback)
+            hit = [s for s in unpaced_sites if s.function in reached]
+            if not hit:
+                continue
+            site = hit[0]
+            path = [site.location]
+            current = site.function
+            while current != callback and current in parents:
+                path.append(parents[current].location)
+                current = parents[current].caller
+            every = {s.every for s in hit}
+            name_of = self.facts.functions[callback].name
+            triggers.append(model.Trigger(
+                kind=kind, name=name, location=location,
+                detail=f'{name_of} publishes at {" <- ".join(path)}',
+                sync=sync,
+                every=every.pop() if len(every) == 1 else None))
+        return triggers
+
+
+def _inputs(facts):
+    """(kind, name, location, callback, sync, listener) of each input.
+
+    A listener (a tf TransformListener) has no callback of the user's:
+    it only fills a buffer, so it drives nothing and is left out.
+    """
+    sync_of = {}
+    for sync in facts.syncs:
+        for handle in sync.inputs:
+            sync_of.setdefault(handle, sync.location)
+    inputs = []
+    for subscriber in facts.subscribers:
+        if subscriber.callback is None and _is_listener(subscriber):
+            continue
+        inputs.append((
+            'subscriber', subscriber.topic, subscriber.location,
+            subscriber.callback, sync_of.get(subscriber.handle), False))
+    for service in facts.services:
+        inputs.append(('service', service.name, service.location,
+                       service.callback, None, False))
+    for action in facts.actions:
+        if action.role != 'server':
+            continue
+        for callback in action.callbacks:
+            inputs.append(('action', action.name, action.location,
+                           callback, None, False))
+    return inputs
+
+
+def _is_listener(subscriber):
+    """A class that subscribes by being created (tf listeners)."""
+    api = ros_api.DECLARED.get(subscriber.api) or \
+        python_api.CALLS.get(subscriber.api)
+    return bool(api is not None and api.implicit_topics)

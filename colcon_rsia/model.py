@@ -165,6 +165,8 @@ class PublishSite:
     handle: Optional[str]
     location: str
     loops: List[str] = field(default_factory=list)
+    # under ``if (++count % n == 0)``: publishes every n-th call
+    every: Optional[int] = None
 
 
 @dataclass
@@ -356,6 +358,26 @@ class TopicParam:
 
 
 @dataclass
+class Trigger:
+    """An input of a node whose callback reaches a publish site unpaced.
+
+    ``kind`` is subscriber, service or action; ``all`` stands for every
+    input of the node (the paper's rule) where the inputs that drive the
+    publisher cannot be told apart, and ``detail`` then says why.
+    """
+
+    kind: str
+    name: Optional[str]           # the topic/service as written
+    location: str                 # where the input is created
+    detail: str                   # the call path, or why all inputs
+    sync: Optional[str] = None    # the synchronizer the input feeds
+    every: Optional[int] = None   # publishes every n-th message
+
+
+TRIGGER_ALL = 'all'
+
+
+@dataclass
 class LabelledPublisher:
     """A publisher of a node with its rate label."""
 
@@ -372,6 +394,13 @@ class LabelledPublisher:
     publish_sites: List[str] = field(default_factory=list)
     evidence: List[Evidence] = field(default_factory=list)
     topic_param: Optional[TopicParam] = None
+    # dependent publishers: the inputs that drive them (None: independent,
+    # or a summary written before triggers were recorded)
+    triggers: Optional[List[Trigger]] = None
+    # the rate its own timers or Rate loops give every publish site, when
+    # one constant (also for a node without inputs), and which of the two
+    paced_rate_hz: Optional[float] = None
+    paced_by: Optional[str] = None
 
 
 @dataclass
@@ -545,6 +574,8 @@ def _node_from_dict(data):
         p['evidence'] = [Evidence(**e) for e in p.get('evidence', [])]
         if p.get('topic_param'):
             p['topic_param'] = TopicParam(**p['topic_param'])
+        if p.get('triggers') is not None:
+            p['triggers'] = [Trigger(**t) for t in p['triggers']]
         publishers.append(LabelledPublisher(**p))
     subscribers = []
     for s in data.get('subscribers', []):

@@ -92,8 +92,12 @@ def test_report_writes_every_file(system, tmp_path):
     assert impact == {
         'schema': 'colcon-rsia/impact@1',
         'changed': [LASER],
+        'model': 'paper',
         'rate_impact': LASER_CASE['rate_impact'],
         'traditional_impact': LASER_CASE['traditional_impact'],
+        'paper_impact': LASER_CASE['rate_impact'],
+        'trigger_impact': LASER_CASE['rate_impact'],
+        'not_triggered': [],
     }
 
     dot = (tmp_path / 'graph.dot').read_text()
@@ -125,7 +129,8 @@ def test_report_without_changes_has_no_impact(system, tmp_path):
     assert not (tmp_path / 'impact.json').exists()  # an old one is removed
     summary = (tmp_path / 'summary.md').read_text()
     assert 'No changed nodes were given' in summary
-    assert '| `sysbot_navigation/planner` | 3 | 4 |' in summary
+    # traditional, paper, trigger
+    assert '| `sysbot_navigation/planner` | 4 | 3 | 3 |' in summary
     page = (tmp_path / 'index.html').read_text()
     assert 'No changed nodes were given' in page
 
@@ -379,8 +384,12 @@ def test_since_on_the_command_line(git_workspace, tmp_path):
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout) == {
         'schema': 'colcon-rsia/impact@1', 'changed': [LASER],
+        'model': 'paper',
         'rate_impact': LASER_CASE['rate_impact'],
-        'traditional_impact': LASER_CASE['traditional_impact']}
+        'traditional_impact': LASER_CASE['traditional_impact'],
+        'paper_impact': LASER_CASE['rate_impact'],
+        'trigger_impact': LASER_CASE['rate_impact'],
+        'not_triggered': []}
     assert f'rsia: changed {LASER}: src/laser_driver.cpp changed' in \
         result.stderr
     failing = _git_colcon(tmp_path, 'impact', '--since', 'HEAD',

@@ -53,11 +53,17 @@ def test_graph_json_matches_hand_derived_labels(system_workspace):
          for case in EXPECTED['impact']])
 def test_impact_matches_hand_derived_sets(system_workspace, case):
     result = _json(system_workspace, 'impact', '--changed', *case['changed'])
+    # every dependent publisher here is driven by each input of its node
+    # (one input each): the trigger model gives the paper's sets
     assert result == {
         'schema': 'colcon-rsia/impact@1',
         'changed': sorted(case['changed']),
+        'model': 'paper',
         'rate_impact': case['rate_impact'],
         'traditional_impact': case['traditional_impact'],
+        'paper_impact': case['rate_impact'],
+        'trigger_impact': case['rate_impact'],
+        'not_triggered': [],
     }
 
 
@@ -101,7 +107,9 @@ def test_graph_dot_draws_independent_edges_dashed(system_workspace):
     assert dot.startswith('digraph rsia {')
     assert '"node:sysbot_navigation/planner" -> "topic:/plan" ' \
         '[style=dashed, label="independent"];' in dot
-    assert '"node:sysbot_navigation/controller" -> "topic:/cmd_vel";' in dot
+    # a dependent edge names the topics that trigger it
+    assert '"node:sysbot_navigation/controller" -> "topic:/cmd_vel" ' \
+        '[label="triggered by /plan"];' in dot
 
 
 def test_analyze_subverb_reproduces_the_handler_summary(system_workspace):
@@ -130,3 +138,32 @@ def test_build_without_compile_commands_warns_and_stays_green(
     assert 'Traceback' not in out + workspace.stderr
     assert not (workspace.build_base / 'sysbot_perception' / 'rsia' /
                 'summary.json').exists()
+
+
+def test_impact_all_under_both_models(system_workspace):
+    result = _json(system_workspace, 'impact', '--all', '--model', 'trigger')
+    # one input per dependent publisher (scan_filter: /scan, obstacle_
+    # detector: /image, controller: /plan, base_driver: /cmd_vel): the
+    # trigger model gives the paper's sizes
+    got = {row['id']: {'rate': row['paper_impact'],
+                       'traditional': row['traditional_impact']}
+           for row in result['nodes']}
+    assert got == EXPECTED['all']
+    assert all(row['trigger_impact'] == row['paper_impact']
+               for row in result['nodes'])
+    assert result['trigger_ratio'] == result['paper_ratio']
+
+
+def test_rates(system_workspace):
+    result = _json(system_workspace, 'rates')
+    got = {t['name']: (t['hz'], t['source']) for t in result['topics']}
+    # by hand: laser_driver Rate(10.0), camera_driver timer 0.05 s,
+    # base_driver Rate(50.0), scan_filter stats timer 1 s, planner timer
+    # 0.2 s; the dependent publishers follow their one input
+    assert got == {
+        '/scan': (10, 'Rate loop'), '/image': (20, 'timer'),
+        '/odom': (50, 'Rate loop'), '/filter_stats': (1, 'timer'),
+        '/plan': (5, 'timer'), '/scan_filtered': (10, 'follows /scan'),
+        '/obstacles': (20, 'follows /image'),
+        '/cmd_vel': (5, 'follows /plan'),
+        '/base_status': (5, 'follows /cmd_vel')}

@@ -18,6 +18,7 @@ from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.const_eval import evaluate_number
 from colcon_rsia.frontend.const_eval import is_chrono_duration
 from colcon_rsia.frontend.const_eval import source_tokens
+from colcon_rsia.frontend.every_nth import every_nth
 
 CK = ci.CursorKind
 
@@ -1190,7 +1191,8 @@ class _Walker:
         self.facts.publish_sites.append(model.PublishSite(
             function=ctx.function, api=name,
             handle=handle.get_usr() if handle is not None else None,
-            location=self.location(cursor), loops=ctx.loop_ids()))
+            location=self.location(cursor), loops=ctx.loop_ids(),
+            every=every_nth(stack + [cursor])))
 
     def _on_rate(self, cursor, ctx, stack, api, name, arguments):
         target = self._target(cursor, stack)

@@ -31,6 +31,8 @@ from colcon_rsia.graph import graph_to_dot
 from colcon_rsia.graph import graph_to_json
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
+from colcon_rsia.impact import PAPER
+from colcon_rsia.rates import predict_rates
 
 # the status of a node instance in a report
 CHANGED = 'changed'
@@ -146,7 +148,8 @@ def _held_by(system, stopped, reached):
     return held
 
 
-def build_report(system, *, changed=None, reasons=None, since=None):
+def build_report(system, *, changed=None, reasons=None, since=None,
+                 model_name=PAPER):
     """Compute what the report shows.
 
     :param changed: instance ids of the changed nodes; None: no impact
@@ -156,14 +159,14 @@ def build_report(system, *, changed=None, reasons=None, since=None):
     """
     data = ReportData(
         system=system, graph=graph_to_json(system),
-        all_impact=impact_all(system), since=since,
+        all_impact=impact_all(system, model_name), since=since,
         status={i: UNAFFECTED for i in system.instances})
     if changed is None:
         return data
     data.changed = sorted(changed)
     data.reasons = {c: list((reasons or {}).get(c) or ['named with --changed'])
                     for c in data.changed}
-    data.impact = impact_to_json(system, data.changed)
+    data.impact = impact_to_json(system, data.changed, model_name)
     for node_id in data.impact['traditional_impact']:
         data.status[node_id] = TRADITIONAL
     for node_id in data.impact['rate_impact']:
@@ -188,17 +191,27 @@ def build_report(system, *, changed=None, reasons=None, since=None):
         if node_id not in rate and node_id in held:
             data.via[node_id] = \
                 f'data flow only: held by independent {held[node_id].describe()}'
+    if model_name != PAPER:
+        for edge in data.impact['not_triggered']:
+            for subscriber in system.graph.successors(('topic', edge['topic'])):
+                node_id = subscriber[1]
+                if data.status[node_id] == TRADITIONAL and \
+                        node_id not in data.via:
+                    data.via[node_id] = \
+                        f"held: {edge['via']} does not trigger " \
+                        f"{edge['topic']} of {edge['node']}"
     return data
 
 
 def write_report(system, output, *, changed=None, reasons=None, since=None,
-                 dot_executable=None):
+                 dot_executable=None, model_name=PAPER):
     """Write the report files into the directory `output`.
 
     :param changed: instance ids of the changed nodes, or None
     :param reasons: {instance id: [why it counts as changed]}
     :param since: the ``--since`` revision, when the changes came from git
     :param dot_executable: Graphviz ``dot``; default: ``dot`` on PATH
+    :param model_name: the rate dependency model of the impact sets
     :returns: (names of the files written, notes on what could not be
       done as usual)
     """
@@ -206,7 +219,8 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     from colcon_rsia.report.html import graph_svg
     from colcon_rsia.report.html import render_html
     from colcon_rsia.report.markdown import render_summary
-    data = build_report(system, changed=changed, reasons=reasons, since=since)
+    data = build_report(system, changed=changed, reasons=reasons, since=since,
+                        model_name=model_name)
     drawing, layout_note = draw_system(system, dot_executable=dot_executable)
     os.makedirs(output, exist_ok=True)
     written = []
@@ -222,7 +236,8 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     write('graph.dot', graph_to_dot(
         system, changed=set(data.changed or ()),
         rate_impact=set(impact.get('rate_impact', ())),
-        traditional=set(impact.get('traditional_impact', ()))))
+        traditional=set(impact.get('traditional_impact', ())),
+        rates=predict_rates(system)))
     write('graph.json', json.dumps(data.graph, indent=2, sort_keys=True) + '\n')
     stale = []
     if data.impact is not None:

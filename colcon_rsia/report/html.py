@@ -443,7 +443,10 @@ autocomplete="off"><span id="filter-count" class="muted"></span>
 its traditional and its rate-aware impact set. Averages: traditional
 {all_impact['average_traditional_impact']:g}, rate-aware
 {all_impact['average_rate_impact']:g}; ratio (rate-aware / traditional)
-{all_impact['ratio']:g}.</p>
+{all_impact['ratio']:g} ({all_impact['model']} model). Paper model: average
+{all_impact['average_paper_impact']:g}, ratio {all_impact['paper_ratio']:g};
+trigger model: average {all_impact['average_trigger_impact']:g}, ratio
+{all_impact['trigger_ratio']:g}.</p>
 {impact_table(all_impact)}
 <h2>Nodes and their publishers</h2>
 {node_table(data)}

@@ -58,22 +58,26 @@ def render_summary(data):
         f'{_plural(len(data.graph["topics"]), "topic")} · over all nodes: '
         f'average rate-aware impact {all_impact["average_rate_impact"]:g}, '
         f'traditional {all_impact["average_traditional_impact"]:g} '
-        f'(ratio {all_impact["ratio"]:g})_',
+        f'(ratio {all_impact["ratio"]:g}; paper model '
+        f'{all_impact["paper_ratio"]:g}, trigger model '
+        f'{all_impact["trigger_ratio"]:g})_',
     ]
     return '\n'.join(lines) + '\n'
 
 
 def _without_changes(data):
     lines = ['No changed nodes were given: the impact of each node '
-             '(rate-aware vs traditional impact set size).', '']
+             '(traditional, paper and trigger model impact set sizes).', '']
     rows = data.all_impact['nodes']
     if not rows:
         return lines + ["No node's change reaches another node."]
-    lines += ['| node | rate-aware | traditional |', '| --- | ---: | ---: |']
+    lines += ['| node | traditional | paper | trigger |',
+              '| --- | ---: | ---: | ---: |']
     shown, more = _cut(rows, 'nodes')
     for row in shown:
-        lines.append(f"| {cell(code(row['id']))} | {row['rate_impact']} | "
-                     f"{row['traditional_impact']} |")
+        lines.append(f"| {cell(code(row['id']))} | "
+                     f"{row['traditional_impact']} | {row['paper_impact']} | "
+                     f"{row['trigger_impact']} |")
     return lines + more
 
 

@@ -9,6 +9,8 @@ from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.impact import expand_changed
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
+from colcon_rsia.impact import MODELS
+from colcon_rsia.impact import PAPER
 from colcon_rsia.impact import UnknownNodeError
 from colcon_rsia.subverb import add_system_arguments
 from colcon_rsia.subverb import load_system_from_args
@@ -40,6 +42,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             '--all', action='store_true',
             help='For every node whose change reaches another node: the '
                  'rate-aware and the traditional impact set sizes')
+        add_model_argument(parser)
         parser.add_argument(
             '--traditional', action='store_true',
             help='Also list the traditional (data-flow) impact set')
@@ -60,7 +63,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         if args.all:
             if args.fail_on:
                 return '--fail-on needs --changed or --since, not --all'
-            result = impact_all(system)
+            result = impact_all(system, args.model)
             if args.format == 'json':
                 print(json.dumps(result, indent=2, sort_keys=True))
             else:
@@ -73,7 +76,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         changed, _, error = select_changed(system, args)
         if error:
             return error
-        result = impact_to_json(system, changed)
+        result = impact_to_json(system, changed, args.model)
         if args.format == 'json':
             print(json.dumps(result, indent=2, sort_keys=True))
         else:
@@ -86,6 +89,16 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
                   file=sys.stderr)
             return FAIL_ON_EXIT_CODE
         return 0
+
+
+def add_model_argument(parser):
+    """Add ``--model paper|trigger``."""
+    parser.add_argument(
+        '--model', choices=MODELS, default=PAPER,
+        help='How a rate change crosses a node: paper (to every dependent '
+             "publisher, the paper's Algorithm 2) or trigger (only to "
+             'the dependent publishers the incoming topic triggers) '
+             '(default: paper)')
 
 
 def add_since_argument(group):
@@ -140,24 +153,55 @@ def _impact_text(result, traditional):
     data = result['traditional_impact']
     lines = [
         f"changed: {', '.join(result['changed']) or '(none)'}",
-        f'rate impact: {len(rate)} nodes; traditional: {len(data)}']
+        f'rate impact: {len(rate)} nodes; traditional: {len(data)} '
+        f"({result['model']} model; paper {len(result['paper_impact'])}, "
+        f"trigger {len(result['trigger_impact'])})"]
     lines += [f'  {node_id}' for node_id in rate]
     if traditional:
         lines.append('traditional impact:')
         lines += [f'  {node_id}' for node_id in data]
+    paper_only = sorted(
+        set(result['paper_impact']) - set(result['trigger_impact']))
+    if paper_only:
+        lines.append(f"paper model only: {', '.join(paper_only)}")
+    lines += not_triggered_text(result['not_triggered'])
     return '\n'.join(lines) + '\n'
+
+
+def not_triggered_text(edges):
+    """Lines saying where the trigger model stops and the paper's not."""
+    lines = []
+    if edges:
+        lines.append('the trigger model stops at (the paper model crosses):')
+    for edge in edges:
+        triggers = ', '.join(
+            f"{t['trigger']} ({t['evidence']})" for t in edge['triggers'])
+        lines.append(
+            f"  {edge['node']}: {edge['via']} does not trigger "
+            f"{edge['topic']}; triggered by {triggers or 'nothing'}")
+    return lines
 
 
 def _all_text(result):
     rows = result['nodes']
     width = max([len(r['id']) for r in rows] + [4])
-    lines = [f"{'node':<{width}}  rate  traditional"]
+    lines = [f"{'node':<{width}}  traditional  paper  trigger"]
     for row in rows:
         lines.append(
-            f"{row['id']:<{width}}  {row['rate_impact']:>4}  "
-            f"{row['traditional_impact']:>11}")
+            f"{row['id']:<{width}}  {row['traditional_impact']:>11}  "
+            f"{row['paper_impact']:>5}  {row['trigger_impact']:>7}")
     lines.append(
-        f"average: rate {result['average_rate_impact']:g}, traditional "
-        f"{result['average_traditional_impact']:g}; ratio (rate / "
-        f"traditional) {result['ratio']:g} over {len(rows)} nodes")
+        f"average: traditional {result['average_traditional_impact']:g}, "
+        f"paper {result['average_paper_impact']:g}, trigger "
+        f"{result['average_trigger_impact']:g} over {len(rows)} nodes")
+    lines.append(
+        f"ratio to traditional: paper {result['paper_ratio']:g}, trigger "
+        f"{result['trigger_ratio']:g}; trigger / paper "
+        f"{result['trigger_to_paper']:g}")
+    for row in rows:
+        if row.get('not_triggered'):
+            lines.append(f"{row['id']}: trigger {row['trigger_impact']} < "
+                         f"paper {row['paper_impact']}:")
+            lines += ['  ' + line for line in
+                      not_triggered_text(row['not_triggered'])[1:]]
     return '\n'.join(lines) + '\n'

@@ -8,6 +8,7 @@ from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.subverb import add_system_arguments
 from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.impact import add_model_argument
 from colcon_rsia.subverb.impact import add_since_argument
 from colcon_rsia.subverb.impact import select_changed
 
@@ -31,6 +32,7 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
                  'for nodelets); without --changed or --since the report '
                  'shows no impact set')
         add_since_argument(group)
+        add_model_argument(parser)
         parser.add_argument(
             '--output', required=True, metavar='DIR',
             help='The directory the report is written into (created when '
@@ -49,7 +51,7 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
         try:
             written, notes = write_report(
                 system, args.output, changed=changed, reasons=reasons,
-                since=args.since)
+                since=args.since, model_name=args.model)
         except OSError as e:
             return f"cannot write the report into '{args.output}': " \
                 f'{e.strerror or e}'

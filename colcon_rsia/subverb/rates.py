@@ -1,0 +1,80 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+
+import json
+
+from colcon_core.logging import colcon_logger
+from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.subverb import add_system_arguments
+from colcon_rsia.subverb import load_system_from_args
+from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.impact import add_model_argument
+from colcon_rsia.subverb.impact import select_changed
+
+logger = colcon_logger.getChild(__name__)
+
+
+class RatesRsiaSubverb(RsiaSubverbExtensionPoint):
+    """Print the predicted publishing rate of every topic (and what if)."""
+
+    def __init__(self):  # noqa: D107
+        super().__init__()
+        satisfies_version(
+            RsiaSubverbExtensionPoint.EXTENSION_POINT_VERSION, '^1.0')
+
+    def add_arguments(self, *, parser):  # noqa: D102
+        add_system_arguments(parser)
+        parser.add_argument(
+            '--set-rate', action='append', metavar='TOPIC=HZ', default=[],
+            help='What if TOPIC published at HZ: print the topics whose '
+                 'rate changes and those an edge keeps (repeatable)')
+        parser.add_argument(
+            '--changed', nargs='+', metavar='PKG/EXE',
+            help='What if these nodes changed: their topics may publish '
+                 'at any rate')
+        add_model_argument(parser)
+        parser.add_argument(
+            '--format', choices=('text', 'json'), default='text',
+            help='Output format (default: text)')
+
+    def main(self, *, context):  # noqa: D102
+        from colcon_rsia.rates import rates_to_json
+        from colcon_rsia.rates import rates_to_text
+        args = context.args
+        set_rates, error = parse_set_rates(args.set_rate)
+        if error:
+            return error
+        system, error = load_system_from_args(args, logger)
+        if error:
+            return error
+        unknown = sorted(set(set_rates) - set(system.topics()))
+        if unknown:
+            return f"--set-rate: no topic {', '.join(unknown)} in the " \
+                'system (see colcon rsia rates)'
+        changed, _, error = select_changed(system, args)
+        if error:
+            return error
+        result = rates_to_json(
+            system, set_rates=set_rates, changed=changed or (),
+            model_name=args.model)
+        if args.format == 'json':
+            print(json.dumps(result, indent=2, sort_keys=True))
+        else:
+            print(rates_to_text(result), end='')
+        return 0
+
+
+def parse_set_rates(values):
+    """{topic: Hz} from ``TOPIC=HZ`` strings, or an error message."""
+    rates = {}
+    for value in values:
+        topic, _, hz = value.rpartition('=')
+        try:
+            number = float(hz)
+        except ValueError:
+            number = None
+        if not topic.startswith('/') or number is None or number < 0:
+            return None, f'--set-rate {value!r}: expected /TOPIC=HZ ' \
+                '(a global topic name and a rate >= 0)'
+        rates[topic] = number
+    return rates, None
