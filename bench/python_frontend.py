@@ -19,8 +19,8 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from colcon_rsia.frontend import python as front  # noqa: E402,I100
-from colcon_rsia.python_analysis import build_python_summary  # noqa: E402
-from colcon_rsia.python_nodes import find_python_nodes  # noqa: E402
+from colcon_rsia.package.python_analysis import build_python_summary  # noqa: E402
+from colcon_rsia.package.python_nodes import find_python_nodes  # noqa: E402
 
 ROUNDS = 20
 

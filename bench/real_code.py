@@ -8,7 +8,7 @@ compares what the summaries record with what the source text shows:
 
 - call-site recall: of the calls that create a publisher or subscription in
   the packages' own code (tests aside; found by
-  :mod:`colcon_rsia.call_sites`), the share that ended up as a fact of a
+  :mod:`colcon_rsia.package.call_sites`), the share that ended up as a fact of a
   node in the summaries (same file, same line, or within two lines for a
   call spread over several);
 - translation units, and those with parse errors located in package code;
@@ -46,10 +46,10 @@ from common import colcon
 from common import REPO
 
 sys.path.insert(0, str(REPO))
-from colcon_rsia.call_sites import PUBLISHER  # noqa: E402,I100,I202
-from colcon_rsia.call_sites import scan_package  # noqa: E402
-from colcon_rsia.call_sites import SUBSCRIBER  # noqa: E402
-from colcon_rsia.coverage import match_sites  # noqa: E402
+from colcon_rsia.package.call_sites import PUBLISHER  # noqa: E402,I100,I202
+from colcon_rsia.package.call_sites import scan_package  # noqa: E402
+from colcon_rsia.package.call_sites import SUBSCRIBER  # noqa: E402
+from colcon_rsia.package.coverage import match_sites  # noqa: E402
 
 CXX_SOURCES = ('.cpp', '.cc', '.cxx', '.c++', '.C')
 

@@ -26,10 +26,10 @@ import sys
 import time
 
 from colcon_rsia import model
-from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import impact_all
-from colcon_rsia.impact import rate_impact
-from colcon_rsia.impact import traditional_impact
+from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.impact import impact_all
+from colcon_rsia.system.impact import rate_impact
+from colcon_rsia.system.impact import traditional_impact
 from common import CMAKE_ARGS
 from common import colcon
 from common import colcon_build
@@ -206,7 +206,7 @@ def measure_memory(src, build_base):
     """Peak RSS (MB) of a fresh process analysing the workspace."""
     code = (
         'import resource, sys\n'
-        'from colcon_rsia.analysis import analyze_package\n'
+        'from colcon_rsia.package.analysis import analyze_package\n'
         'from pathlib import Path\n'
         f'src = Path({str(src)!r}); build = Path({str(build_base)!r})\n'
         'for package in sorted(src.iterdir()):\n'

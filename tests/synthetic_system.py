@@ -19,7 +19,7 @@ import random
 
 from colcon_rsia import __version__
 from colcon_rsia import model
-from colcon_rsia.store import write_summary
+from colcon_rsia.package.store import write_summary
 
 STAGES = ('sensor', 'filter', 'fusion', 'planning', 'control', 'driver')
 NODES_PER_PACKAGE = 8

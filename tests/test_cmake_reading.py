@@ -8,8 +8,8 @@ the helper functions and macros packages wrap add_executable in.
 
 import json
 
-from colcon_rsia.nodes import find_components
-from colcon_rsia.nodes import find_executables
+from colcon_rsia.package.nodes import find_components
+from colcon_rsia.package.nodes import find_executables
 from conftest import run_colcon
 
 CMAKELISTS = """

@@ -12,7 +12,7 @@ from pathlib import Path
 import subprocess
 import threading
 
-from colcon_rsia import runner
+from colcon_rsia.package import runner
 from conftest import build_workspace
 from conftest import run_colcon
 from conftest import WORKSPACES
@@ -235,7 +235,7 @@ def test_missing_clang_resource_dir_gives_the_install_hint(
         tmp_path, monkeypatch):
     package = _package(tmp_path, 'p', {'p.cpp': GOOD_NODE})
     monkeypatch.setattr(
-        'colcon_rsia.analysis.find_resource_dir', lambda: None)
+        'colcon_rsia.package.analysis.find_resource_dir', lambda: None)
     outcome = runner.analyze(
         name='p', package_type='ros.catkin', path=str(package),
         build_base=str(tmp_path / 'build' / 'p'))

@@ -4,15 +4,15 @@
 
 import json
 
-from colcon_rsia.graph import graph_to_json
-from colcon_rsia.impact import expand_changed
-from colcon_rsia.impact import impact_all
-from colcon_rsia.impact import impact_to_json
-from colcon_rsia.rates import predict_rates
-from colcon_rsia.rates import what_if
-from colcon_rsia.store import find_summaries
-from colcon_rsia.store import read_summary
-from colcon_rsia.system import load_system
+from colcon_rsia.package.store import find_summaries
+from colcon_rsia.package.store import read_summary
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.impact import expand_changed
+from colcon_rsia.system.impact import impact_all
+from colcon_rsia.system.impact import impact_to_json
+from colcon_rsia.system.load import load_system
+from colcon_rsia.system.rates import predict_rates
+from colcon_rsia.system.rates import what_if
 from conftest import build_workspace
 from conftest import WORKSPACES
 import pytest

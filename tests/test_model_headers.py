@@ -3,7 +3,7 @@
 """The model header mode gives the facts of the real ROS headers, without ROS.
 
 Every translation unit of test_workspaces/ros1 (compiled once by the session
-fixture) is parsed twice: as colcon_rsia.analysis does, with the real headers
+fixture) is parsed twice: as colcon_rsia.package.analysis does, with the real headers
 and the compile database's arguments, and in the model mode
 (colcon_rsia.frontend.model_mode), and the facts of both must be equal.
 """

@@ -3,14 +3,14 @@
 """Name resolution and the two impact analyses on small graphs."""
 
 from colcon_rsia import model
-from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import expand_changed
-from colcon_rsia.impact import impact_all
-from colcon_rsia.impact import rate_impact
-from colcon_rsia.impact import traditional_impact
-from colcon_rsia.impact import UnknownNodeError
-from colcon_rsia.names import join
-from colcon_rsia.names import resolve
+from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.impact import expand_changed
+from colcon_rsia.system.impact import impact_all
+from colcon_rsia.system.impact import rate_impact
+from colcon_rsia.system.impact import traditional_impact
+from colcon_rsia.system.impact import UnknownNodeError
+from colcon_rsia.system.names import join
+from colcon_rsia.system.names import resolve
 import pytest
 
 

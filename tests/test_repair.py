@@ -2,9 +2,9 @@
 # Licensed under the Apache License, Version 2.0
 """The self-completing model mode, and failures that stay local."""
 
-from colcon_rsia import analysis
 from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend import repair
+from colcon_rsia.package import analysis
 import pytest
 
 # a ROS 2 node written against libraries the model does not have: OpenCV,

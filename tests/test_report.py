@@ -17,7 +17,8 @@ import subprocess
 import time
 
 from colcon_rsia import model
-from colcon_rsia.graph import graph_to_json
+from colcon_rsia.package.store import find_summaries
+from colcon_rsia.package.store import read_summary
 from colcon_rsia.report import build_report
 from colcon_rsia.report import write_report
 from colcon_rsia.report.html import CSP
@@ -26,9 +27,8 @@ from colcon_rsia.report.layout import layered_layout
 from colcon_rsia.report.markdown import render_summary
 from colcon_rsia.report.since import changed_since
 from colcon_rsia.report.since import ChangeError
-from colcon_rsia.store import find_summaries
-from colcon_rsia.store import read_summary
-from colcon_rsia.system import load_system
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.load import load_system
 from conftest import run_colcon
 from conftest import WORKSPACES
 from headless import Browser

@@ -18,7 +18,7 @@ from colcon_rsia.report.drawing import apply_dot_layout
 from colcon_rsia.report.drawing import draw_system
 from colcon_rsia.report.drawing import plan_drawing
 from colcon_rsia.report.html import render_html
-from colcon_rsia.system import load_system
+from colcon_rsia.system.load import load_system
 from conftest import run_colcon
 from headless import Browser
 from headless import find_chromium

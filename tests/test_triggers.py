@@ -8,14 +8,14 @@ test_workspaces/triggers/src/trig_nodes/src (see the EXPECT comments there).
 
 import json
 
-from colcon_rsia.graph import build_graph
-from colcon_rsia.impact import rate_impact
-from colcon_rsia.impact import traditional_impact
-from colcon_rsia.rates import predict_rates
-from colcon_rsia.rates import what_if
-from colcon_rsia.store import find_summaries
-from colcon_rsia.store import read_summary
+from colcon_rsia.package.store import find_summaries
+from colcon_rsia.package.store import read_summary
 from colcon_rsia.subverb.rates import parse_set_rates
+from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.impact import rate_impact
+from colcon_rsia.system.impact import traditional_impact
+from colcon_rsia.system.rates import predict_rates
+from colcon_rsia.system.rates import what_if
 from conftest import build_workspace
 from conftest import WORKSPACES
 import pytest
@@ -274,5 +274,5 @@ def test_no_summary_triggers_means_every_input(system):
     instance = system.instances[node('scan_relay')]
     entry = instance.publishers[0]
     old = replace(entry['publisher'], triggers=None)
-    from colcon_rsia.graph import resolve_triggers
+    from colcon_rsia.system.graph import resolve_triggers
     assert resolve_triggers(instance, old) == [('*', None)]

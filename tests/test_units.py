@@ -17,11 +17,11 @@ from colcon_rsia.frontend.compile_db import CompileDatabaseError
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.const_eval import evaluate_tokens
 from colcon_rsia.frontend.cpp import normalize_msg_type
-from colcon_rsia.runner import analyze
-from colcon_rsia.runner import missing_compile_db_message
-from colcon_rsia.store import read_summary
-from colcon_rsia.store import SummaryError
-from colcon_rsia.store import write_summary
+from colcon_rsia.package.runner import analyze
+from colcon_rsia.package.runner import missing_compile_db_message
+from colcon_rsia.package.store import read_summary
+from colcon_rsia.package.store import SummaryError
+from colcon_rsia.package.store import write_summary
 import pytest
 
 
@@ -123,7 +123,7 @@ def test_runner_never_raises(tmp_path):
                       path=str(tmp_path), build_base=str(tmp_path))
     assert outcome.summary is None
     assert 'unreadable compile database' in outcome.error
-    with mock.patch('colcon_rsia.runner.analyze_package',
+    with mock.patch('colcon_rsia.package.runner.analyze_package',
                     side_effect=KeyError('boom')):
         outcome = analyze(name='p', package_type='ros.catkin',
                           path=str(tmp_path), build_base=str(tmp_path))
@@ -185,7 +185,7 @@ def test_event_handler_analyses_at_a_lower_priority_than_the_build(
     handler = RsiaEventHandler()
     handler.context = CommandContext(
         command_name='colcon', args=SimpleNamespace(verb_name='build'))
-    with mock.patch('colcon_rsia.runner.analyze', analyze):
+    with mock.patch('colcon_rsia.package.runner.analyze', analyze):
         handler((JobEnded('pkg', 0), _job(tmp_path)))
         handler((EventReactorShutdown(), None))
     assert seen['worker'] == min(19, build_priority + handler.NICENESS)

@@ -64,7 +64,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
 
     def _submit(self, job):
         # imported here: the analysis (and libclang) loads only when used
-        from colcon_rsia.runner import analyze
+        from colcon_rsia.package.runner import analyze
         pkg = job.task_context.pkg
         args = job.task_context.args
         if self._pool is None:
@@ -81,7 +81,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
     def _workspace_package_dirs(self, pkg):
         # discovered once, on the first package analysed, with the build's
         # own arguments
-        from colcon_rsia.runner import workspace_package_dirs
+        from colcon_rsia.package.runner import workspace_package_dirs
         if self._package_dirs is None:
             try:
                 self._package_dirs = workspace_package_dirs(self.context.args)
@@ -114,7 +114,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._pending = still_running
 
     def _report(self, future):
-        from colcon_rsia.runner import Outcome
+        from colcon_rsia.package.runner import Outcome
         try:
             outcome = future.result()
         except Exception as e:  # noqa: B902
@@ -141,8 +141,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             "see 'colcon rsia graph' and 'colcon rsia impact'", flush=True)
         if not analysed:
             return
-        from colcon_rsia.coverage import total_line
-        from colcon_rsia.coverage import workspace_report
+        from colcon_rsia.package.coverage import total_line
+        from colcon_rsia.package.coverage import workspace_report
         print(total_line(workspace_report(
             [o.summary for o in analysed],
             {o.package: o.error for o in self._outcomes

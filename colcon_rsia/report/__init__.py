@@ -27,12 +27,12 @@ from typing import Optional
 
 from colcon_rsia import __version__
 from colcon_rsia import model
-from colcon_rsia.graph import graph_to_dot
-from colcon_rsia.graph import graph_to_json
-from colcon_rsia.impact import impact_all
-from colcon_rsia.impact import impact_to_json
-from colcon_rsia.impact import PAPER
-from colcon_rsia.rates import predict_rates
+from colcon_rsia.system.graph import graph_to_dot
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.impact import impact_all
+from colcon_rsia.system.impact import impact_to_json
+from colcon_rsia.system.impact import PAPER
+from colcon_rsia.system.rates import predict_rates
 
 # the status of a node instance in a report
 CHANGED = 'changed'

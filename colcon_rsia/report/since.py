@@ -113,7 +113,7 @@ def map_changed_files(system, files, *, package_paths=None,
 
     :param files: absolute paths of changed files
     :param package_paths: {package: source path} the nodes' ``files`` are
-      relative to; default: what :func:`colcon_rsia.system.load_system`
+      relative to; default: what :func:`colcon_rsia.system.load.load_system`
       recorded on the system
     :param launch_files: the launch and parameter files the system was
       read from; default: what ``load_system`` recorded

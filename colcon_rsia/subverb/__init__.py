@@ -9,9 +9,9 @@ from colcon_core.package_selection import add_arguments \
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import instantiate_extensions
 from colcon_core.plugin_system import order_extensions_by_name
-from colcon_rsia.store import find_summaries
-from colcon_rsia.store import read_summary
-from colcon_rsia.store import SummaryError
+from colcon_rsia.package.store import find_summaries
+from colcon_rsia.package.store import read_summary
+from colcon_rsia.package.store import SummaryError
 
 
 class RsiaSubverbExtensionPoint:
@@ -118,8 +118,8 @@ def load_workspace(args, logger):
 
 def load_system_from_args(args, logger):
     """The system graph the arguments describe, or an error message."""
-    from colcon_rsia.system import LaunchArgumentError
-    from colcon_rsia.system import load_system
+    from colcon_rsia.system.load import LaunchArgumentError
+    from colcon_rsia.system.load import load_system
     launch = getattr(args, 'launch', None)
     expected_errors = (LaunchArgumentError,)
     if launch:

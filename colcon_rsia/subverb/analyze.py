@@ -7,9 +7,9 @@ import time
 from colcon_core.logging import colcon_logger
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.coverage import total_line
-from colcon_rsia.coverage import workspace_report
-from colcon_rsia.runner import analyze
+from colcon_rsia.package.coverage import total_line
+from colcon_rsia.package.coverage import workspace_report
+from colcon_rsia.package.runner import analyze
 from colcon_rsia.subverb import add_workspace_arguments
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 

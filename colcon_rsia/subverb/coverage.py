@@ -39,10 +39,10 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
                  'failed (for CI)')
 
     def main(self, *, context):  # noqa: D102
-        from colcon_rsia import store
-        from colcon_rsia.coverage import FAILED
-        from colcon_rsia.coverage import report_to_text
-        from colcon_rsia.coverage import workspace_report
+        from colcon_rsia.package import store
+        from colcon_rsia.package.coverage import FAILED
+        from colcon_rsia.package.coverage import report_to_text
+        from colcon_rsia.package.coverage import workspace_report
         args = context.args
         build_base = os.path.abspath(args.build_base)
         selected = [d.descriptor.name for d in get_packages(args)

@@ -6,15 +6,15 @@ import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.impact import expand_changed
-from colcon_rsia.impact import impact_all
-from colcon_rsia.impact import impact_to_json
-from colcon_rsia.impact import MODELS
-from colcon_rsia.impact import PAPER
-from colcon_rsia.impact import UnknownNodeError
 from colcon_rsia.subverb import add_system_arguments
 from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.system.impact import expand_changed
+from colcon_rsia.system.impact import impact_all
+from colcon_rsia.system.impact import impact_to_json
+from colcon_rsia.system.impact import MODELS
+from colcon_rsia.system.impact import PAPER
+from colcon_rsia.system.impact import UnknownNodeError
 
 logger = colcon_logger.getChild(__name__)
 
@@ -119,8 +119,8 @@ def select_changed(system, args):
     :returns: (instance ids or None when neither option is given,
       {instance id: [reasons]}, an error message or None)
     """
-    from colcon_rsia.report.since import ChangeError
     from colcon_rsia.report.since import changed_since
+    from colcon_rsia.report.since import ChangeError
     from colcon_rsia.report.since import describe_reasons
     if getattr(args, 'since', None):
         try:

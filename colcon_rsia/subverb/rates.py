@@ -38,8 +38,8 @@ class RatesRsiaSubverb(RsiaSubverbExtensionPoint):
             help='Output format (default: text)')
 
     def main(self, *, context):  # noqa: D102
-        from colcon_rsia.rates import rates_to_json
-        from colcon_rsia.rates import rates_to_text
+        from colcon_rsia.system.rates import rates_to_json
+        from colcon_rsia.system.rates import rates_to_text
         args = context.args
         set_rates, error = parse_set_rates(args.set_rate)
         if error:

@@ -17,9 +17,9 @@ from typing import Optional
 from typing import Tuple
 
 from colcon_rsia import model
-from colcon_rsia.names import join
-from colcon_rsia.names import node_fqn
-from colcon_rsia.names import resolve
+from colcon_rsia.system.names import join
+from colcon_rsia.system.names import node_fqn
+from colcon_rsia.system.names import resolve
 import networkx as nx
 
 GRAPH_SCHEMA = 'colcon-rsia/graph@1'
@@ -319,7 +319,7 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
                  rates=None):
     """Graphviz DOT: nodes as ellipses, topics as boxes, independent dashed.
 
-    :param rates: {topic: :class:`colcon_rsia.rates.Rate`}: each topic's
+    :param rates: {topic: :class:`colcon_rsia.system.rates.Rate`}: each topic's
       label shows its predicted rate and where it comes from
     """
     def quote(text):

@@ -14,14 +14,14 @@ import time
 import traceback
 from typing import Optional
 
-from colcon_rsia import store
-from colcon_rsia.analysis import AnalysisError
-from colcon_rsia.analysis import analyze_package
-from colcon_rsia.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
-from colcon_rsia.nodes import find_executables
+from colcon_rsia.package import store
+from colcon_rsia.package.analysis import AnalysisError
+from colcon_rsia.package.analysis import analyze_package
+from colcon_rsia.package.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
+from colcon_rsia.package.nodes import find_executables
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
@@ -172,9 +172,9 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
 def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
              header_mode, workspace_package_dirs, without_build):
     # imported here: most colcon calls never analyse anything
-    from colcon_rsia.python_analysis import analyze_python_package
-    from colcon_rsia.python_analysis import build_python_summary
-    from colcon_rsia.python_nodes import find_python_nodes
+    from colcon_rsia.package.python_analysis import analyze_python_package
+    from colcon_rsia.package.python_analysis import build_python_summary
+    from colcon_rsia.package.python_nodes import find_python_nodes
     if package_type in PYTHON_PACKAGE_TYPES:
         return Outcome(name, summary=analyze_python_package(
             name=name, path=path, build_base=build_base))

@@ -14,11 +14,7 @@ import os
 import time
 
 from colcon_rsia import __version__
-from colcon_rsia import coverage
 from colcon_rsia import model
-from colcon_rsia import store
-from colcon_rsia.call_sites import PUBLISHER
-from colcon_rsia.call_sites import SUBSCRIBER
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
 from colcon_rsia.frontend.compile_db import CompileEntry
@@ -26,16 +22,20 @@ from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
-from colcon_rsia.labeling import label_publishers
-from colcon_rsia.node_facts import handles_of
-from colcon_rsia.node_facts import merge_facts
-from colcon_rsia.node_facts import node_facts
-from colcon_rsia.node_facts import resolve_namespace
-from colcon_rsia.node_facts import select_functions
-from colcon_rsia.node_facts import topic_param
-from colcon_rsia.nodes import find_components
-from colcon_rsia.nodes import find_executables
-from colcon_rsia.nodes import find_nodelets
+from colcon_rsia.package import coverage
+from colcon_rsia.package import store
+from colcon_rsia.package.call_sites import PUBLISHER
+from colcon_rsia.package.call_sites import SUBSCRIBER
+from colcon_rsia.package.labeling import label_publishers
+from colcon_rsia.package.node_facts import handles_of
+from colcon_rsia.package.node_facts import merge_facts
+from colcon_rsia.package.node_facts import node_facts
+from colcon_rsia.package.node_facts import resolve_namespace
+from colcon_rsia.package.node_facts import select_functions
+from colcon_rsia.package.node_facts import topic_param
+from colcon_rsia.package.nodes import find_components
+from colcon_rsia.package.nodes import find_executables
+from colcon_rsia.package.nodes import find_nodelets
 
 
 class AnalysisError(RuntimeError):
@@ -196,8 +196,8 @@ def _own_include_dirs(path):
 
 
 def _model_entries(entries, path, workspace_package_dirs, stub_dir):
-    from colcon_rsia.frontend.model_mode import prepare_model_arguments
     from colcon_rsia.frontend import repair
+    from colcon_rsia.frontend.model_mode import prepare_model_arguments
     model_entries = []
     for entry in entries:
         arguments = prepare_model_arguments(
@@ -374,7 +374,8 @@ def _frontend_digest():
     """A digest of the code that makes facts: new code, new facts."""
     if not _FRONTEND_DIGEST:
         digest = hashlib.sha1()
-        here = os.path.dirname(os.path.abspath(__file__))
+        # the colcon_rsia directory: this module is in colcon_rsia/package
+        here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
         files = [os.path.join(here, relative) for relative in (
             'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
             'frontend/ros_api.py', 'frontend/model_mode.py',

@@ -2,10 +2,10 @@
 # Licensed under the Apache License, Version 2.0
 """Analyse one package's Python nodes: modules -> facts -> nodes -> summary.
 
-The Python counterpart of :func:`colcon_rsia.analysis.analyze_package`:
+The Python counterpart of :func:`colcon_rsia.package.analysis.analyze_package`:
 the same facts (:class:`colcon_rsia.model.TuFacts`, one per module, from
 :mod:`colcon_rsia.frontend.python`), the same node selection and labelling
-(:func:`colcon_rsia.analysis._node`), the same summary. Nothing is built,
+(:func:`colcon_rsia.package.analysis._node`), the same summary. Nothing is built,
 imported or run: the sources are parsed where they are.
 
 A node runs the functions of its entry module (a script's module body, or
@@ -23,16 +23,16 @@ import os
 import time
 
 from colcon_rsia import __version__
-from colcon_rsia import coverage
 from colcon_rsia import model
-from colcon_rsia import store
-from colcon_rsia.analysis import _node
-from colcon_rsia.call_sites import PUBLISHER
-from colcon_rsia.call_sites import SUBSCRIBER
 from colcon_rsia.frontend.python import extract_python_facts
 from colcon_rsia.frontend.python import MODULE_FUNCTION
-from colcon_rsia.node_facts import merge_facts
-from colcon_rsia.python_nodes import find_python_nodes
+from colcon_rsia.package import coverage
+from colcon_rsia.package import store
+from colcon_rsia.package.analysis import _node
+from colcon_rsia.package.call_sites import PUBLISHER
+from colcon_rsia.package.call_sites import SUBSCRIBER
+from colcon_rsia.package.node_facts import merge_facts
+from colcon_rsia.package.python_nodes import find_python_nodes
 
 
 def analyze_python_package(*, name, path, build_base):

@@ -5,7 +5,7 @@
 import difflib
 
 from colcon_rsia import model
-from colcon_rsia.graph import ALL_INPUTS
+from colcon_rsia.system.graph import ALL_INPUTS
 import networkx as nx
 
 IMPACT_SCHEMA = 'colcon-rsia/impact@1'

@@ -28,8 +28,8 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
-from colcon_rsia.nodes import cmakelists_text
-from colcon_rsia.nodes import project_name
+from colcon_rsia.package.nodes import cmakelists_text
+from colcon_rsia.package.nodes import project_name
 import defusedxml.ElementTree as ElementTree
 
 SCRIPT_DIRECTORIES = ('scripts', 'nodes')

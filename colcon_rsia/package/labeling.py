@@ -20,9 +20,9 @@ unpaced edges contains a loop-free path using a subset of them).
 from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.node_facts import handles_of
-from colcon_rsia.node_facts import resolve_namespace
-from colcon_rsia.node_facts import topic_param
+from colcon_rsia.package.node_facts import handles_of
+from colcon_rsia.package.node_facts import resolve_namespace
+from colcon_rsia.package.node_facts import topic_param
 
 
 def find_roots(facts):
@@ -100,7 +100,7 @@ def has_inputs(facts):
 def label_publishers(facts):
     """Label every publisher of one node (see the module docstring).
 
-    :param facts: the node's :class:`colcon_rsia.node_facts.NodeFacts`
+    :param facts: the node's :class:`colcon_rsia.package.node_facts.NodeFacts`
     :returns: the labelled publishers and the roots
     """
     roots = find_roots(facts)

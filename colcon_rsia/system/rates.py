@@ -16,9 +16,9 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import model
-from colcon_rsia.graph import ALL_INPUTS
-from colcon_rsia.impact import crosses
-from colcon_rsia.impact import PAPER
+from colcon_rsia.system.graph import ALL_INPUTS
+from colcon_rsia.system.impact import crosses
+from colcon_rsia.system.impact import PAPER
 
 RATES_SCHEMA = 'colcon-rsia/rates@1'
 UNKNOWN = 'unknown'

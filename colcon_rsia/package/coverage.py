@@ -3,7 +3,7 @@
 """What the analysis of a package understood, against its source text.
 
 The call sites that create publishers and subscriptions are found in the
-package's own files by text (:mod:`colcon_rsia.call_sites`), independently
+package's own files by text (:mod:`colcon_rsia.package.call_sites`), independently
 of the front ends; each is then looked up among the facts: recorded for a
 node, recorded only in a unit's facts (code no node runs, such as a plugin),
 or not recorded at all (a blind spot). With the parse errors left in each
@@ -13,11 +13,11 @@ translation unit, this is the ``coverage`` section of a summary.
 import collections
 
 from colcon_rsia import model
-from colcon_rsia.call_sites import CXX_HEADER_EXTENSIONS
-from colcon_rsia.call_sites import CXX_SOURCE_EXTENSIONS
-from colcon_rsia.call_sites import PUBLISHER
-from colcon_rsia.call_sites import scan_package
-from colcon_rsia.call_sites import SUBSCRIBER
+from colcon_rsia.package.call_sites import CXX_HEADER_EXTENSIONS
+from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
+from colcon_rsia.package.call_sites import PUBLISHER
+from colcon_rsia.package.call_sites import scan_package
+from colcon_rsia.package.call_sites import SUBSCRIBER
 
 # a call written over several lines is recorded at the line of its callee
 # name or of its object: both lie within this many lines of each other

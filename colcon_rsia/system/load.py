@@ -4,9 +4,9 @@
 
 import os
 
-from colcon_rsia.graph import build_graph
-from colcon_rsia.graph import Instance
-from colcon_rsia.names import join
+from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.graph import Instance
+from colcon_rsia.system.names import join
 
 
 class LaunchArgumentError(ValueError):
