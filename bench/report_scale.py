@@ -19,7 +19,7 @@ import time
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / 'tests'))
 
-from colcon_rsia.report import write_report  # noqa: E402
+from colcon_rsia.report.writer import write_report  # noqa: E402
 from colcon_rsia.system.load import load_system  # noqa: E402
 from headless import Browser  # noqa: E402
 from headless import find_chromium  # noqa: E402

@@ -10,6 +10,7 @@ interpreter of a small subset that only builds launch actions), and
 
 import os
 
+from colcon_rsia.launch.common import file_kind
 from colcon_rsia.launch.common import Loader
 from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.model import LaunchError
@@ -18,58 +19,6 @@ from colcon_rsia.launch.model import NodeInstance
 
 __all__ = ['LaunchError', 'LaunchResult', 'NodeInstance', 'file_kind',
            'load_launch']
-
-# substitutions only ROS 1 launch files use
-_ROS1_SUBSTITUTIONS = ('$(find ', '$(arg ', '$(optenv ')
-# elements only ROS 2 XML launch files use
-_ROS2_ELEMENTS = frozenset((
-    'let', 'push-ros-namespace', 'push_ros_namespace', 'node_container',
-    'set_remap', 'set_parameter', 'load_composable_node'))
-
-
-def file_kind(path, text, root=None):
-    """Which front end reads a launch file.
-
-    :param root: the parsed XML (an ``Elem``), when already parsed
-    :returns: 'python', 'yaml', 'ros1' (ROS 1 XML) or 'ros2' (ROS 2 XML)
-    """
-    name = os.path.basename(str(path)).lower()
-    if name.endswith('.py'):
-        return 'python'
-    if name.endswith(('.yaml', '.yml')):
-        return 'yaml'
-    if root is None:
-        try:
-            root = parse_xml(text, path)
-        except LaunchError:
-            root = None
-    ros1, ros2 = _xml_markers(root) if root is not None else (False, False)
-    if ros1:
-        return 'ros1'
-    if ros2:
-        return 'ros2'
-    return 'ros1' if name.endswith('.launch') else 'ros2'
-
-
-def _xml_markers(root):
-    """Whether ROS 1 only and ROS 2 only constructs are used."""
-    ros1 = ros2 = False
-    stack = [root]
-    while stack:
-        elem = stack.pop()
-        if elem.tag == 'node':
-            ros1 = ros1 or 'type' in elem.attrs
-            ros2 = ros2 or 'exec' in elem.attrs
-        ros1 = ros1 or elem.tag == 'rosparam'
-        ros2 = ros2 or elem.tag in _ROS2_ELEMENTS
-        for value in elem.attrs.values():
-            if '$(' in value:
-                ros1 = ros1 or any(m in value for m in _ROS1_SUBSTITUTIONS)
-                ros2 = ros2 or '$(var ' in value or '$(find-pkg-' in value
-        if ros1:
-            break
-        stack.extend(elem.children)
-    return ros1, ros2
 
 
 def load_launch(path, *, arguments=None, package_paths=None, environ=None):

@@ -4,21 +4,21 @@
 
 The XML and YAML front ends (here) and the Python front end
 (:mod:`colcon_rsia.launch.python_launch`) turn a file into a list of
-actions; :class:`Ros2Executor` walks them in launch order with the launch
+actions (the model of :mod:`colcon_rsia.launch.ir`);
+:class:`Ros2Executor` walks them in launch order with the launch
 configurations, pushed namespaces, global remaps and parameters in scope,
 and records a :class:`NodeInstance` for every node, container and
 component.
 """
 
 from dataclasses import dataclass
-from dataclasses import field
 import os
 import re
-from typing import List
 from typing import Optional
 
 from colcon_rsia.launch.common import check_value
 from colcon_rsia.launch.common import Elem
+from colcon_rsia.launch.common import file_kind
 from colcon_rsia.launch.common import join_ns
 from colcon_rsia.launch.common import load_yaml
 from colcon_rsia.launch.common import location
@@ -33,8 +33,35 @@ from colcon_rsia.launch.common import ros_arguments
 from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.common import typed_value
 from colcon_rsia.launch.common import UnknownArg
+from colcon_rsia.launch.ir import Action
+from colcon_rsia.launch.ir import BoolOp
+from colcon_rsia.launch.ir import ComposableNodeAction
+from colcon_rsia.launch.ir import Cond
+from colcon_rsia.launch.ir import DeclareArgument
+from colcon_rsia.launch.ir import EnvVar
+from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import Ignored
+from colcon_rsia.launch.ir import Include
+from colcon_rsia.launch.ir import LaunchConfig
+from colcon_rsia.launch.ir import LoadComposable
+from colcon_rsia.launch.ir import NodeAction
+from colcon_rsia.launch.ir import Opaque
+from colcon_rsia.launch.ir import PackagePath
+from colcon_rsia.launch.ir import ParamDict
+from colcon_rsia.launch.ir import ParamItem
+from colcon_rsia.launch.ir import PathJoin
+from colcon_rsia.launch.ir import PushNamespace
+from colcon_rsia.launch.ir import PyExpr
+from colcon_rsia.launch.ir import SetConfiguration
+from colcon_rsia.launch.ir import SetEnv
+from colcon_rsia.launch.ir import SetParameter
+from colcon_rsia.launch.ir import SetRemap
+from colcon_rsia.launch.ir import ThisFile
+from colcon_rsia.launch.ir import TypedValue
+from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import NodeInstance
+from colcon_rsia.launch.python_launch import read_python_launch
 from colcon_rsia.launch.safe_eval import evaluate
 from colcon_rsia.launch.safe_eval import to_text
 from colcon_rsia.launch.substitutions import Call
@@ -51,229 +78,6 @@ MAX_ACTIONS = 200000
 # parts one value may be made of: a value built by doubling itself in a
 # loop must not take exponential time to resolve
 MAX_VALUE_PARTS = 100000
-
-
-# values (substitutions written in Python)
-
-
-@dataclass
-class UnknownValue:
-    """A value not known statically (the reason says why)."""
-
-    reason: str
-
-
-@dataclass
-class LaunchConfig:
-    """``LaunchConfiguration('name', default=…)``."""
-
-    name: object
-    default: object = None
-
-
-@dataclass
-class PackagePath:
-    """``FindPackageShare`` / ``FindPackagePrefix``."""
-
-    package: object
-    kind: str = 'share'
-
-
-@dataclass
-class EnvVar:
-    """``EnvironmentVariable(name, default_value=…)``."""
-
-    name: object
-    default: object = None
-
-
-@dataclass
-class PathJoin:
-    """``PathJoinSubstitution([...])``."""
-
-    parts: list
-
-
-@dataclass
-class PyExpr:
-    """``PythonExpression([...])`` (evaluated in the safe subset)."""
-
-    parts: list
-
-
-@dataclass
-class ThisFile:
-    """``ThisLaunchFile()`` / ``ThisLaunchFileDir()``."""
-
-    directory: bool
-
-
-@dataclass
-class BoolOp:
-    """Not/And/Or/Equals/NotEquals/IfElse substitutions."""
-
-    op: str
-    operands: list
-
-
-@dataclass
-class TypedValue:
-    """``ParameterValue(value, value_type=str)``: kept as text."""
-
-    value: object
-
-
-# conditions
-
-
-@dataclass
-class Cond:
-    """A launch condition: if/unless a value, or a configuration equality."""
-
-    kind: str  # 'if', 'unless', 'equals', 'not_equals', 'unknown'
-    operands: list
-
-
-# actions
-
-
-@dataclass
-class Action:
-    """Common fields of the actions."""
-
-    location: str = ''
-    conditions: list = field(default_factory=list)
-    notes: List[str] = field(default_factory=list)
-
-
-@dataclass
-class DeclareArgument(Action):
-    """``<arg>`` / ``DeclareLaunchArgument``."""
-
-    name: object = None
-    default: object = None
-    has_default: bool = False
-
-
-@dataclass
-class SetConfiguration(Action):
-    """``<let>`` / ``SetLaunchConfiguration``."""
-
-    name: object = None
-    value: object = None
-
-
-@dataclass
-class ParamDict:
-    """A parameter dictionary written in Python: (name, value) pairs."""
-
-    pairs: list
-
-
-@dataclass
-class ParamItem:
-    """One entry of a node's parameters."""
-
-    kind: str  # 'value' (name, value), 'dict', 'file', 'unknown'
-    name: object = None
-    value: object = None
-    allow_substs: bool = False
-
-
-@dataclass
-class ComposableNodeAction(Action):
-    """``<composable_node>`` / ``ComposableNode``."""
-
-    package: object = None
-    plugin: object = None
-    name: object = None
-    namespace: object = None
-    remaps: list = field(default_factory=list)
-    params: List[ParamItem] = field(default_factory=list)
-
-
-@dataclass
-class NodeAction(Action):
-    """``<node>``, ``<node_container>`` / ``Node``, ``ComposableNodeContainer``."""
-
-    package: object = None
-    executable: object = None
-    name: object = None
-    namespace: object = None
-    remaps: list = field(default_factory=list)
-    params: List[ParamItem] = field(default_factory=list)
-    arguments: list = field(default_factory=list)
-    ros_arguments: list = field(default_factory=list)
-    kind: str = 'node'
-    composables: list = field(default_factory=list)
-
-
-@dataclass
-class LoadComposable(Action):
-    """``<load_composable_node>`` / ``LoadComposableNodes``."""
-
-    composables: list = field(default_factory=list)
-
-
-@dataclass
-class Include(Action):
-    """``<include>`` / ``IncludeLaunchDescription``."""
-
-    path: object = None
-    arguments: list = field(default_factory=list)  # (name, value)
-
-
-@dataclass
-class Group(Action):
-    """``<group>`` / ``GroupAction`` (also timers and event handlers)."""
-
-    actions: list = field(default_factory=list)
-    scoped: object = True
-    forwarding: bool = True
-    configurations: list = field(default_factory=list)  # (name, value)
-
-
-@dataclass
-class PushNamespace(Action):
-    """``<push-ros-namespace>`` / ``PushRosNamespace``."""
-
-    namespace: object = None
-
-
-@dataclass
-class SetRemap(Action):
-    """``<set_remap>`` / ``SetRemap``."""
-
-    source: object = None
-    target: object = None
-
-
-@dataclass
-class SetParameter(Action):
-    """``<set_parameter>`` / ``SetParameter``."""
-
-    name: object = None
-    value: object = None
-
-
-@dataclass
-class SetEnv(Action):
-    """``<set_env>``/``<unset_env>`` and their Python actions."""
-
-    name: object = None
-    value: object = None  # None: unset
-
-
-@dataclass
-class Opaque(Action):
-    """Something that is not analysed; its note is reported."""
-
-    note: str = ''
-
-
-@dataclass
-class Ignored(Action):
-    """An action without effect on the node graph (LogInfo…)."""
 
 
 # execution
@@ -315,7 +119,6 @@ class Ros2Executor:
     def actions_of(self, path, kind, text, root=None):
         """The actions of a ROS 2 launch file of a kind."""
         if kind == 'python':
-            from colcon_rsia.launch.python_launch import read_python_launch
             return read_python_launch(path, text, self.loader)
         if kind == 'yaml':
             try:
@@ -359,7 +162,6 @@ class Ros2Executor:
         if not os.path.isfile(path):
             self.loader.note(f'{where}: included file {path} not found')
             return
-        from colcon_rsia.launch import file_kind
         if not self.loader.enter_include(path, where):
             return
         try:

@@ -10,8 +10,8 @@ from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.package.coverage import total_line
 from colcon_rsia.package.coverage import workspace_report
 from colcon_rsia.package.runner import analyze
-from colcon_rsia.subverb import add_workspace_arguments
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 logger = colcon_logger.getChild(__name__)
 

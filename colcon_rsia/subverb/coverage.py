@@ -7,8 +7,8 @@ import os
 from colcon_core.logging import colcon_logger
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.subverb import add_workspace_arguments
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 logger = colcon_logger.getChild(__name__)
 

@@ -5,12 +5,12 @@ import json
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.subverb import add_system_arguments
-from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_system_arguments
 from colcon_rsia.system.graph import graph_to_dot
 from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.graph import graph_to_text
+from colcon_rsia.system.workspace import load_system_from_args
 
 logger = colcon_logger.getChild(__name__)
 

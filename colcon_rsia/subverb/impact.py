@@ -6,15 +6,16 @@ import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.subverb import add_system_arguments
-from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_model_argument
+from colcon_rsia.subverb.arguments import add_since_argument
+from colcon_rsia.subverb.arguments import add_system_arguments
 from colcon_rsia.system.impact import expand_changed
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import impact_to_json
-from colcon_rsia.system.impact import MODELS
-from colcon_rsia.system.impact import PAPER
 from colcon_rsia.system.impact import UnknownNodeError
+from colcon_rsia.system.workspace import load_system_from_args
+from colcon_rsia.system.workspace import select_changed
 
 logger = colcon_logger.getChild(__name__)
 
@@ -89,63 +90,6 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
                   file=sys.stderr)
             return FAIL_ON_EXIT_CODE
         return 0
-
-
-def add_model_argument(parser):
-    """Add ``--model paper|trigger``."""
-    parser.add_argument(
-        '--model', choices=MODELS, default=PAPER,
-        help='How a rate change crosses a node: paper (to every dependent '
-             "publisher, the paper's Algorithm 2) or trigger (only to "
-             'the dependent publishers the incoming topic triggers) '
-             '(default: paper)')
-
-
-def add_since_argument(group):
-    """Add ``--since REF`` (to the group holding ``--changed``)."""
-    group.add_argument(
-        '--since', metavar='REF',
-        help='The changed nodes are those whose files (or whose launch '
-             'files) changed since the git revision REF: committed and '
-             'working-tree changes, as `git diff --name-only REF`')
-
-
-def select_changed(system, args):
-    """The changed instances ``--changed`` or ``--since`` names.
-
-    Each changed instance and the reason it was chosen is printed on
-    stderr for ``--since`` (stdout stays clean for JSON).
-
-    :returns: (instance ids or None when neither option is given,
-      {instance id: [reasons]}, an error message or None)
-    """
-    from colcon_rsia.report.since import changed_since
-    from colcon_rsia.report.since import ChangeError
-    from colcon_rsia.report.since import describe_reasons
-    if getattr(args, 'since', None):
-        try:
-            reasons = changed_since(system, args.since)
-        except ChangeError as e:
-            return None, {}, str(e)
-        if not reasons:
-            print(f'rsia: no analysed node changed since {args.since}',
-                  file=sys.stderr)
-        for line in describe_reasons(system, reasons):
-            print(f'rsia: changed {line}', file=sys.stderr)
-        return sorted(reasons), reasons, None
-    if getattr(args, 'changed', None):
-        reasons = {}
-        for name in args.changed:
-            try:
-                ids = expand_changed(system, [name])
-            except UnknownNodeError as e:
-                return None, {}, str(e)
-            for instance_id in ids:
-                reasons.setdefault(instance_id, []).append(
-                    'named with --changed' if name == instance_id else
-                    f'named with --changed {name}')
-        return sorted(reasons), reasons, None
-    return None, {}, None
 
 
 def _impact_text(result, traditional):

@@ -5,11 +5,11 @@ import json
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.subverb import add_system_arguments
-from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
-from colcon_rsia.subverb.impact import add_model_argument
-from colcon_rsia.subverb.impact import select_changed
+from colcon_rsia.subverb.arguments import add_model_argument
+from colcon_rsia.subverb.arguments import add_system_arguments
+from colcon_rsia.system.workspace import load_system_from_args
+from colcon_rsia.system.workspace import select_changed
 
 logger = colcon_logger.getChild(__name__)
 

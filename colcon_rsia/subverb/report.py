@@ -5,12 +5,12 @@ import os
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.subverb import add_system_arguments
-from colcon_rsia.subverb import load_system_from_args
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
-from colcon_rsia.subverb.impact import add_model_argument
-from colcon_rsia.subverb.impact import add_since_argument
-from colcon_rsia.subverb.impact import select_changed
+from colcon_rsia.subverb.arguments import add_model_argument
+from colcon_rsia.subverb.arguments import add_since_argument
+from colcon_rsia.subverb.arguments import add_system_arguments
+from colcon_rsia.system.workspace import load_system_from_args
+from colcon_rsia.system.workspace import select_changed
 
 logger = colcon_logger.getChild(__name__)
 
@@ -40,7 +40,7 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
                  'Graphviz), graph.json, impact.json, summary.md')
 
     def main(self, *, context):  # noqa: D102
-        from colcon_rsia.report import write_report
+        from colcon_rsia.report.writer import write_report
         args = context.args
         system, error = load_system_from_args(args, logger)
         if error:

@@ -1,0 +1,66 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Write the report's files (see :mod:`colcon_rsia.report`)."""
+
+import json
+import os
+
+from colcon_rsia.report import build_report
+from colcon_rsia.report.drawing import draw_system
+from colcon_rsia.report.html import graph_svg
+from colcon_rsia.report.html import render_html
+from colcon_rsia.report.markdown import render_summary
+from colcon_rsia.system.graph import graph_to_dot
+from colcon_rsia.system.impact import PAPER
+from colcon_rsia.system.rates import predict_rates
+
+
+def write_report(system, output, *, changed=None, reasons=None, since=None,
+                 dot_executable=None, model_name=PAPER):
+    """Write the report files into the directory `output`.
+
+    :param changed: instance ids of the changed nodes, or None
+    :param reasons: {instance id: [why it counts as changed]}
+    :param since: the ``--since`` revision, when the changes came from git
+    :param dot_executable: Graphviz ``dot``; default: ``dot`` on PATH
+    :param model_name: the rate dependency model of the impact sets
+    :returns: (names of the files written, notes on what could not be
+      done as usual)
+    """
+    data = build_report(system, changed=changed, reasons=reasons, since=since,
+                        model_name=model_name)
+    drawing, layout_note = draw_system(system, dot_executable=dot_executable)
+    os.makedirs(output, exist_ok=True)
+    written = []
+    notes = []
+
+    def write(name, text):
+        with open(os.path.join(output, name), 'w', encoding='utf-8') as h:
+            h.write(text)
+        written.append(name)
+
+    write('index.html', render_html(data, drawing))
+    impact = data.impact or {}
+    write('graph.dot', graph_to_dot(
+        system, changed=set(data.changed or ()),
+        rate_impact=set(impact.get('rate_impact', ())),
+        traditional=set(impact.get('traditional_impact', ())),
+        rates=predict_rates(system)))
+    write('graph.json', json.dumps(data.graph, indent=2, sort_keys=True) + '\n')
+    stale = []
+    if data.impact is not None:
+        write('impact.json',
+              json.dumps(data.impact, indent=2, sort_keys=True) + '\n')
+    else:
+        stale.append('impact.json')
+    write('summary.md', render_summary(data))
+    write('graph.svg', graph_svg(data, drawing, standalone=True) + '\n')
+    if layout_note:
+        notes.append(layout_note)
+    # files of an earlier report that this one does not have
+    for name in stale:
+        try:
+            os.unlink(os.path.join(output, name))
+        except FileNotFoundError:
+            pass
+    return sorted(written), notes

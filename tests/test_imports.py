@@ -1,0 +1,158 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The layout is the architecture: layers, no import cycles.
+
+Build time (``package``, reading code through ``frontend``) and query time
+(``system``, reading launch files through ``launch``) meet only in the
+package summary (``model`` and ``package.store``); the colcon glue
+(``verb``, ``subverb``, ``event_handler``) and ``report`` sit on top.
+"""
+
+import ast
+from pathlib import Path
+import subprocess
+import sys
+
+import pytest
+
+PACKAGE_DIR = Path(__file__).resolve().parents[1] / 'colcon_rsia'
+
+# which layers a layer may import (besides itself and colcon_rsia's
+# __version__); the summary contract (model, package.store) is the one
+# thing both phases share
+ALLOWED = {
+    'model': set(),
+    'frontend': {'model'},
+    'launch': set(),
+    'package': {'model', 'frontend', 'environment_variables'},
+    'system': {'model', 'launch', 'package.store'},
+    'report': {'model', 'system'},
+    'event_handler': {'package'},
+    'subverb': {'model', 'package', 'system', 'report',
+                'environment_variables'},
+    'verb': {'subverb'},
+    'environment_variables': set(),
+}
+
+
+def _modules():
+    modules = {}
+    for path in sorted(PACKAGE_DIR.rglob('*.py')):
+        parts = list(path.relative_to(PACKAGE_DIR.parent).with_suffix('').parts)
+        if parts[-1] == '__init__':
+            parts = parts[:-1]
+        modules['.'.join(parts)] = path
+    return modules
+
+
+MODULES = _modules()
+
+
+def _imports(path):
+    """colcon_rsia modules a file imports, anywhere in it (also lazily)."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.ImportFrom) and node.level == 0 and \
+                node.module.split('.')[0] == 'colcon_rsia':
+            for alias in node.names:
+                submodule = f'{node.module}.{alias.name}'
+                found.add(submodule if submodule in MODULES else node.module)
+        elif isinstance(node, ast.Import):
+            found.update(
+                alias.name for alias in node.names
+                if alias.name.split('.')[0] == 'colcon_rsia')
+    return found
+
+
+def _packages_of(module):
+    parts = module.split('.')
+    return {'.'.join(parts[:i]) for i in range(1, len(parts))}
+
+
+def _import_graph():
+    graph = {}
+    for module, path in MODULES.items():
+        # its own packages are being imported when a module is: never a
+        # cycle unless the module names them itself
+        own_packages = _packages_of(module)
+        targets = set()
+        for target in _imports(path):
+            # importing a.b.c runs a/__init__ and a/b/__init__ first
+            targets.add(target)
+            targets.update(_packages_of(target) - own_packages)
+        graph[module] = targets - {module, 'colcon_rsia'}
+    return graph
+
+
+def _cycles(graph):
+    """One cycle through each strongly connected part of the graph."""
+    cycles, state = [], {}
+
+    def visit(module, stack):
+        state[module] = 'open'
+        stack.append(module)
+        for target in sorted(graph.get(module, ())):
+            if state.get(target) == 'open':
+                cycles.append(stack[stack.index(target):] + [target])
+            elif target not in state:
+                visit(target, stack)
+        stack.pop()
+        state[module] = 'done'
+
+    for module in sorted(graph):
+        if module not in state:
+            visit(module, [])
+    return cycles
+
+
+def test_cycle_finder_finds_a_cycle():
+    graph = {'a': {'b'}, 'b': {'c'}, 'c': {'a'}, 'd': {'a'}}
+    assert _cycles(graph) == [['a', 'b', 'c', 'a']]
+    assert _cycles({'a': {'b'}, 'b': set()}) == []
+
+
+def test_no_import_cycles():
+    # lazy imports inside functions count: they only hide a cycle
+    assert _cycles(_import_graph()) == []
+
+
+def _layer(module):
+    parts = module.split('.')[1:]
+    if parts[:2] == ['package', 'store']:
+        return 'package.store'
+    return parts[0] if parts else 'colcon_rsia'
+
+
+def test_layers():
+    wrong = []
+    for module, path in MODULES.items():
+        targets = _imports(path) - {module}
+        layer = _layer(module)
+        if layer == 'package.store':
+            layer = 'package'
+        for target in targets:
+            target_layer = _layer(target)
+            if target_layer == 'colcon_rsia':
+                continue
+            allowed = ALLOWED[layer] | {layer}
+            if target_layer == 'package.store' and \
+                    ({'package', 'package.store'} & allowed):
+                continue
+            if target_layer not in allowed:
+                wrong.append(f'{module} imports {target}')
+    assert wrong == []
+
+
+def test_every_layer_is_known():
+    assert {_layer(m) for m in MODULES} - {'colcon_rsia', 'package.store'} \
+        <= set(ALLOWED)
+
+
+@pytest.mark.parametrize('module', sorted(MODULES))
+def test_imports_on_its_own(module):
+    # a fresh interpreter: the order other tests imported modules in
+    # cannot hide a cycle or a missing import
+    result = subprocess.run(
+        [sys.executable, '-c', f'import {module}'],
+        capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
