@@ -24,15 +24,11 @@ from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
 from colcon_rsia.package import coverage
 from colcon_rsia.package import store
+from colcon_rsia.package.assembly import build_node
+from colcon_rsia.package.assembly import executable_nodes
 from colcon_rsia.package.call_sites import PUBLISHER
 from colcon_rsia.package.call_sites import SUBSCRIBER
-from colcon_rsia.package.labeling import label_publishers
-from colcon_rsia.package.node_facts import handles_of
 from colcon_rsia.package.node_facts import merge_facts
-from colcon_rsia.package.node_facts import node_facts
-from colcon_rsia.package.node_facts import resolve_namespace
-from colcon_rsia.package.node_facts import select_functions
-from colcon_rsia.package.node_facts import topic_param
 from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
@@ -458,7 +454,7 @@ def build_summary(*, name, path, build_base, units):
             continue
         seeds = {f.id for unit in own for f in unit.functions}
         merged = merge_facts(own + library)
-        summary.nodes.extend(_executable_nodes(
+        summary.nodes.extend(executable_nodes(
             name, executable, sources, path, merged, seeds))
     merged_library = merge_facts(library)
     exported = merge_facts(units.values()).plugin_exports
@@ -478,7 +474,7 @@ def build_summary(*, name, path, build_base, units):
             os.path.join(path, f.location.rsplit(':', 1)[0])
             for f in merged_library.functions if f.id in seeds})
         short = plugin.split('/')[-1]
-        summary.nodes.append(_node(
+        summary.nodes.append(build_node(
             name, short, kind, sources, path, merged_library, seeds,
             node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
     return summary
@@ -487,119 +483,3 @@ def build_summary(*, name, path, build_base, units):
 def _defines_main(unit):
     return any(f.name == MAIN_FUNCTION and f.class_id is None
                for f in unit.functions)
-
-
-def _executable_nodes(package, executable, sources, path, merged, seeds):
-    """The node(s) an executable runs.
-
-    One, unless its code names nodes in two or more classes (a ROS 2
-    ``main`` spinning several ``rclcpp::Node`` subclasses in one
-    executor): then each class is a node of its own, with its methods and
-    what they call, and the id ``package/executable/node_name``.
-    """
-    classes = _node_classes(merged, select_functions(merged, seeds))
-    if len(classes) < 2:
-        return [_node(package, executable, 'executable', sources, path,
-                      merged, seeds)]
-    nodes = []
-    for class_id, class_name in sorted(
-            classes.items(), key=lambda item: item[1]):
-        class_seeds = {f.id for f in merged.functions
-                       if f.class_id == class_id}
-        node = _node(package, executable, 'executable', sources, path,
-                     merged, class_seeds)
-        short = node.name or class_name.split('::')[-1]
-        node.id = f'{package}/{executable}/{short}'
-        if any(n.id == node.id for n in nodes):
-            node.id = f'{package}/{executable}/{class_name}'
-        nodes.append(node)
-    return nodes
-
-
-def _node_classes(merged, function_ids):
-    """{class id: class name} of the classes whose methods name a node."""
-    functions = {f.id: f for f in merged.functions if f.id in function_ids}
-    classes = {}
-    for fact in merged.node_names:
-        function = functions.get(fact.function)
-        if function is not None and function.class_id:
-            classes.setdefault(
-                function.class_id, function.name.rsplit('::', 1)[0])
-    return classes
-
-
-def _node_name(facts):
-    """(name, namespace) the node's code gives, when it gives one.
-
-    The name is a literal, or a parameter (``Base(name) : Node(name)``)
-    that the node's calls pass one literal to.
-    """
-    given = set()
-    for fact in facts.node_names:
-        name = fact.name
-        if name is None and fact.name_param:
-            # through every parameter the name was handed on from
-            passed = set()
-            for param in handles_of(facts, fact.name_param):
-                passed |= facts.string_arguments.get(param, set())
-            name = next(iter(passed)) if len(passed) == 1 else None
-        if name:
-            given.add((name, fact.namespace))
-    if len(given) == 1:
-        return given.pop()
-    return None, None
-
-
-def _node(package, executable, kind, sources, path, merged, seeds,
-          node_id=None):
-    facts = node_facts(merged, select_functions(merged, seeds))
-    publishers, roots = label_publishers(facts)
-    names = {fid: f.name for fid, f in facts.functions.items()}
-    node_name, namespace = _node_name(facts)
-    return model.Node(
-        id=node_id or f'{package}/{executable}', package=package,
-        executable=executable, kind=kind,
-        name=node_name, namespace=namespace,
-        sources=sorted(os.path.relpath(s, path) for s in sources),
-        files=sorted(set(merged.files) | {
-            os.path.relpath(s, path) for s in sources}),
-        publishers=sorted(publishers, key=lambda p: (p.location, p.topic or '')),
-        subscribers=sorted((
-            model.NodeSubscriber(
-                topic=s.topic, topic_is_literal=s.topic_is_literal,
-                msg_type=s.msg_type, api=s.api,
-                callback=names.get(s.callback, s.callback),
-                namespace=resolve_namespace(facts, s.nh),
-                location=s.location, topic_param=topic_param(facts, s))
-            for s in facts.subscribers),
-            key=lambda s: (s.location, s.topic or '')),
-        timers=[model.NodeTimer(
-            api=t.api, callback=names.get(t.callback, t.callback),
-            period=t.period, rate_hz=t.rate_hz, location=t.location)
-            for t in facts.timers],
-        services=[model.NodeService(
-            name=s.name, api=s.api,
-            callback=names.get(s.callback, s.callback), location=s.location)
-            for s in facts.services],
-        actions=_actions(facts, names),
-        clients=[model.NodeClient(name=c.name, api=c.api, location=c.location)
-                 for c in facts.clients],
-        roots=roots)
-
-
-def _actions(facts, names):
-    """Actions, with callbacks registered later folded into their server."""
-    actions = [a for a in facts.actions
-               if not a.location.startswith('registration:')]
-    by_handle = {a.handle: a for a in actions if a.handle}
-    extra = {}
-    for registration in facts.actions:
-        if registration.location.startswith('registration:') and \
-                registration.handle in by_handle:
-            extra.setdefault(registration.handle, []).extend(
-                registration.callbacks)
-    return [model.NodeAction(
-        name=a.name, api=a.api, role=a.role,
-        callbacks=sorted({names.get(c, c) for c in
-                          a.callbacks + extra.get(a.handle, [])}),
-        location=a.location) for a in actions]

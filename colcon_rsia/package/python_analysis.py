@@ -5,8 +5,8 @@
 The Python counterpart of :func:`colcon_rsia.package.analysis.analyze_package`:
 the same facts (:class:`colcon_rsia.model.TuFacts`, one per module, from
 :mod:`colcon_rsia.frontend.python`), the same node selection and labelling
-(:func:`colcon_rsia.package.analysis._node`), the same summary. Nothing is built,
-imported or run: the sources are parsed where they are.
+(:func:`colcon_rsia.package.assembly.build_node`), the same summary.
+Nothing is built, imported or run: the sources are parsed where they are.
 
 A node runs the functions of its entry module (a script's module body, or
 the module of a ``console_scripts`` entry point) and whatever they call or
@@ -28,7 +28,7 @@ from colcon_rsia.frontend.python import extract_python_facts
 from colcon_rsia.frontend.python import MODULE_FUNCTION
 from colcon_rsia.package import coverage
 from colcon_rsia.package import store
-from colcon_rsia.package.analysis import _node
+from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.call_sites import PUBLISHER
 from colcon_rsia.package.call_sites import SUBSCRIBER
 from colcon_rsia.package.node_facts import merge_facts
@@ -79,8 +79,8 @@ def build_python_summary(*, name, path):
         # must not add its overrides to this one
         merged = merge_facts(
             units[m] for m in sorted(loaded_modules(spec.module, units)))
-        node = _node(name, spec.executable, 'executable', [spec.path], path,
-                     merged, seeds)
+        node = build_node(name, spec.executable, 'executable', [spec.path],
+                          path, merged, seeds)
         _entry_roots(node, unit, entries)
         summary.nodes.append(node)
     for module in sorted(failures, key=lambda m: failures[m]):
