@@ -8,8 +8,6 @@ The event handler and ``colcon rsia analyze`` both call
 
 from concurrent.futures import ThreadPoolExecutor
 import glob
-import hashlib
-import json
 import os
 import time
 
@@ -26,6 +24,9 @@ from colcon_rsia.package import coverage
 from colcon_rsia.package import store
 from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.assembly import executable_nodes
+from colcon_rsia.package.cache import read_cached_facts
+from colcon_rsia.package.cache import unit_cache_file
+from colcon_rsia.package.cache import write_cached_facts
 from colcon_rsia.package.call_sites import PUBLISHER
 from colcon_rsia.package.call_sites import SUBSCRIBER
 from colcon_rsia.package.node_facts import merge_facts
@@ -240,9 +241,8 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     relative = os.path.relpath(entry.file, package_path)
     cache_file = None
     if cache is not None:
-        digest = hashlib.sha1(entry.file.encode()).hexdigest()[:16]
-        cache_file = os.path.join(cache, digest + '.json')
-        cached = _read_cache(cache_file, entry)
+        cache_file = unit_cache_file(cache, entry)
+        cached = read_cached_facts(cache_file, entry)
         if cached is not None:
             return cached, list(cached.diagnostics)
     # imported here: libclang is needed only when something is parsed
@@ -275,7 +275,7 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     if cache_file is not None:
         # stand-ins only grow as other TUs are prepared: not an input
         inputs = [i for i in includes if f'/{store.RSIA_DIRNAME}/stubs/' not in i]
-        _write_cache(cache_file, entry, [entry.file] + inputs, facts)
+        write_cached_facts(cache_file, entry, [entry.file] + inputs, facts)
     return facts, list(facts.diagnostics)
 
 
@@ -353,69 +353,6 @@ def _repair_header_of(arguments):
 def _read_text(path):
     with open(path, encoding='utf-8', errors='surrogateescape') as h:
         return h.read()
-
-
-def _file_stamp(path):
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return [st.st_mtime_ns, st.st_size]
-
-
-_FRONTEND_DIGEST = []
-
-
-def _frontend_digest():
-    """A digest of the code that makes facts: new code, new facts."""
-    if not _FRONTEND_DIGEST:
-        digest = hashlib.sha1()
-        # the colcon_rsia directory: this module is in colcon_rsia/package
-        here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-        files = [os.path.join(here, relative) for relative in (
-            'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
-            'frontend/ros_api.py', 'frontend/model_mode.py',
-            'frontend/repair.py')]
-        for root, dirs, names in sorted(os.walk(
-                os.path.join(here, 'frontend', 'model_headers'))):
-            dirs.sort()
-            files += [os.path.join(root, n) for n in sorted(names)]
-        for file in files:
-            with open(file, 'rb') as h:
-                digest.update(h.read())
-        _FRONTEND_DIGEST.append(digest.hexdigest())
-    return _FRONTEND_DIGEST[0]
-
-
-def _cache_key(entry):
-    return {'tool': __version__, 'schema': model.FACTS_SCHEMA,
-            'frontend': _frontend_digest(),
-            'arguments': entry.arguments, 'directory': entry.directory}
-
-
-def _read_cache(cache_file, entry):
-    try:
-        with open(cache_file, encoding='utf-8') as h:
-            data = json.load(h)
-        if data['key'] != _cache_key(entry):
-            return None
-        for path, stamp in data['inputs'].items():
-            if _file_stamp(path) != stamp:
-                return None
-        return model.TuFacts.from_dict(data['facts'])
-    except (OSError, ValueError, KeyError, TypeError):
-        return None  # no cache, or one we cannot trust: parse again
-
-
-def _write_cache(cache_file, entry, inputs, facts):
-    data = {
-        'key': _cache_key(entry),
-        'inputs': {p: _file_stamp(p) for p in inputs},
-        'facts': facts.to_dict()}
-    try:
-        store.write_json_atomically(cache_file, data)
-    except OSError:
-        pass  # a cache that cannot be written only costs time
 
 
 def build_summary(*, name, path, build_base, units):
