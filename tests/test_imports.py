@@ -22,7 +22,7 @@ PACKAGE_DIR = Path(__file__).resolve().parents[1] / 'colcon_rsia'
 # thing both phases share
 ALLOWED = {
     'model': set(),
-    'frontend': {'model'},
+    'frontend': {'model', 'environment_variables'},
     'launch': set(),
     'package': {'model', 'frontend', 'environment_variables'},
     'system': {'model', 'launch', 'package.store'},
@@ -156,3 +156,24 @@ def test_imports_on_its_own(module):
         [sys.executable, '-c', f'import {module}'],
         capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stderr
+
+
+def test_colcon_calls_do_not_import_heavy_modules():
+    # every colcon call (--help, completion, other verbs) loads the rsia
+    # verb and its subverbs: networkx, libclang and the analysis load
+    # only when a subverb runs
+    code = (
+        'import sys\n'
+        'from colcon_core.command import main\n'
+        'try:\n'
+        '    main(argv=["rsia", "impact", "--help"])\n'
+        'except SystemExit:\n'
+        '    pass\n'
+        'print(" ".join(sorted(m for m in sys.modules if m.split(".")[0] in '
+        '("networkx", "clang") or m.startswith("colcon_rsia.package."))))\n')
+    result = subprocess.run(
+        [sys.executable, '-c', code], capture_output=True, text=True,
+        timeout=120)
+    assert result.returncode == 0, result.stderr
+    assert 'usage:' in result.stdout
+    assert result.stdout.strip().splitlines()[-1] == 'colcon_rsia.package.store'

@@ -9,15 +9,17 @@ import os
 import shlex
 from typing import List
 
-COMPILE_DB_FILENAME = 'compile_commands.json'
+from colcon_rsia.environment_variables import \
+    CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE
+from colcon_rsia.environment_variables import OLD_CLANG_RESOURCE_DIR_NAME
 
-"""Environment variable to override the clang resource directory."""
-RESOURCE_DIR_ENVIRONMENT_VARIABLE = 'RSIA_CLANG_RESOURCE_DIR'
+COMPILE_DB_FILENAME = 'compile_commands.json'
 
 RESOURCE_DIR_HINT = (
     'libclang needs the clang builtin headers (stddef.h); install them with '
     "'apt-get install libclang-common-19-dev' or point "
-    f'{RESOURCE_DIR_ENVIRONMENT_VARIABLE} at a clang resource directory')
+    f'{CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE.name} at a clang resource '
+    'directory')
 
 # options that take a separate value that we drop together with it
 _DROP_WITH_VALUE = frozenset({'-o', '-MF', '-MT', '-MQ', '-Xclang-cc'})
@@ -107,7 +109,8 @@ def find_resource_dir():
     if _resource_dir_cache:
         return _resource_dir_cache[0]
     candidates = []
-    override = os.environ.get(RESOURCE_DIR_ENVIRONMENT_VARIABLE)
+    override = os.environ.get(CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE.name) or \
+        os.environ.get(OLD_CLANG_RESOURCE_DIR_NAME)
     if override:
         candidates.append(override)
     # the newest installed LLVM first

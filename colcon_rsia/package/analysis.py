@@ -13,6 +13,7 @@ import time
 
 from colcon_rsia import __version__
 from colcon_rsia import model
+from colcon_rsia.environment_variables import CXX_STD_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
 from colcon_rsia.frontend.compile_db import CompileEntry
@@ -46,11 +47,6 @@ def default_jobs():
 
 HEADER_MODES = ('model', 'exact')
 
-"""Environment variable choosing the header mode of the event handler."""
-HEADER_MODE_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_HEADER_MODE'
-
-"""Environment variable with the C++ standard used without a build."""
-STD_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_CXX_STD'
 DEFAULT_STD = 'c++17'
 
 CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
@@ -154,7 +150,7 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
     directories of the workspace's packages, and, for the exact mode, the
     ROS include directories installed on the machine.
     """
-    std = os.environ.get(STD_ENVIRONMENT_VARIABLE, DEFAULT_STD)
+    std = os.environ.get(CXX_STD_ENVIRONMENT_VARIABLE.name, DEFAULT_STD)
     # the package's own include directories, also those of the libraries
     # it vendors (lib/<library>/include), which its CMake would add
     include_dirs = _own_include_dirs(path)

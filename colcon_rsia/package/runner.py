@@ -14,13 +14,13 @@ import time
 import traceback
 from typing import Optional
 
+from colcon_rsia.environment_variables import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
 from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
-from colcon_rsia.package.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.package.nodes import find_executables
 
 # package types whose build produces a compile database
@@ -116,7 +116,7 @@ def recorded_cmake_args(build_base):
 
 def default_header_mode():
     """The header mode when none is asked for (environment, else default)."""
-    return os.environ.get(HEADER_MODE_ENVIRONMENT_VARIABLE) or \
+    return os.environ.get(HEADER_MODE_ENVIRONMENT_VARIABLE.name) or \
         DEFAULT_HEADER_MODE
 
 

@@ -29,7 +29,6 @@ from typing import Tuple
 from colcon_rsia.report.layout import BOX_HEIGHT
 from colcon_rsia.report.layout import label_width
 from colcon_rsia.report.layout import layered_layout
-import networkx as nx
 
 DOT_TIMEOUT_S = 120
 POINTS_PER_INCH = 72.0
@@ -309,6 +308,8 @@ def _spline_path(pos, to_page):
 
 def apply_built_in_layout(drawing):
     """Lay out with the built-in layered layout (top to bottom)."""
+    # imported here, as in colcon_rsia.system.graph: only when used
+    import networkx as nx
     graph = nx.DiGraph()
     vertex_of = {}
     for vertex in drawing.vertices:

@@ -7,9 +7,8 @@ import time
 from colcon_core.logging import colcon_logger
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
-from colcon_rsia.package.coverage import total_line
-from colcon_rsia.package.coverage import workspace_report
-from colcon_rsia.package.runner import analyze
+from colcon_rsia.environment_variables import \
+    HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_workspace_arguments
 
@@ -31,13 +30,19 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             help='model: parse with the model headers of the ROS API and '
                  'stand-ins for the rest (fast, needs no ROS installation); '
                  'exact: with the headers the compiler used. Default: the '
-                 'COLCON_RSIA_HEADER_MODE environment variable, else model')
+                 f'{HEADER_MODE_ENVIRONMENT_VARIABLE.name} environment '
+                 'variable, else model')
         parser.add_argument(
             '--jobs', type=int, default=None,
             help='Translation units parsed in parallel (default: the number '
                  'of CPUs)')
 
     def main(self, *, context):  # noqa: D102
+        # imported here: every colcon call loads this module, only
+        # `colcon rsia analyze` needs the analysis
+        from colcon_rsia.package.coverage import total_line
+        from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.package.runner import analyze
         args = context.args
         packages = get_packages(args)
         decorators = [d for d in packages if d.selected]

@@ -11,6 +11,7 @@ the root namespace, named after its executable.
 
 from dataclasses import dataclass
 from dataclasses import field
+from typing import Any
 from typing import Dict
 from typing import List
 from typing import Optional
@@ -20,7 +21,6 @@ from colcon_rsia import model
 from colcon_rsia.system.names import join
 from colcon_rsia.system.names import node_fqn
 from colcon_rsia.system.names import resolve
-import networkx as nx
 
 GRAPH_SCHEMA = 'colcon-rsia/graph@1'
 
@@ -50,12 +50,20 @@ class Instance:
         return self.node.kind if self.node is not None else 'unknown'
 
 
+def _new_digraph():
+    # imported when a graph is built, not with the module: networkx takes
+    # ~50 ms to import, and every colcon call (--help, completion) loads
+    # the rsia subverbs and with them this module
+    import networkx
+    return networkx.DiGraph()
+
+
 @dataclass
 class SystemGraph:
     """Instances, topics and the networkx graph joining them."""
 
     instances: Dict[str, Instance] = field(default_factory=dict)
-    graph: nx.DiGraph = field(default_factory=nx.DiGraph)
+    graph: Any = field(default_factory=_new_digraph)  # a networkx.DiGraph
     notes: List[str] = field(default_factory=list)
 
     def topics(self):

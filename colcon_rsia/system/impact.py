@@ -6,7 +6,6 @@ import difflib
 
 from colcon_rsia import model
 from colcon_rsia.system.graph import ALL_INPUTS
-import networkx as nx
 
 IMPACT_SCHEMA = 'colcon-rsia/impact@1'
 IMPACT_ALL_SCHEMA = 'colcon-rsia/impact-all@1'
@@ -173,6 +172,9 @@ def _closures(states, edges, bit):
     reverse topological order), so that every node's impact set is a union
     of its successors' closures instead of a traversal of its own.
     """
+    # imported here: loading the module (every colcon call does) must not
+    # cost networkx's import time
+    import networkx as nx
     graph = nx.DiGraph()
     graph.add_nodes_from(states)
     graph.add_edges_from(edges)

@@ -1,0 +1,30 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The environment variables colcon-rsia reads.
+
+Registered as ``colcon_core.environment_variable`` entry points, so that
+``colcon --help`` lists them. This module is imported on every colcon
+call for that: it must stay this small.
+"""
+
+from colcon_core.environment_variable import EnvironmentVariable
+
+"""Environment variable choosing the header mode of the analysis"""
+HEADER_MODE_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_HEADER_MODE',
+    'The header mode of the rsia analysis: model (default) or exact')
+
+"""Environment variable with the C++ standard used without a build"""
+CXX_STD_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_CXX_STD',
+    'The C++ standard rsia parses a package without a compile database '
+    'with (default: c++17)')
+
+"""Environment variable to override the clang resource directory"""
+CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_CLANG_RESOURCE_DIR',
+    'A clang resource directory (with include/stddef.h) for rsia to use '
+    'instead of the newest /usr/lib/llvm-*/lib/clang/*')
+
+# the name it had before it followed colcon's COLCON_ prefix; still read
+OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'
