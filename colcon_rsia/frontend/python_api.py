@@ -65,8 +65,8 @@ sleeps that do not adapt (recognised so   ``rospy.sleep``, ``time.sleep``
 that they are never taken for a Rate)
 ========================================  ===================================
 
-Sources: ``../shared/reference/ros-api.md`` section 3 (rospy and actionlib
-noetic, rclpy humble/jazzy/rolling, message_filters, tf2_ros and tf).
+Sources: the API documentation of rospy and actionlib (noetic), rclpy
+(humble/jazzy/rolling), message_filters, tf2_ros and tf.
 """
 
 from dataclasses import dataclass

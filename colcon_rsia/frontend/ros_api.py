@@ -7,7 +7,7 @@ This is data, not code. A call is recognised by the qualified name of the
 of the object it is called on. Argument positions are 0-based and count only
 the arguments written at the call site (not the object).
 
-Sources: ``../shared/reference/ros-api.md`` (Debian ROS 1 headers, Noetic)
+Sources: the API documentation and Debian's ROS 1 headers (Noetic)
 and the public sources of rclcpp, image_common, message_filters,
 realtime_tools, diagnostics and geometry2 (Humble, Jazzy, Rolling). Where
 an overload set moves an argument between forms (the free rclcpp

@@ -35,7 +35,7 @@ EXPORT_FLAG = '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'
 
 # the header mode unless asked otherwise: on the test workspaces the model
 # headers give the same facts as the real ones at a fifth of the parse time
-# (see the README's measurements); 'exact' remains for code whose ROS calls
+# (see docs/usage.md, Header modes); 'exact' remains for code whose ROS calls
 # take types from libraries the model does not know
 DEFAULT_HEADER_MODE = 'model'
 

@@ -248,7 +248,7 @@ def _connect_unknown(system, instance):
 
 
 def graph_to_json(system):
-    """The graph@1 contract (see the README)."""
+    """The graph@1 contract (see docs/json.md)."""
     nodes = []
     for instance in sorted(system.instances.values(), key=lambda i: i.id):
         node = instance.node

@@ -131,7 +131,7 @@ def _untriggered_json(system, node_id, via, topic):
 
 
 def impact_to_json(system, changed, model_name=PAPER):
-    """The impact@1 contract (see the README); `changed` are instance ids.
+    """The impact@1 contract (see docs/json.md); `changed` are instance ids.
 
     ``rate_impact`` is the set under `model_name`; both models' sets and
     the edges that make the trigger model's smaller are there too.

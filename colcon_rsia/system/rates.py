@@ -218,7 +218,7 @@ def what_if(system, *, set_rates=None, changed=(), model_name=PAPER):
 
 
 def rates_to_json(system, *, set_rates=None, changed=(), model_name=PAPER):
-    """The rates@1 contract (see docs/rates.md)."""
+    """The rates@1 contract (see docs/triggers-and-rates.md)."""
     rates = predict_rates(system, set_rates=set_rates, changed=changed)
     result = {
         'schema': RATES_SCHEMA,

@@ -1,7 +1,7 @@
 // colcon-rsia model of <rclcpp/rclcpp.hpp> (ROS 2, Humble/Jazzy/Rolling):
 // declarations of the rclcpp API the analysis recognises, written from the
-// documented signatures (shared/reference/ros-api.md section 2, checked
-// against ros2/rclcpp node.hpp, create_*.hpp, rate.hpp, publisher.hpp).
+// documented signatures of the rclcpp API documentation, checked against
+// ros2/rclcpp node.hpp, create_*.hpp, rate.hpp, publisher.hpp).
 // Every other rclcpp header of the model includes this one.
 // RSIA_MODEL_RCLCPP tells the headers ROS 1 and ROS 2 share (tf2_ros/*.h)
 // which API to declare.

@@ -1,5 +1,5 @@
 // colcon-rsia model of <rclcpp_action/rclcpp_action.hpp> (ROS 2): written
-// from the documented signatures (ros-api.md section 2.6).
+// from the documented signatures (the rclcpp_action API documentation).
 #ifndef RSIA_MODEL_RCLCPP_ACTION_RCLCPP_ACTION_HPP
 #define RSIA_MODEL_RCLCPP_ACTION_RCLCPP_ACTION_HPP
 

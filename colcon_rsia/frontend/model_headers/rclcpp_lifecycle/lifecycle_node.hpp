@@ -1,5 +1,6 @@
 // colcon-rsia model of <rclcpp_lifecycle/lifecycle_node.hpp> (ROS 2):
-// written from the documented signatures (ros-api.md section 2.5).
+// written from the documented signatures (the rclcpp_lifecycle API
+// documentation).
 #ifndef RSIA_MODEL_RCLCPP_LIFECYCLE_LIFECYCLE_NODE_HPP
 #define RSIA_MODEL_RCLCPP_LIFECYCLE_LIFECYCLE_NODE_HPP
 
