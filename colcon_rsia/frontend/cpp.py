@@ -567,9 +567,12 @@ class _Walker:
             for child in children:
                 self._visit(child, ctx, stack)
             ctx.loops.pop()
-        elif kind in (CK.IF_STMT, CK.SWITCH_STMT,
-                      CK.CONDITIONAL_OPERATOR) and children:
-            # the condition runs every time; the branches may not
+        elif children and (
+                kind in (CK.IF_STMT, CK.SWITCH_STMT, CK.CONDITIONAL_OPERATOR,
+                         CK.CXX_TRY_STMT) or
+                kind == CK.BINARY_OPERATOR and _is_logical(cursor, children)):
+            # the condition (the try block, the left operand) runs every
+            # time; the branches (the handlers, the right operand) may not
             self._visit(children[0], ctx, stack)
             ctx.conditional += 1
             for child in children[1:]:
@@ -1219,6 +1222,8 @@ class _Walker:
         loop_id, conditional_at_entry, loop = ctx.loops[-1]
         if ctx.conditional != conditional_at_entry:
             return  # a sleep that may be skipped does not pace the loop
+        if _continue_before(loop, cursor):
+            return  # an iteration may end before the sleep
         declared = handle.extent.start
         if declared.file is not None and loop.extent.start.file is not None \
                 and declared.file.name == loop.extent.start.file.name and \
@@ -1369,6 +1374,35 @@ def _camera_info(topic):
         return None
     head, _, _ = topic.rpartition('/')
     return f'{head}/camera_info' if head else 'camera_info'
+
+
+def _is_logical(cursor, operands):
+    """Whether a binary operator is ``||`` or ``&&`` (short-circuiting)."""
+    if len(operands) != 2:
+        return False
+    # only the tokens between the operands: the operator
+    between = ci.SourceRange.from_locations(
+        operands[0].extent.end, operands[1].extent.start)
+    return any(t.spelling in ('||', '&&', 'or', 'and')
+               for t in cursor.translation_unit.get_tokens(extent=between))
+
+
+def _continue_before(loop, sleep):
+    """Whether a `continue` of this loop comes before the sleep call."""
+    file = sleep.extent.start.file
+    where = sleep.extent.start.offset
+    todo = _children(loop)
+    while todo:
+        current = todo.pop()
+        if current.kind == CK.CONTINUE_STMT and \
+                current.extent.start.file is not None and file is not None \
+                and current.extent.start.file.name == file.name and \
+                current.extent.start.offset < where:
+            return True
+        if current.kind in LOOP_KINDS or current.kind == CK.LAMBDA_EXPR:
+            continue  # an inner loop's continue is its own
+        todo.extend(_children(current))
+    return False
 
 
 def _binary_operator(cursor, left):

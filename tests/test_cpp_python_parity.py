@@ -1,0 +1,271 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The same code in C++ and in Python gives the same labels.
+
+Each pattern is written twice, as a roscpp node and as a rospy node of one
+catkin package, which is analysed unbuilt (model headers): both front ends
+must label the publisher of ``out`` alike, and as written here by hand.
+"""
+
+from colcon_rsia.package.runner import analyze
+import pytest
+
+# every node subscribes to `in` (so it has an input) and publishes `out`
+# through publishOne (a function only the pattern calls: a function nobody
+# calls would be a root of its own)
+CPP = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <stdexcept>
+
+void onIn(const std_msgs::String::ConstPtr&) {{}}
+ros::Publisher pub;
+void publishOne() {{ pub.publish(std_msgs::String()); }}
+
+int main(int argc, char** argv) {{
+  ros::init(argc, argv, "{name}");
+  ros::NodeHandle nh;
+  ros::Subscriber sub = nh.subscribe("in", 1, onIn);
+  pub = nh.advertise<std_msgs::String>("out", 1);
+  ros::Rate rate(10);
+  bool busy = argc > 5;
+  int n = 0;
+{body}
+  return 0;
+}}
+"""
+
+PY = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+pub = None
+
+
+def on_in(msg):
+    pass
+
+
+def publish_one():
+    pub.publish(String())
+
+
+def main():
+    global pub
+    rospy.init_node('{name}')
+    rospy.Subscriber('in', String, on_in)
+    pub = rospy.Publisher('out', String, queue_size=1)
+    rate = rospy.Rate(10)
+    busy = len(rospy.myargv()) > 5
+    n = 0
+{body}
+
+
+if __name__ == '__main__':
+    main()
+"""
+
+INDEPENDENT_RATE_LOOP = ('independent', 'rate_loop')
+INDEPENDENT_TIMER = ('independent', 'timer')
+DEPENDENT = ('dependent', 'none')
+
+# name: (C++ body of main, Python body of main, expected (label, pattern))
+PATTERNS = {
+    'rate_loop': ("""
+  while (ros::ok()) {
+    publishOne();
+    rate.sleep();
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        rate.sleep()""", INDEPENDENT_RATE_LOOP),
+    'timer': ("""
+  ros::Timer timer = nh.createTimer(
+      ros::Duration(0.1), [](const ros::TimerEvent&) { publishOne(); });
+  ros::spin();""", """
+    rospy.Timer(rospy.Duration(0.1), lambda event: publish_one())
+    rospy.spin()""", INDEPENDENT_TIMER),
+    'continue_before_sleep': ("""
+  while (ros::ok()) {
+    publishOne();
+    if (++n % 2) {
+      continue;
+    }
+    rate.sleep();
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        n += 1
+        if n % 2:
+            continue
+        rate.sleep()""", DEPENDENT),
+    'continue_after_sleep': ("""
+  while (ros::ok()) {
+    publishOne();
+    rate.sleep();
+    if (++n % 2) {
+      continue;
+    }
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        rate.sleep()
+        n += 1
+        if n % 2:
+            continue""", INDEPENDENT_RATE_LOOP),
+    'sleep_behind_or': ("""
+  while (ros::ok()) {
+    publishOne();
+    bool slept = busy || rate.sleep();
+    (void)slept;
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        slept = busy or rate.sleep()""", DEPENDENT),
+    'sleep_behind_and': ("""
+  while (ros::ok()) {
+    publishOne();
+    bool slept = busy && rate.sleep();
+    (void)slept;
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        slept = busy and rate.sleep()""", DEPENDENT),
+    'sleep_in_catch': ("""
+  while (ros::ok()) {
+    try {
+      publishOne();
+    } catch (const std::exception&) {
+      rate.sleep();
+    }
+  }""", """
+    while not rospy.is_shutdown():
+        try:
+            publish_one()
+        except Exception:
+            rate.sleep()""", DEPENDENT),
+    'sleep_in_try': ("""
+  while (ros::ok()) {
+    try {
+      publishOne();
+      rate.sleep();
+    } catch (const std::exception&) {
+      n = 0;
+    }
+  }""", """
+    while not rospy.is_shutdown():
+        try:
+            publish_one()
+            rate.sleep()
+        except Exception:
+            n = 0""", INDEPENDENT_RATE_LOOP),
+    'sleep_in_branch': ("""
+  while (ros::ok()) {
+    publishOne();
+    if (busy) {
+      rate.sleep();
+    }
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        if busy:
+            rate.sleep()""", DEPENDENT),
+    'nested_loops': ("""
+  while (ros::ok()) {
+    for (int i = 0; i < 3; ++i) {
+      publishOne();
+    }
+    rate.sleep();
+  }""", """
+    while not rospy.is_shutdown():
+        for i in range(3):
+            publish_one()
+        rate.sleep()""", INDEPENDENT_RATE_LOOP),
+    'sleep_in_inner_loop': ("""
+  while (ros::ok()) {
+    publishOne();
+    for (int i = 0; i < 3; ++i) {
+      rate.sleep();
+    }
+  }""", """
+    while not rospy.is_shutdown():
+        publish_one()
+        for i in range(3):
+            rate.sleep()""", DEPENDENT),
+    'inner_continue_before_sleep': ("""
+  while (ros::ok()) {
+    for (int i = 0; i < 3; ++i) {
+      if (i == n) {
+        continue;
+      }
+      publishOne();
+    }
+    rate.sleep();
+  }""", """
+    while not rospy.is_shutdown():
+        for i in range(3):
+            if i == n:
+                continue
+            publish_one()
+        rate.sleep()""", INDEPENDENT_RATE_LOOP),
+    'publish_in_callback': ("""
+  ros::Subscriber relay = nh.subscribe<std_msgs::String>(
+      "relay_in", 1, [](const std_msgs::String::ConstPtr&) { publishOne(); });
+  ros::spin();""", """
+    rospy.Subscriber('relay_in', String, lambda msg: publish_one())
+    rospy.spin()""", DEPENDENT),
+}
+
+
+@pytest.fixture(scope='module')
+def labels(tmp_path_factory):
+    """{(language, pattern): (label, pattern)} of the `out` publishers."""
+    root = tmp_path_factory.mktemp('parity')
+    package = root / 'src' / 'parity'
+    (package / 'src').mkdir(parents=True)
+    (package / 'scripts').mkdir()
+    (package / 'package.xml').write_text(
+        '<?xml version="1.0"?>\n<package format="2">\n'
+        '  <name>parity</name>\n  <version>0.0.1</version>\n'
+        '  <description>test</description>\n'
+        '  <maintainer email="a@b.c">a</maintainer>\n'
+        '  <license>BSD</license>\n'
+        '  <buildtool_depend>catkin</buildtool_depend>\n'
+        '  <depend>roscpp</depend>\n  <depend>rospy</depend>\n'
+        '  <depend>std_msgs</depend>\n</package>\n')
+    cmake = ['cmake_minimum_required(VERSION 3.10)', 'project(parity)',
+             'find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)',
+             'catkin_package()',
+             'include_directories(${catkin_INCLUDE_DIRS})']
+    for name, (cpp_body, py_body, _) in PATTERNS.items():
+        (package / 'src' / f'{name}.cpp').write_text(
+            CPP.format(name=name, body=cpp_body.strip('\n')))
+        script = package / 'scripts' / f'py_{name}'
+        script.write_text(PY.format(name=f'py_{name}',
+                                    body=py_body.strip('\n')))
+        script.chmod(0o755)
+        cmake.append(f'add_executable({name} src/{name}.cpp)')
+    cmake.append('catkin_install_python(PROGRAMS ' + ' '.join(
+        f'scripts/py_{name}' for name in PATTERNS) +
+        ' DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})')
+    (package / 'CMakeLists.txt').write_text('\n'.join(cmake) + '\n')
+    outcome = analyze(
+        name='parity', package_type='ros.catkin', path=str(package),
+        build_base=str(root / 'build' / 'parity'), header_mode='model',
+        workspace_package_dirs=[str(package)], without_build=True)
+    assert outcome.summary is not None, outcome.error
+    found = {}
+    for node in outcome.summary.nodes:
+        language = 'python' if node.executable.startswith('py_') else 'cpp'
+        name = node.executable[3:] if language == 'python' \
+            else node.executable
+        for publisher in node.publishers:
+            if publisher.topic == 'out':
+                found[(language, name)] = (publisher.label, publisher.pattern)
+    return found
+
+
+@pytest.mark.parametrize('name', sorted(PATTERNS))
+def test_cpp_and_python_label_alike(labels, name):
+    expected = PATTERNS[name][2]
+    assert labels.get(('cpp', name)) == expected
+    assert labels.get(('python', name)) == expected
