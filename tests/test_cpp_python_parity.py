@@ -1,13 +1,16 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
-"""The same code in C++ and in Python gives the same labels.
+"""The same code in C++ and in Python gives the same labels and names.
 
 Each pattern is written twice, as a roscpp node and as a rospy node of one
 catkin package, which is analysed unbuilt (model headers): both front ends
-must label the publisher of ``out`` alike, and as written here by hand.
+must label the publisher of ``out`` alike and resolve topic names alike,
+as written here by hand.
 """
 
 from colcon_rsia.package.runner import analyze
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.load import load_system
 import pytest
 
 # every node subscribes to `in` (so it has an input) and publishes `out`
@@ -216,9 +219,43 @@ PATTERNS = {
 }
 
 
+# name: (C++ body, Python body, the name `named` publishes, resolved, when
+# the node runs in the root namespace without a launch file)
+NAME_PATTERNS = {
+    'name_from_private_parameter': ("""
+  ros::NodeHandle pnh("~");
+  std::string topic;
+  pnh.param<std::string>("topic", topic, "chatter");
+  ros::Publisher named = nh.advertise<std_msgs::String>(topic, 1);
+  ros::spin();""", """
+    named = rospy.Publisher(
+        rospy.get_param('~topic', 'chatter'), String, queue_size=1)
+    rospy.spin()""", '/chatter'),
+    'name_from_a_variable_set_once': ("""
+  std::string topic = "scan";
+  ros::Publisher named = nh.advertise<std_msgs::String>(topic, 1);
+  ros::spin();""", """
+    topic = 'scan'
+    named = rospy.Publisher(topic, String, queue_size=1)
+    rospy.spin()""", '/scan'),
+    'name_set_twice_is_not_known': ("""
+  std::string topic = "scan";
+  if (busy) {
+    topic = "other";
+  }
+  ros::Publisher named = nh.advertise<std_msgs::String>(topic, 1);
+  ros::spin();""", """
+    topic = 'scan'
+    if busy:
+        topic = 'other'
+    named = rospy.Publisher(topic, String, queue_size=1)
+    rospy.spin()""", None),
+}
+
+
 @pytest.fixture(scope='module')
-def labels(tmp_path_factory):
-    """{(language, pattern): (label, pattern)} of the `out` publishers."""
+def summary(tmp_path_factory):
+    """The summary of the package holding every pattern in both languages."""
     root = tmp_path_factory.mktemp('parity')
     package = root / 'src' / 'parity'
     (package / 'src').mkdir(parents=True)
@@ -236,7 +273,8 @@ def labels(tmp_path_factory):
              'find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)',
              'catkin_package()',
              'include_directories(${catkin_INCLUDE_DIRS})']
-    for name, (cpp_body, py_body, _) in PATTERNS.items():
+    patterns = dict(PATTERNS, **NAME_PATTERNS)
+    for name, (cpp_body, py_body, _) in patterns.items():
         (package / 'src' / f'{name}.cpp').write_text(
             CPP.format(name=name, body=cpp_body.strip('\n')))
         script = package / 'scripts' / f'py_{name}'
@@ -245,7 +283,7 @@ def labels(tmp_path_factory):
         script.chmod(0o755)
         cmake.append(f'add_executable({name} src/{name}.cpp)')
     cmake.append('catkin_install_python(PROGRAMS ' + ' '.join(
-        f'scripts/py_{name}' for name in PATTERNS) +
+        f'scripts/py_{name}' for name in patterns) +
         ' DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})')
     (package / 'CMakeLists.txt').write_text('\n'.join(cmake) + '\n')
     outcome = analyze(
@@ -253,11 +291,21 @@ def labels(tmp_path_factory):
         build_base=str(root / 'build' / 'parity'), header_mode='model',
         workspace_package_dirs=[str(package)], without_build=True)
     assert outcome.summary is not None, outcome.error
+    return outcome.summary
+
+
+def _split(executable):
+    if executable.startswith('py_'):
+        return 'python', executable[3:]
+    return 'cpp', executable
+
+
+@pytest.fixture(scope='module')
+def labels(summary):
+    """{(language, pattern): (label, pattern)} of the `out` publishers."""
     found = {}
-    for node in outcome.summary.nodes:
-        language = 'python' if node.executable.startswith('py_') else 'cpp'
-        name = node.executable[3:] if language == 'python' \
-            else node.executable
+    for node in summary.nodes:
+        language, name = _split(node.executable)
         for publisher in node.publishers:
             if publisher.topic == 'out':
                 found[(language, name)] = (publisher.label, publisher.pattern)
@@ -269,3 +317,22 @@ def test_cpp_and_python_label_alike(labels, name):
     expected = PATTERNS[name][2]
     assert labels.get(('cpp', name)) == expected
     assert labels.get(('python', name)) == expected
+
+
+@pytest.fixture(scope='module')
+def resolved_names(summary):
+    """{(language, pattern): resolved name of `named`} in the graph."""
+    found = {}
+    for node in graph_to_json(load_system([summary]))['nodes']:
+        language, name = _split(node['executable'])
+        for publisher in node['publishers']:
+            if publisher['topic'] != 'out':
+                found[(language, name)] = publisher['resolved']
+    return found
+
+
+@pytest.mark.parametrize('name', sorted(NAME_PATTERNS))
+def test_cpp_and_python_resolve_names_alike(resolved_names, name):
+    expected = NAME_PATTERNS[name][2]
+    assert resolved_names.get(('cpp', name), 'missing') == expected
+    assert resolved_names.get(('python', name), 'missing') == expected

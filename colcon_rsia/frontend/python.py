@@ -46,6 +46,8 @@ and other dynamic code, ``getattr`` with computed names.
 import ast
 import io
 import os
+import re
+import string
 import tokenize
 
 from colcon_rsia import model
@@ -56,6 +58,8 @@ MODULE_FUNCTION = '<module>'
 
 # how deep the evaluation of one expression may go (names bound to names…)
 MAX_DEPTH = 32
+# a name longer than this is no topic name: not computed
+MAX_STRING = 1000
 # parsed modules kept between calls (keyed by path and stat)
 _CACHE_LIMIT = 512
 _MODULE_CACHE = {}
@@ -498,6 +502,7 @@ class _Project:
         self._memo = {}
         self._active = set()
         self._numbers_active = set()
+        self._strings_active = set()
         self._mro = {}
 
     def load(self, name):
@@ -869,6 +874,156 @@ class _Project:
             return self.number(sites[0][0], sites[0][1], depth)
         finally:
             self._numbers_active.discard(key)
+
+    # strings (names) -----------------------------------------------------
+
+    def sole_source(self, expr, scope, depth=0):
+        """(expression, scope) a name or attribute is assigned, when once.
+
+        None when it is bound more than once, not by ``=`` (a parameter,
+        a loop variable), or cannot be found: its value is not known.
+        """
+        if isinstance(expr, ast.Name):
+            owner = _lookup(scope, expr.id)
+            return self._sole_binding(owner, expr.id, depth) \
+                if owner is not None else None
+        if not isinstance(expr, ast.Attribute):
+            return None
+        base = self.value(expr.value, scope, depth)
+        if base is None:
+            return None
+        if base.kind == MODULE:
+            module = self.module(base.ref)
+            return self._sole_binding(module.scope, expr.attr, depth) \
+                if module is not None else None
+        if base.kind not in (OBJ, CLASS):
+            return None
+        sites = []
+        for current in self.mro(base.ref)[0]:
+            sites += current.attrs.get(expr.attr, [])
+            sites += [(payload if kind == 'assign' else None, where)
+                      for kind, payload, where in
+                      current.scope.bindings.get(expr.attr, ())]
+        if len(sites) != 1 or sites[0][0] is None:
+            return None
+        return sites[0]
+
+    def _sole_binding(self, owner, name, depth):
+        entries = owner.bindings.get(name, ())
+        if len(entries) != 1 or depth > MAX_DEPTH:
+            return None
+        kind, payload, where = entries[0]
+        if kind == 'assign':
+            return payload, where
+        if kind == 'import':
+            module_name, _, attr = payload.rpartition('.')
+            module = self.module(module_name) \
+                if module_name in self.package_modules else None
+            if module is not None:
+                return self._sole_binding(module.scope, attr, depth + 1)
+        return None
+
+    def string(self, expr, scope, depth=0):
+        """A constant string, as C++ names are resolved.
+
+        Literals, names and attributes assigned once (module and class
+        constants), ``+``, ``%`` with ``%s``, f-strings and ``str.format``
+        over known strings and numbers.
+        """
+        if expr is None or depth > MAX_DEPTH:
+            return None
+        key = (id(expr), id(scope))
+        if key in self._strings_active:
+            return None  # defined by itself
+        self._strings_active.add(key)
+        try:
+            text = self._string(expr, scope, depth + 1)
+        finally:
+            self._strings_active.discard(key)
+        return text if text is None or len(text) <= MAX_STRING else None
+
+    def _string(self, expr, scope, depth):
+        if isinstance(expr, ast.Constant):
+            return expr.value if isinstance(expr.value, str) else None
+        if isinstance(expr, (ast.Name, ast.Attribute)):
+            source = self.sole_source(expr, scope, depth)
+            return self.string(source[0], source[1], depth) \
+                if source is not None else None
+        if isinstance(expr, ast.JoinedStr):
+            parts = []
+            for part in expr.values:
+                if isinstance(part, ast.FormattedValue):
+                    if part.format_spec is not None or \
+                            part.conversion not in (-1, ord('s')):
+                        return None
+                    part = self._formattable(part.value, scope, depth)
+                elif isinstance(part, ast.Constant):
+                    part = str(part.value)
+                if not isinstance(part, str):
+                    return None
+                parts.append(part)
+            return ''.join(parts)
+        if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Add):
+            left = self.string(expr.left, scope, depth)
+            right = self.string(expr.right, scope, depth) \
+                if left is not None else None
+            return left + right if right is not None else None
+        if isinstance(expr, ast.BinOp) and isinstance(expr.op, ast.Mod):
+            return self._percent(expr, scope, depth)
+        if isinstance(expr, ast.Call) and \
+                isinstance(expr.func, ast.Attribute) and \
+                expr.func.attr == 'format':
+            return self._format(expr, scope, depth)
+        return None
+
+    def _formattable(self, expr, scope, depth):
+        """A value as ``%s``/``{}`` print it: a known string or number."""
+        text = self.string(expr, scope, depth)
+        if text is not None:
+            return text
+        number = self.number(expr, scope, depth)
+        return str(number) if number is not None else None
+
+    def _percent(self, expr, scope, depth):
+        """``'%s/cmd_vel' % name``: only ``%s`` (and ``%%``)."""
+        template = self.string(expr.left, scope, depth)
+        if template is None or re.search(r'%(?![s%])', template):
+            return None
+        items = expr.right.elts if isinstance(expr.right, ast.Tuple) \
+            else [expr.right]
+        values = [self._formattable(item, scope, depth) for item in items]
+        if None in values:
+            return None
+        try:
+            return template % tuple(values)
+        except (TypeError, ValueError):
+            return None
+
+    def _format(self, call, scope, depth):
+        """``'{}/scan'.format(ns)``: plain fields, no attribute or index."""
+        template = self.string(call.func.value, scope, depth)
+        if template is None or any(
+                isinstance(a, ast.Starred) for a in call.args) or any(
+                k.arg is None for k in call.keywords):
+            return None
+        try:
+            fields = list(string.Formatter().parse(template))
+        except ValueError:
+            return None
+        for _, field, spec, conversion in fields:
+            if field is not None and (
+                    spec or conversion not in (None, 's') or
+                    not re.fullmatch(r'\d*|[A-Za-z_]\w*', field)):
+                return None
+        args = [self._formattable(a, scope, depth) for a in call.args]
+        kwargs = {k.arg: self._formattable(k.value, scope, depth)
+                  for k in call.keywords}
+        if None in args or None in kwargs.values():
+            return None
+        try:
+            return template.format(*args, **kwargs)
+        except (IndexError, KeyError, ValueError):
+            return None
 
     # handles -------------------------------------------------------------
 
@@ -1364,13 +1519,80 @@ class _Extractor:
 
     # --- argument helpers -------------------------------------------------
 
-    def _topic(self, expr):
-        """(name as written, is it a string literal)."""
+    def _topic(self, expr, context):
+        """(the name, is it known): known when a constant string.
+
+        As in C++, a name is known when it is a literal, a constant (a
+        name or attribute assigned once), or built from known values;
+        else it is given as written.
+        """
         if expr is None:
             return None, False
-        if isinstance(expr, ast.Constant) and isinstance(expr.value, str):
-            return expr.value, True
+        name = self.project.string(expr, context.scope)
+        if name is not None:
+            return name, True
         return self.text(expr), False
+
+    def _topic_handle(self, expr, context):
+        """The parameter read a name that is not known comes from."""
+        read = self._param_read_of(expr, context.scope, 0)
+        return self._param_handle(*read) if read is not None else None
+
+    def _param_read_of(self, expr, scope, depth):
+        """(call, scope) of the parameter read `expr` takes its value from.
+
+        ``rospy.get_param('~topic', 'chatter')``,
+        ``self.declare_parameter('topic', 'scan').value``,
+        ``self.get_parameter('topic').get_parameter_value().string_value``,
+        or a name assigned once from one of them.
+        """
+        if expr is None or depth > MAX_DEPTH:
+            return None
+        if isinstance(expr, ast.Call):
+            return (expr, scope) if self._param_api(expr, scope) else None
+        if isinstance(expr, ast.Attribute) and \
+                expr.attr in ('value', 'string_value'):
+            inner = expr.value
+            if expr.attr == 'string_value' and \
+                    isinstance(inner, ast.Call) and not inner.args and \
+                    isinstance(inner.func, ast.Attribute) and \
+                    inner.func.attr == 'get_parameter_value':
+                inner = inner.func.value
+            read = self._param_read_of(inner, scope, depth + 1)
+            if read is not None:
+                return read
+        source = self.project.sole_source(expr, scope, depth)
+        return self._param_read_of(source[0], source[1], depth + 1) \
+            if source is not None else None
+
+    def _param_api(self, call, scope):
+        called = self.project.value(call.func, scope)
+        if called is None or called.kind not in (EXT, EXTBOUND):
+            return None
+        api = python_api.lookup(called.ref)
+        return api if api is not None and \
+            api.role == ros_api.PARAM_READ else None
+
+    def _param_handle(self, call, scope):
+        # the same for the read and for the topics taking its value
+        return f'param@{scope.module.relpath}:{call.lineno}:' \
+            f'{call.col_offset}'
+
+    def _on_param_read(self, api, name, node, context):
+        param = self.project.string(
+            _argument(node, api.name), context.scope)
+        if param is None:
+            return
+        namespace = '~' if api.node_private else ''
+        if param.startswith('~'):
+            # rospy: a private parameter
+            param, namespace = param[1:], '~'
+        default = self.project.string(
+            _argument(node, api.default), context.scope)
+        self.facts.param_reads.append(model.ParamRead(
+            function=context.function, name=param, default=default,
+            handle=self._param_handle(node, context.scope), nh=namespace,
+            location=self.location(node)))
 
     def _msg_type(self, expr, context):
         if expr is None:
@@ -1450,9 +1672,9 @@ class _Extractor:
             return
         written = _argument(node, (0, 'name')) or \
             _argument(node, (0, 'node_name'))
-        node_name, literal = self._topic(written)
+        node_name, literal = self._topic(written, context)
         namespace, ns_literal = self._topic(
-            _argument(node, (None, 'namespace')))
+            _argument(node, (None, 'namespace')), context)
         # super().__init__(node_name) in a base class of the package: the
         # name its subclasses pass
         name_param = self.project.handle(written, context.scope) \
@@ -1468,7 +1690,8 @@ class _Extractor:
         if api.implicit_topics:
             topics = [(topic, True) for topic in api.implicit_topics]
         else:
-            topic, literal = self._topic(_argument(node, api.name))
+            argument = _argument(node, api.name)
+            topic, literal = self._topic(argument, context)
             if topic is None:
                 return
             topics = [(topic, literal)]
@@ -1477,7 +1700,9 @@ class _Extractor:
             self.facts.publishers.append(model.PublisherFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
-                handle_name=handle_name, location=self.location(node)))
+                handle_name=handle_name, location=self.location(node),
+                topic_handle=None if literal else self._topic_handle(
+                    argument, context)))
 
     def _on_subscriber(self, api, name, node, context):
         name_arg, type_arg = api.name, api.msg_type_arg
@@ -1488,7 +1713,8 @@ class _Extractor:
         if api.implicit_topics:
             topics = [(topic, True) for topic in api.implicit_topics]
         else:
-            topic, literal = self._topic(_argument(node, name_arg))
+            argument = _argument(node, name_arg)
+            topic, literal = self._topic(argument, context)
             if topic is None:
                 return
             topics = [(topic, literal)]
@@ -1504,7 +1730,9 @@ class _Extractor:
             self.facts.subscribers.append(model.SubscriberFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
-                callback=callback, location=self.location(node)))
+                callback=callback, location=self.location(node),
+                topic_handle=None if literal else self._topic_handle(
+                    argument, context)))
 
     def _on_timer(self, api, name, node, context):
         callback, _, _ = self._callback(
@@ -1517,7 +1745,7 @@ class _Extractor:
             location=self.location(node)))
 
     def _on_service(self, api, name, node, context):
-        service, _ = self._topic(_argument(node, api.name))
+        service, _ = self._topic(_argument(node, api.name), context)
         callback, _, _ = self._callback(
             _argument(node, api.callback), context)
         self.facts.services.append(model.ServiceFact(
@@ -1525,7 +1753,7 @@ class _Extractor:
             callback=callback, location=self.location(node)))
 
     def _on_service_client(self, api, name, node, context):
-        service, _ = self._topic(_argument(node, api.name))
+        service, _ = self._topic(_argument(node, api.name), context)
         self.facts.clients.append(model.ClientFact(
             function=context.function, api=name, name=service,
             location=self.location(node)))
@@ -1540,7 +1768,7 @@ class _Extractor:
         registration = api.name is None
         action = None
         if not registration:
-            action, _ = self._topic(_argument(node, api.name))
+            action, _ = self._topic(_argument(node, api.name), context)
         callbacks = []
         specs = ((api.callback,) if api.callback else ()) + \
             api.extra_callbacks
@@ -1684,4 +1912,5 @@ _ROLES = {
     ros_api.REGISTER_CALLBACK: _Extractor._on_register_callback,
     ros_api.NODE_HANDLE: _Extractor._on_node_handle,
     python_api.SERVICE_CLIENT: _Extractor._on_service_client,
+    ros_api.PARAM_READ: _Extractor._on_param_read,
 }

@@ -63,6 +63,9 @@ message_filters synchronisers             ``message_filters.TimeSynchronizer``,
                                           ``Cache``; ``registerCallback``
 sleeps that do not adapt (recognised so   ``rospy.sleep``, ``time.sleep``
 that they are never taken for a Rate)
+parameter reads (a topic name may come    ``rospy.get_param``,
+from one)                                 ``rclpy.node.Node.declare_parameter``,
+                                          ``rclpy.node.Node.get_parameter``
 ========================================  ===================================
 
 Sources: the API documentation of rospy and actionlib (noetic), rclpy
@@ -75,6 +78,7 @@ from typing import Optional
 from colcon_rsia.frontend.ros_api import ACTION_CLIENT
 from colcon_rsia.frontend.ros_api import ACTION_SERVER
 from colcon_rsia.frontend.ros_api import NODE_HANDLE
+from colcon_rsia.frontend.ros_api import PARAM_READ
 from colcon_rsia.frontend.ros_api import PUBLISH
 from colcon_rsia.frontend.ros_api import PUBLISHER
 from colcon_rsia.frontend.ros_api import RATE
@@ -129,6 +133,10 @@ class PyApi:
     # Subscriber(topic, Type), used when the first argument is a string or
     # only two positional arguments are given
     ros1_form: Optional[tuple] = None
+    # PARAM_READ: (position, keyword) of the default value
+    default: Optional[tuple] = None
+    # PARAM_READ: ROS 2 parameters always belong to the node itself
+    node_private: bool = False
 
 
 NODE = NODE_CLASS + '.'
@@ -136,6 +144,8 @@ NODE = NODE_CLASS + '.'
 CALLS = {
     # --- rospy (ROS 1) ---
     'rospy.init_node': PyApi(NODE_HANDLE),
+    'rospy.get_param': PyApi(
+        PARAM_READ, name=(0, 'param_name'), default=(1, 'default')),
     'rospy.Publisher': PyApi(
         PUBLISHER, name=(0, 'name'), msg_type_arg=(1, 'data_class')),
     'rospy.Publisher.publish': PyApi(PUBLISH),
@@ -186,6 +196,14 @@ CALLS = {
     NODE + 'create_timer': PyApi(
         TIMER, period=(0, 'timer_period_sec'), period_unit=SECONDS,
         callback=(1, 'callback'), returns='rclpy.timer.Timer'),
+    # parameter reads: a topic name may come from one (the value of
+    # declare_parameter/get_parameter is read through .value or
+    # .get_parameter_value().string_value)
+    NODE + 'declare_parameter': PyApi(
+        PARAM_READ, name=(0, 'name'), default=(1, 'value'),
+        node_private=True),
+    NODE + 'get_parameter': PyApi(
+        PARAM_READ, name=(0, 'name'), node_private=True),
     NODE + 'create_rate': PyApi(
         RATE, period=(0, 'frequency'), period_unit=HZ,
         returns='rclpy.timer.Rate'),
