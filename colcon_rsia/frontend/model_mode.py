@@ -34,6 +34,8 @@ import re
 import tempfile
 import threading
 
+from colcon_rsia import safe_files
+
 MODEL_HEADERS_DIR = os.path.join(
     os.path.dirname(os.path.abspath(__file__)), 'model_headers')
 
@@ -384,8 +386,8 @@ class _Scanner:
 
 def _read_text(path):
     try:
-        with open(path, 'rb') as h:
-            data = h.read()
+        # checked: a header may be a link to /dev/zero, or a FIFO
+        data = safe_files.read_bytes(path)
     except OSError:
         return None
     return data.decode('utf-8', errors='surrogateescape')

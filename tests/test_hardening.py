@@ -1,0 +1,236 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""A hostile contributor's files and a careless user's input (issue 16).
+
+Special files, huge files, crafted names and summaries, injected Markdown:
+each case gets one clear message, no traceback, no hang, and the other
+packages' results.
+"""
+
+import os
+from pathlib import Path
+import resource
+import subprocess
+
+from conftest import colcon_executable
+import pytest
+from test_faults import _package
+from test_faults import _summary
+from test_faults import GOOD_NODE
+
+# a hang is what the special files caused: anything near this is one
+HANG_TIMEOUT_S = 300
+# /dev/zero read whole grew colcon to 24 GB; an analysis stays far below
+MEMORY_LIMIT_BYTES = 4 * 1024 ** 3
+
+PYTHON_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>{name}</name><version>0.0.1</version><description>d</description>
+  <maintainer email="dev@example.com">m</maintainer><license>MIT</license>
+  <export><build_type>ament_python</build_type></export>
+</package>
+"""
+PYTHON_NODE = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Talker(Node):
+    def __init__(self):
+        super().__init__('talker')
+        self.pub = self.create_publisher(String, 'chatter', 10)
+        self.create_timer(0.5, self.tick)
+
+    def tick(self):
+        self.pub.publish(String())
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Talker())
+"""
+
+
+def _limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS,
+                       (MEMORY_LIMIT_BYTES, MEMORY_LIMIT_BYTES))
+
+
+def _colcon(args, *, cwd, env=None):
+    """colcon with a memory limit and a timeout (hangs fail, not block)."""
+    environment = dict(os.environ)
+    environment['COLCON_HOME'] = str(Path(cwd) / '.colcon_home')
+    environment.update(env or {})
+    return subprocess.run(
+        [colcon_executable()] + args, cwd=str(cwd), env=environment,
+        capture_output=True, text=True, timeout=HANG_TIMEOUT_S,
+        preexec_fn=_limit_memory)
+
+
+def _analyze(root, *, env=None):
+    return _colcon(['rsia', 'analyze', '--base-paths', str(root / 'src'),
+                    '--build-base', str(root / 'build')], cwd=root, env=env)
+
+
+def _python_package(root, name, modules, *, setup=None):
+    package = root / 'src' / name
+    (package / name).mkdir(parents=True)
+    (package / 'package.xml').write_text(PYTHON_PACKAGE_XML.format(name=name))
+    (package / name / '__init__.py').write_text('')
+    scripts = [f"'{m} = {name}.{m}:main'" for m in modules]
+    (package / 'setup.py').write_text(
+        'from setuptools import setup\n'
+        f"setup(name='{name}', entry_points={{'console_scripts': "
+        f"[{', '.join(scripts)}]}})\n" if setup is None else setup)
+    for module, content in modules.items():
+        path = package / name / f'{module}.py'
+        if content is not None:
+            path.write_text(content)
+    return package
+
+
+def _lines(result, package):
+    return [line for line in result.stdout.splitlines()
+            if line.startswith(f'rsia: {package}: ')]
+
+
+def _no_traceback(result):
+    assert 'Traceback' not in result.stdout + result.stderr
+    assert 'internal error' not in result.stdout + result.stderr
+
+
+# --- 1, 12: special and huge files -------------------------------------------
+
+@pytest.fixture(scope='module')
+def special_files(tmp_path_factory):
+    root = tmp_path_factory.mktemp('special')
+    # a source, a header, an absolute include, CMakeLists.txt, FIFOs
+    package = _package(root, 'zero_source', {
+        'good.cpp': GOOD_NODE, 'zero.cpp': None})
+    os.symlink('/dev/zero', package / 'src' / 'zero.cpp')
+    package = _package(root, 'zero_header', {
+        'good.cpp': '#include "zero.h"\n' + GOOD_NODE})
+    os.symlink('/dev/zero', package / 'src' / 'zero.h')
+    _package(root, 'zero_absolute', {
+        'good.cpp': '#include "/dev/zero"\n' + GOOD_NODE})
+    package = _package(root, 'zero_cmake', {'good.cpp': GOOD_NODE})
+    (package / 'CMakeLists.txt').unlink()
+    os.symlink('/dev/zero', package / 'CMakeLists.txt')
+    package = _package(root, 'fifo_source', {
+        'good.cpp': GOOD_NODE, 'fifo.cpp': None})
+    os.mkfifo(package / 'src' / 'fifo.cpp')
+    package = _package(root, 'fifo_header', {
+        'good.cpp': '#include "fifo.h"\n' + GOOD_NODE})
+    os.mkfifo(package / 'src' / 'fifo.h')
+    # Python: an entry module, setup.py, a secret outside the package
+    package = _python_package(root, 'py_zero', {
+        'talker': PYTHON_NODE, 'zero': None})
+    os.symlink('/dev/zero', package / 'py_zero' / 'zero.py')
+    package = _python_package(root, 'py_fifo', {
+        'talker': PYTHON_NODE, 'fifo': None})
+    os.mkfifo(package / 'py_fifo' / 'fifo.py')
+    package = _python_package(root, 'py_setup', {'talker': PYTHON_NODE})
+    (package / 'setup.py').unlink()
+    os.symlink('/dev/zero', package / 'setup.py')
+    package = _python_package(root, 'py_secret', {
+        'talker': PYTHON_NODE, 'environ': None})
+    os.symlink('/proc/self/environ', package / 'py_secret' / 'environ.py')
+    _python_package(root, 'py_good', {'talker': PYTHON_NODE})
+    return root, _analyze(root)
+
+
+def test_special_files_end_in_one_line_per_package(special_files):
+    root, result = special_files
+    assert result.returncode == 0, result.stderr
+    _no_traceback(result)
+    for name in ('zero_source', 'zero_header', 'zero_absolute', 'zero_cmake',
+                 'fifo_source', 'fifo_header', 'py_zero', 'py_fifo',
+                 'py_setup', 'py_secret', 'py_good'):
+        assert len(_lines(result, name)) == 1, name
+
+
+@pytest.mark.parametrize('package, file, reason', [
+    ('zero_source', 'src/zero.cpp', "is a link to '/dev/zero'"),
+    ('fifo_source', 'src/fifo.cpp', 'is not a regular file (a FIFO)'),
+    ('zero_header', "src/good.cpp: includes 'src/zero.h'",
+     "is a link to '/dev/zero'"),
+    ('fifo_header', "src/good.cpp: includes 'src/fifo.h'",
+     'is not a regular file (a FIFO)'),
+    ('zero_absolute', "src/good.cpp: includes '/dev/zero'",
+     'is not a regular file (a character device)'),
+])
+def test_special_cpp_file_is_named_and_the_node_analysed(
+        special_files, package, file, reason):
+    root, _ = special_files
+    summary = _summary(root, package)
+    assert any(d.startswith(file) and reason in d
+               for d in summary['diagnostics']), summary['diagnostics']
+    node = next(n for n in summary['nodes'] if n['executable'] == 'good')
+    assert [(p['topic'], p['label']) for p in node['publishers']] == \
+        [('out', 'independent')]
+
+
+def test_cmakelists_linked_to_dev_zero_is_named(special_files):
+    root, _ = special_files
+    summary = _summary(root, 'zero_cmake')
+    assert any(d.startswith('CMakeLists.txt: ') and '/dev/zero' in d
+               for d in summary['diagnostics']), summary['diagnostics']
+    # a source with main() is still a node, named after its file
+    assert [n['id'] for n in summary['nodes']] == ['zero_cmake/good']
+
+
+@pytest.mark.parametrize('package, file, reason', [
+    ('py_zero', 'py_zero/zero.py', "is a link to '/dev/zero'"),
+    ('py_fifo', 'py_fifo/fifo.py', 'is not a regular file (a FIFO)'),
+    ('py_secret', 'py_secret/environ.py', "is a link to '/proc/"),
+])
+def test_special_python_module_is_named_and_the_node_analysed(
+        special_files, package, file, reason):
+    root, _ = special_files
+    summary = _summary(root, package)
+    assert any(file in d and reason in d for d in summary['diagnostics']), \
+        summary['diagnostics']
+    assert [n['id'] for n in summary['nodes']] == [f'{package}/talker']
+
+
+def test_setup_py_linked_to_dev_zero_is_named(special_files):
+    root, _ = special_files
+    summary = _summary(root, 'py_setup')
+    assert any(d.startswith('setup.py: ') and '/dev/zero' in d
+               for d in summary['diagnostics']), summary['diagnostics']
+
+
+def test_secret_outside_the_package_is_never_read(special_files):
+    root, _ = special_files
+    text = (root / 'build' / 'py_secret' / 'rsia' / 'summary.json').read_text()
+    assert 'COLCON_HOME' not in text
+
+
+def test_other_packages_are_intact(special_files):
+    root, _ = special_files
+    [node] = _summary(root, 'py_good')['nodes']
+    assert [(p['topic'], p['label'], p['pattern'])
+            for p in node['publishers']] == \
+        [('chatter', 'independent', 'no_subscribers')]
+
+
+def test_files_above_the_size_limit_are_named_with_the_limit(tmp_path):
+    # the limit is configurable: 1 MB here, so that the files stay small
+    filler = '# filler\n' * 150_000   # 1.35 MB
+    _python_package(tmp_path, 'py_huge', {
+        'talker': PYTHON_NODE, 'big': filler})
+    _package(tmp_path, 'cpp_huge', {
+        'good.cpp': GOOD_NODE, 'big.cpp': GOOD_NODE + '//' + filler})
+    result = _analyze(tmp_path, env={'COLCON_RSIA_MAX_FILE_MB': '1'})
+    assert result.returncode == 0, result.stderr
+    _no_traceback(result)
+    message = 'is larger than the size limit (1.3 MB > 1 MB)'
+    hint = 'COLCON_RSIA_MAX_FILE_MB'
+    diagnostics = _summary(tmp_path, 'py_huge')['diagnostics']
+    assert any('py_huge/big.py' in d and message in d and hint in d
+               for d in diagnostics), diagnostics
+    diagnostics = _summary(tmp_path, 'cpp_huge')['diagnostics']
+    assert any(d.startswith('src/big.cpp: ') and message in d and hint in d
+               for d in diagnostics), diagnostics
+    assert [n['id'] for n in _summary(tmp_path, 'cpp_huge')['nodes']] == \
+        ['cpp_huge/good']
