@@ -234,3 +234,104 @@ def test_files_above_the_size_limit_are_named_with_the_limit(tmp_path):
                for d in diagnostics), diagnostics
     assert [n['id'] for n in _summary(tmp_path, 'cpp_huge')['nodes']] == \
         ['cpp_huge/good']
+
+
+# --- 2: Markdown injection in summary.md -------------------------------------
+
+INJECTED = [
+    '![pwned](https://evil.example/i.png)',
+    '[click](https://evil.example)',
+    '<img src=x onerror=alert(1)>',
+    'https://evil.example/x',
+    'www.evil.example',
+    '**bold**',
+    '_emphasis_',
+    '\n### All clear: no rate impact\n',
+    '`` ` ``',
+    'a|b\r\n| --- |',
+    '@everyone',
+    '&lt;b&gt;',
+]
+# the markup summary.md itself makes
+OWN_STRONG = ('Changed', 'Rate-aware impact', 'Stopped at independent edges')
+
+
+def _injected_system():
+    from colcon_rsia import model
+    from colcon_rsia.system import load_system
+    nodes = []
+    for number, evil in enumerate(INJECTED):
+        timer = number % 2 == 0
+        nodes.append(model.Node(
+            id=f'evil/n{number}{evil}', package='evil',
+            executable=f'n{number}{evil}', kind='executable',
+            publishers=[model.LabelledPublisher(
+                topic=f'/t{number + 1}{evil}', topic_is_literal=True,
+                msg_type='x', api='a', handle=None, namespace='',
+                location='f.cpp:1',
+                label=model.INDEPENDENT if timer else model.DEPENDENT,
+                pattern=f'timer{evil}' if timer else model.PATTERN_NONE,
+                rate_hz=None)],
+            subscribers=[model.NodeSubscriber(
+                topic=f'/t{number}{INJECTED[number - 1]}',
+                topic_is_literal=True, msg_type='x', api='a',
+                callback=None, namespace='', location='f.cpp:2')]))
+    return load_system([model.PackageSummary(
+        package='evil', path='/nowhere', tool_version='0', nodes=nodes)])
+
+
+def _markup_from(markdown_text):
+    """(kind, text) of every piece of markup a GFM renderer makes."""
+    from markdown_it import MarkdownIt
+    renderer = MarkdownIt('gfm-like')  # CommonMark, tables, linkify
+    tokens = renderer.parse(markdown_text)
+    found = []
+
+    def walk(tokens):
+        for i, token in enumerate(tokens):
+            if token.type in ('link_open', 'image', 'html_inline',
+                              'html_block', 'em_open', 's_open'):
+                found.append((token.type, token.content))
+            if token.type == 'heading_open':
+                found.append(('heading', tokens[i + 1].content))
+            if token.type == 'strong_open':
+                found.append(('strong', tokens[i + 1].content))
+            walk(token.children or [])
+    walk(tokens)
+    return found
+
+
+def test_summary_md_shows_data_and_never_markup_from_it():
+    from colcon_rsia.report import build_report
+    from colcon_rsia.report.markdown import render_summary
+    system = _injected_system()
+    changed = sorted(system.instances)[:1]
+    summary = render_summary(build_report(
+        system, changed=changed, since=INJECTED[0],
+        reasons={changed[0]: [f'src/{e}.cpp changed' for e in INJECTED]}))
+    markup = _markup_from(summary)
+    assert [m for m in markup if m[0] not in ('heading', 'strong', 'em_open')
+            ] == []
+    assert [m for m in markup if m[0] == 'heading'] == \
+        [('heading', 'colcon-rsia: rate impact')]
+    for kind, content in markup:
+        if kind == 'strong':
+            assert content.startswith(OWN_STRONG), content
+    # one em: the footer
+    assert [m for m in markup if m[0] == 'em_open'] == [('em_open', '')]
+    # every line is ours: a bullet, a table row, a heading, text we wrote
+    for line in summary.splitlines():
+        assert line == '' or line.startswith(('- ', '| ', '### ', '**', '_',
+                                              'No ', '… ')), line
+
+
+def test_code_spans_hold_any_value():
+    from colcon_rsia.report.markdown import code
+    from markdown_it import MarkdownIt
+    for value in ['a`b', '``x', 'x``', '`', 'a ``` b', 'caf\udce9']:
+        [paragraph] = [t for t in MarkdownIt('commonmark').parse(code(value))
+                       if t.type == 'inline']
+        [span] = paragraph.children
+        assert span.type == 'code_inline'
+        expected = value if value != 'caf\udce9' else 'caf\\xe9'
+        assert span.content == expected
