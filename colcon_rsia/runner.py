@@ -21,6 +21,7 @@ from colcon_rsia.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.safe_files import display
 from colcon_rsia.nodes import find_executables
 
 # package types whose build produces a compile database
@@ -130,6 +131,9 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
     :param bool without_build: analyse a package that has no compile
       database from its sources (else: warn how to get the database)
     """
+    problem = store.name_problem(name)
+    if problem:
+        return Outcome(display(name), warning=problem)
     try:
         return _analyze(
             name=name, package_type=package_type, path=path,

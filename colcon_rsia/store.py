@@ -7,10 +7,26 @@ import os
 import tempfile
 
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.safe_files import display
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
 CACHE_DIRNAME = 'cache'
+
+
+def name_problem(name):
+    """Why a package name cannot name a directory under the build base.
+
+    Every path of a package's output is ``<build base>/<name>/…``: a name
+    that is not one plain path component (``../../x``, ``a/b``, ``..``)
+    would put it elsewhere. None when the name is fine.
+    """
+    if not name or name in ('.', '..') or '\0' in name or \
+            any(s and s in name for s in (os.sep, os.altsep)):
+        return (f"the package name '{display(name)}' is not a plain "
+                'directory name: its results would be written outside the '
+                'build base; skipped')
+    return None
 
 
 def summary_path(package_build_base):

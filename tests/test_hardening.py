@@ -335,3 +335,21 @@ def test_code_spans_hold_any_value():
         assert span.type == 'code_inline'
         expected = value if value != 'caf\udce9' else 'caf\\xe9'
         assert span.content == expected
+
+
+# --- 3: package names that leave the build base -------------------------------
+
+@pytest.mark.parametrize('name', [
+    '../../../escaped_pkg', 'a/b', '..', '/abs/pkg'])
+def test_package_name_leaving_the_build_base_is_skipped(tmp_path, name):
+    from colcon_rsia import runner
+    package = _python_package(tmp_path, 'talker_pkg', {'talker': PYTHON_NODE})
+    build_base = tmp_path / 'ws' / 'build'
+    outcome = runner.analyze(
+        name=name, package_type='ros.ament_python', path=str(package),
+        build_base=os.path.join(build_base, name))
+    assert outcome.summary is None
+    assert 'is not a plain directory name' in outcome.line()
+    assert 'skipped' in outcome.line()
+    written = [p for p in tmp_path.rglob('summary.json')]
+    assert written == []
