@@ -226,7 +226,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
         pass  # missing: said below
     cache_file = None
     if cache is not None:
-        digest = hashlib.sha1(entry.file.encode()).hexdigest()[:16]
+        digest = hashlib.sha1(os.fsencode(entry.file)).hexdigest()[:16]
         cache_file = os.path.join(cache, digest + '.json')
         cached = _read_cache(cache_file, entry)
         if cached is not None:
@@ -234,6 +234,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
     # imported here: libclang is needed only when something is parsed
     import clang.cindex as ci
     from colcon_rsia.frontend import cpp
+    from colcon_rsia.frontend.clang_names import allow_undecodable_names
+    allow_undecodable_names()
     if not os.path.isfile(entry.file):
         return None, [f'{relative}: source file missing (stale compile '
                       'database?); skipped']

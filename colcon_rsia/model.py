@@ -462,8 +462,13 @@ class PackageSummary:
     seconds: float = 0.0
     schema: str = SUMMARY_SCHEMA
 
-    def to_dict(self):  # noqa: D102
-        return asdict(self)
+    def to_dict(self):
+        r"""The summary as JSON data; undecodable names escaped (``\\xe9``).
+
+        File names that are not UTF-8 reach the summary with surrogate
+        escapes; every reader of the summary shows them as ``\\xe9``.
+        """
+        return _escaped(asdict(self))
 
     @classmethod
     def from_dict(cls, data):
@@ -482,6 +487,17 @@ class PackageSummary:
                 seconds=float(data.get('seconds', 0.0)))
         except (KeyError, TypeError, AttributeError) as e:
             raise ValueError(f'malformed summary: {e!r}') from None
+
+
+def _escaped(data):
+    from colcon_rsia.safe_files import display
+    if isinstance(data, str):
+        return display(data)
+    if isinstance(data, dict):
+        return {_escaped(k): _escaped(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_escaped(v) for v in data]
+    return data
 
 
 def _node_from_dict(data):

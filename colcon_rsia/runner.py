@@ -21,8 +21,8 @@ from colcon_rsia.analysis import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
-from colcon_rsia.safe_files import display
 from colcon_rsia.nodes import find_executables
+from colcon_rsia.safe_files import display
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
@@ -54,12 +54,12 @@ class Outcome:
     skipped: bool = False
 
     def line(self):
-        """One line for the console."""
+        """One line for the console (undecodable names escaped)."""
         if self.summary is not None:
-            return summary_line(self.summary)
+            return display(summary_line(self.summary))
         if self.warning is not None:
-            return f'rsia: {self.package}: {self.warning}'
-        return f'rsia: {self.package}: analysis failed: {self.error}'
+            return display(f'rsia: {self.package}: {self.warning}')
+        return display(f'rsia: {self.package}: analysis failed: {self.error}')
 
 
 def summary_line(summary):

@@ -143,7 +143,7 @@ def read_bytes(path, *, roots=None, limit=None):
         os.close(fd)
 
 
-def read_text(path, *, roots=None, limit=None, errors='replace'):
+def read_text(path, *, roots=None, limit=None, errors='surrogateescape'):
     """The content of a checked file decoded as UTF-8."""
     return read_bytes(path, roots=roots, limit=limit).decode(
         'utf-8', errors=errors)

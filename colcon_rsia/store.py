@@ -45,14 +45,24 @@ def write_json_atomically(path, data):
     A temp file in the same directory is renamed over the target; a build
     killed mid-write leaves at most a stray temp file.
     """
+    write_text_atomically(
+        path, json.dumps(data, indent=1, sort_keys=True) + '\n')
+
+
+def write_text_atomically(path, text):
+    r"""Write a text file whole or not at all (see write_json_atomically).
+
+    Undecodable names (surrogate escapes) are written as ``\\udce9``
+    rather than failing the write.
+    """
     directory = os.path.dirname(path)
     os.makedirs(directory, exist_ok=True)
     fd, tmp = tempfile.mkstemp(
         dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
     try:
-        with os.fdopen(fd, 'w', encoding='utf-8') as h:
-            json.dump(data, h, indent=1, sort_keys=True)
-            h.write('\n')
+        with os.fdopen(fd, 'w', encoding='utf-8',
+                       errors='backslashreplace') as h:
+            h.write(text)
         os.replace(tmp, path)
     except BaseException:
         try:

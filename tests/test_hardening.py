@@ -353,3 +353,78 @@ def test_package_name_leaving_the_build_base_is_skipped(tmp_path, name):
     assert 'skipped' in outcome.line()
     written = [p for p in tmp_path.rglob('summary.json')]
     assert written == []
+
+
+# --- 4: file names that are not UTF-8 ----------------------------------------
+
+LATIN1_NAME = os.fsdecode(b'caf\xe9_node')
+
+
+def test_non_utf8_file_names_are_analysed_and_shown_escaped(tmp_path):
+    package = _package(tmp_path, 'latin1_names', {'good.cpp': GOOD_NODE})
+    source = package / 'src' / f'{LATIN1_NAME}.cpp'
+    (package / 'src' / 'good.cpp').rename(source)
+    raw_source = os.fsencode(source)
+    (package / 'CMakeLists.txt').write_bytes(
+        b'project(latin1_names)\nadd_executable(latin_node src/' +
+        os.path.basename(raw_source) + b')\n')
+    database = tmp_path / 'build' / 'latin1_names' / 'compile_commands.json'
+    database.write_bytes(
+        b'[{"directory": "' + os.fsencode(database.parent) + b'", "file": "' +
+        raw_source + b'", "command": "c++ -std=c++17 -c ' + raw_source +
+        b'"}]')
+    (package / 'scripts').mkdir()
+    script = package / 'scripts' / LATIN1_NAME
+    script.write_text('#!/usr/bin/env python3\nimport rospy\n'
+                      'from std_msgs.msg import String\n'
+                      "rospy.init_node('n')\n"
+                      "pub = rospy.Publisher('py_out', String)\n"
+                      'rate = rospy.Rate(2)\n'
+                      'while True:\n    pub.publish(String())\n'
+                      '    rate.sleep()\n')
+    script.chmod(0o755)
+    result = _analyze(tmp_path)
+    assert result.returncode == 0, result.stderr
+    _no_traceback(result)
+    summary = _summary(tmp_path, 'latin1_names')
+    assert summary['diagnostics'] == []
+    nodes = {n['id']: n for n in summary['nodes']}
+    escaped = 'caf\\xe9_node'
+    assert sorted(nodes) == [
+        f'latin1_names/{escaped}', 'latin1_names/latin_node']
+    assert nodes['latin1_names/latin_node']['sources'] == [
+        f'src/{escaped}.cpp']
+    assert nodes[f'latin1_names/{escaped}']['sources'] == [
+        f'scripts/{escaped}']
+    for node in nodes.values():
+        assert [p['label'] for p in node['publishers']] == ['independent']
+        assert node['publishers'][0]['location'].startswith(
+            node['sources'][0] + ':')
+
+    report = tmp_path / 'report'
+    result = _colcon(['rsia', 'report', '--build-base',
+                      str(tmp_path / 'build'), '--base-paths',
+                      str(tmp_path / 'src'), '--output', str(report),
+                      '--changed', f'latin1_names/{escaped}'], cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    _no_traceback(result)
+    page = (report / 'index.html').read_text(encoding='utf-8')
+    assert escaped in page
+    assert escaped in (report / 'summary.md').read_text(encoding='utf-8')
+
+
+def test_report_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
+    from colcon_rsia import report
+    from colcon_rsia.report import markdown
+    system = _injected_system()
+    report.write_report(system, str(tmp_path), dot_executable='/nonexistent')
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert before['index.html']
+
+    def broken(data):
+        raise UnicodeEncodeError('utf-8', 'x', 0, 1, 'surrogates not allowed')
+    monkeypatch.setattr(markdown, 'render_summary', broken)
+    with pytest.raises(UnicodeEncodeError):
+        report.write_report(system, str(tmp_path),
+                            dot_executable='/nonexistent')
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before

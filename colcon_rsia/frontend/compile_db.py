@@ -55,7 +55,7 @@ def load_compile_database(path):
         # a database lists every unit: larger than a source may be
         raw = json.loads(safe_files.read_bytes(
             path, limit=COMPILE_DB_SIZE_FACTOR * safe_files.max_file_bytes(),
-        ).decode('utf-8', errors='replace'))
+        ).decode('utf-8', errors='surrogateescape'))
     except FileNotFoundError:
         raise CompileDatabaseError(f"no compile database at '{path}'")
     except (OSError, ValueError) as e:

@@ -30,6 +30,7 @@ from colcon_rsia.graph import graph_to_dot
 from colcon_rsia.graph import graph_to_json
 from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
+from colcon_rsia.store import write_text_atomically
 
 DOT_TIMEOUT_S = 60
 
@@ -227,13 +228,14 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     from colcon_rsia.report.html import render_html
     from colcon_rsia.report.markdown import render_summary
     data = build_report(system, changed=changed, reasons=reasons, since=since)
-    os.makedirs(output, exist_ok=True)
     written = []
     notes = []
+    # every file is rendered before any is written: a failure leaves the
+    # directory as it was, never a half-written or empty index.html
+    rendered = {}
 
     def write(name, text):
-        with open(os.path.join(output, name), 'w', encoding='utf-8') as h:
-            h.write(text)
+        rendered[name] = text
         written.append(name)
 
     write('index.html', render_html(data))
@@ -250,6 +252,9 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     else:
         stale.append('impact.json')
     write('summary.md', render_summary(data))
+    os.makedirs(output, exist_ok=True)
+    for name, text in rendered.items():
+        write_text_atomically(os.path.join(output, name), text)
     svg = os.path.join(output, 'graph.svg')
     note = run_dot(os.path.join(output, 'graph.dot'), svg,
                    executable=dot_executable)
