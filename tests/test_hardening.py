@@ -428,3 +428,33 @@ def test_report_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
         report.write_report(system, str(tmp_path),
                             dot_executable='/nonexistent')
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+
+
+# --- 5: --since '' --------------------------------------------------------------
+
+@pytest.mark.parametrize('subverb', ['impact', 'report'])
+def test_empty_since_is_one_clear_error(system_workspace, tmp_path, subverb):
+    args = ['rsia', subverb, '--base-paths', str(system_workspace.src),
+            '--since', '']
+    if subverb == 'report':
+        args += ['--output', str(tmp_path / 'report')]
+    result = system_workspace.colcon(*args)
+    assert result.returncode == 1
+    _no_traceback(result)
+    assert '--since needs a git revision, got an empty string' in \
+        result.stderr
+    assert not (tmp_path / 'report').exists()
+
+
+# --- 8: option values -----------------------------------------------------------
+
+@pytest.mark.parametrize('jobs', ['-3', '0', 'many'])
+def test_bad_jobs_is_a_usage_error(tmp_path, jobs):
+    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    result = _colcon(['rsia', 'analyze', '--base-paths', str(tmp_path / 'src'),
+                      '--jobs', jobs], cwd=tmp_path)
+    assert result.returncode == 2
+    _no_traceback(result)
+    assert f"argument --jobs: '{jobs}' is not a whole number of 1 or more" \
+        in result.stderr
+    assert 'please report it' not in result.stdout
