@@ -8,6 +8,7 @@ import tempfile
 
 from colcon_rsia.model import PackageSummary
 from colcon_rsia.safe_files import display
+from colcon_rsia.safe_files import file_mode
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
@@ -60,6 +61,8 @@ def write_text_atomically(path, text):
     fd, tmp = tempfile.mkstemp(
         dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
     try:
+        # like every other build artifact, not mkstemp's 0600
+        os.fchmod(fd, file_mode())
         with os.fdopen(fd, 'w', encoding='utf-8',
                        errors='backslashreplace') as h:
             h.write(text)

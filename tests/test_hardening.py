@@ -458,3 +458,20 @@ def test_bad_jobs_is_a_usage_error(tmp_path, jobs):
     assert f"argument --jobs: '{jobs}' is not a whole number of 1 or more" \
         in result.stderr
     assert 'please report it' not in result.stdout
+
+
+# --- 10: file modes -------------------------------------------------------------
+
+def test_summaries_and_caches_follow_the_umask(tmp_path):
+    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    old = os.umask(0o027)
+    try:
+        result = _analyze(tmp_path)  # the child inherits the umask
+    finally:
+        os.umask(old)
+    assert result.returncode == 0, result.stderr
+    rsia = tmp_path / 'build' / 'good' / 'rsia'
+    files = [rsia / 'summary.json'] + list((rsia / 'cache').iterdir())
+    assert len(files) == 2
+    for file in files:
+        assert oct(file.stat().st_mode & 0o777) == oct(0o640), file

@@ -580,6 +580,7 @@ def _write_atomically(path, content):
     fd, temporary = tempfile.mkstemp(
         dir=os.path.dirname(path), prefix='.rsia-', suffix='.tmp')
     try:
+        os.fchmod(fd, safe_files.file_mode())
         with os.fdopen(fd, 'w', encoding='utf-8',
                        errors='surrogateescape') as h:
             h.write(content)
