@@ -18,8 +18,11 @@ from dataclasses import asdict
 from dataclasses import dataclass
 from dataclasses import field
 from dataclasses import fields
+import math
+from typing import get_type_hints
 from typing import List
 from typing import Optional
+from typing import Union
 
 SUMMARY_SCHEMA = 'colcon-rsia/summary@1'
 FACTS_SCHEMA = 'colcon-rsia/facts@1'
@@ -479,14 +482,59 @@ class PackageSummary:
                 f'(this version reads {SUMMARY_SCHEMA!r})')
         try:
             nodes = [_node_from_dict(n) for n in data['nodes']]
-            return cls(
+            summary = cls(
                 package=data['package'], path=data['path'],
                 tool_version=data['tool_version'],
                 header_mode=data.get('header_mode', 'exact'),
                 nodes=nodes, diagnostics=list(data.get('diagnostics', [])),
-                seconds=float(data.get('seconds', 0.0)))
+                seconds=data.get('seconds', 0.0))
         except (KeyError, TypeError, AttributeError) as e:
             raise ValueError(f'malformed summary: {e!r}') from None
+        _check_types(summary, 'summary')
+        ids = [n.id for n in nodes]
+        for node_id in sorted({i for i in ids if ids.count(i) > 1}):
+            raise ValueError(f"node id '{node_id}' appears more than once")
+        return summary
+
+
+def _check_types(value, where):
+    """Raise ValueError unless every field has its declared type.
+
+    A summary is data anyone can write: a wrong type (an int id, a string
+    rate, NaN) must stop at loading with one message, not crash the graph
+    or end up in the output JSON.
+    """
+    for f in fields(value):
+        _check_value(getattr(value, f.name), _FIELD_TYPES[type(value)][f.name],
+                     f'{where}.{f.name}')
+
+
+def _check_value(item, expected, where):
+    origin = getattr(expected, '__origin__', None)
+    arguments = getattr(expected, '__args__', ())
+    if origin is Union:  # Optional[X]
+        if item is None:
+            return
+        expected = next(a for a in arguments if a is not type(None))
+        origin = getattr(expected, '__origin__', None)
+        arguments = getattr(expected, '__args__', ())
+    if origin is list:
+        if not isinstance(item, list):
+            raise ValueError(f'{where} is not a list')
+        for i, element in enumerate(item):
+            _check_value(element, arguments[0], f'{where}[{i}]')
+    elif expected is float:
+        if isinstance(item, bool) or not isinstance(item, (int, float)) or \
+                not math.isfinite(item):
+            raise ValueError(f'{where} is not a finite number: {item!r}')
+    elif expected in (str, bool):
+        if not isinstance(item, expected):
+            raise ValueError(
+                f'{where} is not a {expected.__name__}: {item!r:.40}')
+    elif isinstance(item, expected):
+        _check_types(item, where)
+    else:
+        raise ValueError(f'{where} is not an object')
 
 
 def _escaped(data):
@@ -527,3 +575,9 @@ def _node_from_dict(data):
         actions=[NodeAction(**a) for a in data.get('actions', [])],
         clients=[NodeClient(**c) for c in data.get('clients', [])],
         roots=[Root(**r) for r in data.get('roots', [])])
+
+
+# {summary class: {field: declared type}}, for _check_types
+_FIELD_TYPES = {cls: get_type_hints(cls) for cls in (
+    PackageSummary, Node, LabelledPublisher, Evidence, TopicParam,
+    NodeSubscriber, NodeTimer, NodeService, NodeClient, NodeAction, Root)}

@@ -9,10 +9,13 @@ import tempfile
 from colcon_rsia.model import PackageSummary
 from colcon_rsia.safe_files import display
 from colcon_rsia.safe_files import file_mode
+from colcon_rsia.safe_files import max_file_bytes
+from colcon_rsia.safe_files import read_bytes
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
 CACHE_DIRNAME = 'cache'
+SUMMARY_SIZE_FACTOR = 8
 
 
 def name_problem(name):
@@ -92,10 +95,15 @@ def read_summary(path):
     :raises SummaryError: with one sentence naming the file and the problem
     """
     try:
-        with open(path, encoding='utf-8') as h:
-            data = json.load(h)
+        # a summary lists every fact of a package: above a source's limit
+        data = json.loads(read_bytes(
+            path, limit=SUMMARY_SIZE_FACTOR * max_file_bytes()).decode('utf-8'))
     except FileNotFoundError:
         raise SummaryError(f"no summary at '{path}'")
+    except RecursionError:
+        raise SummaryError(
+            f"corrupted summary '{path}' (nested too deeply); re-run "
+            "'colcon rsia analyze' for its package")
     except (OSError, ValueError) as e:
         raise SummaryError(
             f"corrupted summary '{path}' ({e}); re-run "

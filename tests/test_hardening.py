@@ -7,6 +7,7 @@ each case gets one clear message, no traceback, no hang, and the other
 packages' results.
 """
 
+import json
 import os
 from pathlib import Path
 import resource
@@ -475,3 +476,85 @@ def test_summaries_and_caches_follow_the_umask(tmp_path):
     assert len(files) == 2
     for file in files:
         assert oct(file.stat().st_mode & 0o777) == oct(0o640), file
+
+
+# --- 6: crafted or damaged summaries ------------------------------------------
+
+def _crafted(summary, change):
+    data = json.loads(json.dumps(summary))
+    change(data)
+    return data
+
+
+def _set_node(key, value):
+    def change(data):
+        data['nodes'][0][key] = value
+    return change
+
+
+def _set_publisher(key, value):
+    def change(data):
+        data['nodes'][0]['publishers'][0][key] = value
+    return change
+
+
+def _duplicate_node(data):
+    data['nodes'].append(dict(data['nodes'][0]))
+
+
+CRAFTED = {
+    'id int': (_set_node('id', 7), 'summary.nodes[0].id is not a str: 7'),
+    'id null': (_set_node('id', None), 'summary.nodes[0].id is not a str'),
+    'id list': (_set_node('id', ['a']), 'summary.nodes[0].id is not a str'),
+    'namespace int': (_set_node('namespace', 3),
+                      'summary.nodes[0].namespace is not a str: 3'),
+    'topic int': (_set_publisher('topic', 5),
+                  'summary.nodes[0].publishers[0].topic is not a str: 5'),
+    'rate string': (_set_publisher('rate_hz', 'fast'),
+                    'rate_hz is not a finite number'),
+    'rate NaN': (_set_publisher('rate_hz', float('nan')),
+                 'rate_hz is not a finite number: nan'),
+    'rate infinite': (_set_publisher('rate_hz', float('inf')),
+                      'rate_hz is not a finite number: inf'),
+    'duplicate id': (_duplicate_node,
+                     "node id 'sysbot_drivers/base_driver' appears more "
+                     'than once'),
+}
+
+
+@pytest.mark.parametrize('case', sorted(CRAFTED) + ['deep nesting'])
+def test_crafted_summary_is_one_warning_and_hides_nothing(
+        system_workspace, tmp_path, case):
+    build = tmp_path / 'build'
+    for package in ('sysbot_drivers', 'sysbot_navigation',
+                    'sysbot_perception'):
+        target = build / package / 'rsia'
+        target.mkdir(parents=True)
+        (target / 'summary.json').write_text(json.dumps(
+            system_workspace.summary(package)))
+    crafted = build / 'sysbot_drivers' / 'rsia' / 'summary.json'
+    if case == 'deep nesting':
+        crafted.write_text('{"nodes": ' + '[' * 100_000 + ']' * 100_000 + '}')
+        message = 'nested too deeply'
+    else:
+        change, message = CRAFTED[case]
+        crafted.write_text(json.dumps(_crafted(
+            system_workspace.summary('sysbot_drivers'), change)))
+    for subverb in (['graph', '--format', 'json'],
+                    ['impact', '--all', '--format', 'json'],
+                    ['report', '--output', str(tmp_path / 'report')]):
+        result = _colcon(
+            ['rsia', *subverb, '--base-paths', str(system_workspace.src),
+             '--build-base', str(build)], cwd=tmp_path)
+        assert result.returncode == 0, (subverb, result.stderr)
+        _no_traceback(result)
+        [warning] = [line for line in result.stderr.splitlines()
+                     if 'summary' in line]
+        assert str(crafted) in warning and message in warning, warning
+        if subverb[0] == 'graph':
+            ids = {n['id'] for n in json.loads(result.stdout)['nodes']}
+            assert 'sysbot_navigation/planner' in ids
+            assert not any(i.startswith('sysbot_drivers/') for i in ids)
+        if subverb[0] == 'impact':
+            # strict JSON: no NaN or Infinity
+            json.loads(result.stdout, parse_constant=pytest.fail)
