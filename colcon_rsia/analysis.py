@@ -220,10 +220,13 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
     try:
         safe_files.check_file(entry.file, roots=[package_path])
+        safe_files.read_head(entry.file, 1)
     except safe_files.UnsafeFileError as e:
         return None, [f'{relative}: {e}']
-    except OSError:
-        pass  # missing: said below
+    except FileNotFoundError:
+        pass  # said below
+    except OSError as e:
+        return None, [f'{relative}: cannot be read ({e.strerror or e})']
     cache_file = None
     if cache is not None:
         digest = hashlib.sha1(os.fsencode(entry.file)).hexdigest()[:16]
@@ -364,6 +367,9 @@ def build_summary(*, name, path, build_base, units):
         own = [units[s] for s in sources if s in units]
         if not own:
             summary.diagnostics.append(
+                f"executable '{executable}': none of its sources could be "
+                'analysed (see above); skipped' if any(
+                    os.path.lexists(s) for s in sources) else
                 f"executable '{executable}': none of its sources is in the "
                 'compile database; skipped')
             continue

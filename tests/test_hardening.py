@@ -558,3 +558,25 @@ def test_crafted_summary_is_one_warning_and_hides_nothing(
         if subverb[0] == 'impact':
             # strict JSON: no NaN or Infinity
             json.loads(result.stdout, parse_constant=pytest.fail)
+
+
+# --- 9: messages that say what is wrong -----------------------------------------
+
+@pytest.mark.parametrize('words, message', [
+    (['/nonexistent.launch'], '--launch /nonexistent.launch: file not found'),
+    (['/tmp'], '--launch /tmp: not a regular file'),
+    (['{launch}', 'extra'], 'a launch file takes only name:=value '
+     "arguments, got 'extra'"),
+])
+def test_launch_argument_messages(system_workspace, tmp_path, words, message):
+    launch = tmp_path / 'empty.launch'
+    launch.write_text('<launch/>')
+    words = [w.format(launch=launch) for w in words]
+    message = message.format(launch=launch)
+    result = system_workspace.colcon(
+        'rsia', 'impact', '--base-paths', str(system_workspace.src),
+        '--launch', *words, '--all')
+    assert result.returncode == 1
+    _no_traceback(result)
+    assert message in result.stderr
+    assert 'unknown package' not in result.stderr

@@ -122,7 +122,10 @@ def read_module(path, *, roots=None):
         raise SourceError(
             f'syntax error at line {e.lineno}: {e.msg}') from None
     except (ValueError, RecursionError, MemoryError) as e:
-        raise SourceError(f'cannot be parsed ({e})') from None
+        reason = str(e) or {
+            RecursionError: 'nested too deeply', MemoryError: 'too large',
+        }.get(type(e), type(e).__name__)
+        raise SourceError(f'cannot be parsed ({reason})') from None
 
 
 def normalize_msg_type(dotted):
