@@ -404,7 +404,7 @@ def test_since_on_the_command_line(git_workspace, tmp_path):
     assert report.returncode == 0, report.stderr
     summary = (out / 'summary.md').read_text()
     assert '**Changed since `HEAD`:** 1 node' in summary
-    assert f'- `{LASER}`: src/laser_driver.cpp changed' in summary
+    assert f'- `{LASER}`: `src/laser_driver.cpp` changed' in summary
     bad = _git_colcon(tmp_path, 'impact', '--since', 'no-such-branch')
     assert bad.returncode == 1
     assert '--since no-such-branch: unknown revision in the git ' \
