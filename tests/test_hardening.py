@@ -421,12 +421,14 @@ def test_report_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
     report.write_report(system, str(tmp_path), dot_executable='/nonexistent')
     before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
     assert before['index.html']
+    # a report of other changes: each of its files would differ
+    changed = sorted(system.instances)[:1]
 
     def broken(data):
         raise UnicodeEncodeError('utf-8', 'x', 0, 1, 'surrogates not allowed')
     monkeypatch.setattr(markdown, 'render_summary', broken)
     with pytest.raises(UnicodeEncodeError):
-        report.write_report(system, str(tmp_path),
+        report.write_report(system, str(tmp_path), changed=changed,
                             dot_executable='/nonexistent')
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
 
