@@ -11,6 +11,7 @@ import glob
 import hashlib
 import json
 import os
+import threading
 import time
 
 from colcon_rsia import __version__
@@ -57,6 +58,7 @@ STD_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_CXX_STD'
 DEFAULT_STD = 'c++17'
 
 CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
+CXX_HEADERS = ('.h', '.hh', '.hpp', '.hxx', '.h++', '.ipp')
 # directories whose sources are never a node's (tests, generated output)
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
@@ -286,8 +288,8 @@ def _unit_facts(entry, package_path, resource_dir, cache):
 def _parse_repaired(index, entry, resource_dir, package_path, relative):
     """Parse a TU; in model mode, repair what its errors show missing.
 
-    Returns (the TU with the fewest errors, parses after the first). A
-    round that makes things worse is undone and ends the repair.
+    Returns (the TU with the fewest errors in package code, parses after
+    the first). The repair header is left as that best round had it.
     """
     from colcon_rsia.frontend import cpp
     from colcon_rsia.frontend import repair
@@ -296,8 +298,13 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
         return cpp.parse(
             index, file=entry.file, arguments=entry.arguments,
             resource_dir=resource_dir, working_directory=entry.directory)
-    tu = parse()
     header = _repair_header_of(entry.arguments)
+    if header is not None and not repair.read_repairs(header):
+        # a unit never repaired starts with what its package's other units
+        # needed (their names, unless this package declares them)
+        repair.seed_repairs(header, relative,
+                            _package_declarations(package_path))
+    tu = parse()
     if header is None:
         return tu, 0
     texts = {}
@@ -344,7 +351,32 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
         # so that later parses of the unit do not pay for it
         from colcon_rsia.frontend.model_mode import write_atomically
         write_atomically(header, best[3])
+    if best[1]:
+        repair.share_repairs(header, repair.read_repairs(header))
     return best[2], rounds
+
+
+_declarations = {}
+_declarations_lock = threading.Lock()
+
+
+def _package_declarations(package_path):
+    """The names a package's own C++ files declare (read once)."""
+    with _declarations_lock:
+        if package_path not in _declarations:
+            texts = []
+            for root, dirs, files in os.walk(package_path):
+                dirs[:] = [d for d in dirs if d not in SKIPPED_DIRECTORIES
+                           and not d.startswith('.')]
+                for name in files:
+                    if name.endswith(CXX_EXTENSIONS + CXX_HEADERS):
+                        try:
+                            texts.append(_read_text(os.path.join(root, name)))
+                        except OSError:
+                            pass
+            from colcon_rsia.frontend import repair
+            _declarations[package_path] = repair.declared_names(texts)
+        return _declarations[package_path]
 
 
 def _repair_header_of(arguments):
