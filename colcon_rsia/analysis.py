@@ -17,6 +17,7 @@ import time
 from colcon_rsia import __version__
 from colcon_rsia import coverage
 from colcon_rsia import model
+from colcon_rsia import safe_files
 from colcon_rsia import store
 from colcon_rsia.call_sites import PUBLISHER
 from colcon_rsia.call_sites import SUBSCRIBER
@@ -217,15 +218,23 @@ def _model_entries(entries, path, workspace_package_dirs, stub_dir):
     return model_entries
 
 
+def _relative(path, directory):
+    return os.path.relpath(path, directory) if _inside(path, directory) \
+        else path
+
+
 def _inside(file, directory):
     return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
 
 
 def parse_units(entries, *, package_path, resource_dir, cache, jobs):
     """Parse the TUs in a thread pool; return (facts by file, messages)."""
+    hidden = _unsafe_includes(entries, package_path)
+
     def work(entry):
         try:
-            return _unit_facts(entry, package_path, resource_dir, cache)
+            return _unit_facts(
+                entry, package_path, resource_dir, cache, hidden)
         except Exception as e:  # noqa: B902
             # a bug of ours in one unit loses that unit, not the package
             relative = os.path.relpath(entry.file, package_path)
@@ -241,12 +250,35 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs):
     return units, diagnostics
 
 
-def _unit_facts(entry, package_path, resource_dir, cache):
-    """Facts of one TU, from the cache when nothing it reads changed."""
-    relative = os.path.relpath(entry.file, package_path)
+def _unsafe_includes(entries, package_path):
+    """Files an include could make libclang open that it must not."""
+    search_dirs = sorted({d for e in entries for d in safe_files.include_dirs(
+        e.arguments, e.directory)})
+    return safe_files.unsafe_inputs(
+        [e.file for e in entries], search_dirs=search_dirs,
+        roots=[package_path] + search_dirs,
+        skip=[os.path.dirname(os.path.abspath(__file__))])
+
+
+def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
+    """Facts of one TU, from the cache when nothing it reads changed.
+
+    :param hidden: {file: why} of files libclang is given as empty
+    """
+    hidden = hidden or {}
+    relative = safe_files.display(os.path.relpath(entry.file, package_path))
+    try:
+        safe_files.check_file(entry.file, roots=[package_path])
+        safe_files.read_head(entry.file, 1)
+    except safe_files.UnsafeFileError as e:
+        return None, [f'{relative}: {e}']
+    except FileNotFoundError:
+        pass  # said below
+    except OSError as e:
+        return None, [f'{relative}: cannot be read ({e.strerror or e})']
     cache_file = None
     if cache is not None:
-        digest = hashlib.sha1(entry.file.encode()).hexdigest()[:16]
+        digest = hashlib.sha1(os.fsencode(entry.file)).hexdigest()[:16]
         cache_file = os.path.join(cache, digest + '.json')
         cached = _read_cache(cache_file, entry)
         if cached is not None:
@@ -254,13 +286,18 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     # imported here: libclang is needed only when something is parsed
     import clang.cindex as ci
     from colcon_rsia.frontend import cpp
+    from colcon_rsia.frontend.clang_names import allow_undecodable_names
+    allow_undecodable_names()
     if not os.path.isfile(entry.file):
         return None, [f'{relative}: source file missing (stale compile '
                       'database?); skipped']
     try:
         index = ci.Index.create()
+        # the files that failed the checks are seen by libclang as empty
         tu, rounds = _parse_repaired(
-            index, entry, resource_dir, package_path, relative)
+            index, entry, resource_dir, package_path, relative,
+            unsaved_files=[(file, '') for file in sorted(
+                set(hidden) | {os.path.realpath(h) for h in hidden})])
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
     facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
@@ -275,6 +312,10 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})
+    facts.diagnostics += [
+        f"{relative}: includes '{safe_files.display(_relative(h, package_path))}'"
+        f', which {reason}' for h, reason in sorted(hidden.items())
+        if h in includes or os.path.realpath(h) in includes]
     facts.files = [relative] + [
         os.path.relpath(i, package_path) for i in includes
         if _inside(i, package_path)]
@@ -285,7 +326,8 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     return facts, list(facts.diagnostics)
 
 
-def _parse_repaired(index, entry, resource_dir, package_path, relative):
+def _parse_repaired(index, entry, resource_dir, package_path, relative,
+                    unsaved_files=()):
     """Parse a TU; in model mode, repair what its errors show missing.
 
     Returns (the TU with the fewest errors in package code, parses after
@@ -297,7 +339,8 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
     def parse():
         return cpp.parse(
             index, file=entry.file, arguments=entry.arguments,
-            resource_dir=resource_dir, working_directory=entry.directory)
+            resource_dir=resource_dir, working_directory=entry.directory,
+            unsaved_files=list(unsaved_files))
     header = _repair_header_of(entry.arguments)
     if header is not None and not repair.read_repairs(header):
         # a unit never repaired starts with what its package's other units
@@ -312,8 +355,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
     def text_of(file):
         if file not in texts:
             try:
-                with open(file, encoding='utf-8', errors='replace') as h:
-                    texts[file] = h.read()
+                texts[file] = safe_files.read_text(file, errors='replace')
             except OSError:
                 texts[file] = ''
         return texts[file]
@@ -371,9 +413,10 @@ def _package_declarations(package_path):
                 for name in files:
                     if name.endswith(CXX_EXTENSIONS + CXX_HEADERS):
                         try:
-                            texts.append(_read_text(os.path.join(root, name)))
+                            texts.append(safe_files.read_text(
+                                os.path.join(root, name), errors='replace'))
                         except OSError:
-                            pass
+                            pass  # named by the checks before the parse
             from colcon_rsia.frontend import repair
             _declarations[package_path] = repair.declared_names(texts)
         return _declarations[package_path]
@@ -466,6 +509,10 @@ def build_summary(*, name, path, build_base, units):
     executables = find_executables(package_path=path, build_base=build_base)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
+    unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
+    summary.diagnostics += unreadable
+    unknown_executables = 'CMakeLists.txt cannot be read' if unreadable \
+        else 'no executable of CMakeLists.txt builds it'
     # a unit with its own main() is a program, never library code that
     # every executable would take in; one no executable builds (CMake we
     # could not read) is a node named after its file
@@ -476,14 +523,17 @@ def build_summary(*, name, path, build_base, units):
                 executables[stem] = [file]
                 executable_sources.add(file)
                 summary.diagnostics.append(
-                    f'{os.path.relpath(file, path)} defines main() but no '
-                    f"executable of CMakeLists.txt builds it: node '{stem}' "
-                    'named after the file')
+                    f'{os.path.relpath(file, path)} defines main() but '
+                    f"{unknown_executables}: node '{stem}' named after the "
+                    'file')
     library = [u for f, u in units.items() if f not in executable_sources]
     for executable, sources in sorted(executables.items()):
         own = [units[s] for s in sources if s in units]
         if not own:
             summary.diagnostics.append(
+                f"executable '{executable}': none of its sources could be "
+                'analysed (see above); skipped' if any(
+                    os.path.lexists(s) for s in sources) else
                 f"executable '{executable}': none of its sources is in the "
                 'compile database; skipped')
             continue

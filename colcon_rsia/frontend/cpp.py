@@ -71,8 +71,11 @@ class _MemberInit:
         self.member = member
 
 
-def parse(index, *, file, arguments, resource_dir, working_directory):
+def parse(index, *, file, arguments, resource_dir, working_directory,
+          unsaved_files=()):
     """Parse one translation unit with libclang.
+
+    :param unsaved_files: (path, content) pairs read instead of the files
 
     :raises clang.cindex.TranslationUnitLoadError: when libclang gives up
     """
@@ -81,7 +84,8 @@ def parse(index, *, file, arguments, resource_dir, working_directory):
         args += ['-resource-dir', resource_dir]
     # the default limit of 20 errors truncates the AST
     args += ['-ferror-limit=0', '-working-directory', working_directory]
-    return index.parse(file, args=args, options=PARSE_OPTIONS)
+    return index.parse(file, args=args, unsaved_files=list(unsaved_files),
+                       options=PARSE_OPTIONS)
 
 
 def parse_diagnostics(tu):

@@ -34,6 +34,8 @@ import re
 import tempfile
 import threading
 
+from colcon_rsia import safe_files
+
 MODEL_HEADERS_DIR = os.path.join(
     os.path.dirname(os.path.abspath(__file__)), 'model_headers')
 
@@ -386,8 +388,8 @@ class _Scanner:
 
 def _read_text(path):
     try:
-        with open(path, 'rb') as h:
-            data = h.read()
+        # checked: a header may be a link to /dev/zero, or a FIFO
+        data = safe_files.read_bytes(path)
     except OSError:
         return None
     return data.decode('utf-8', errors='surrogateescape')
@@ -598,6 +600,7 @@ def write_atomically(path, content):
     fd, temporary = tempfile.mkstemp(
         dir=os.path.dirname(path), prefix='.rsia-', suffix='.tmp')
     try:
+        os.fchmod(fd, safe_files.file_mode())
         with os.fdopen(fd, 'w', encoding='utf-8',
                        errors='surrogateescape') as h:
             h.write(content)

@@ -33,6 +33,7 @@ from colcon_rsia.impact import impact_all
 from colcon_rsia.impact import impact_to_json
 from colcon_rsia.impact import PAPER
 from colcon_rsia.rates import predict_rates
+from colcon_rsia.store import write_text_atomically
 
 # the status of a node instance in a report
 CHANGED = 'changed'
@@ -222,13 +223,14 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     data = build_report(system, changed=changed, reasons=reasons, since=since,
                         model_name=model_name)
     drawing, layout_note = draw_system(system, dot_executable=dot_executable)
-    os.makedirs(output, exist_ok=True)
     written = []
     notes = []
+    # every file is rendered before any is written: a failure leaves the
+    # directory as it was, never a half-written or empty index.html
+    rendered = {}
 
     def write(name, text):
-        with open(os.path.join(output, name), 'w', encoding='utf-8') as h:
-            h.write(text)
+        rendered[name] = text
         written.append(name)
 
     write('index.html', render_html(data, drawing))
@@ -249,6 +251,9 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     write('graph.svg', graph_svg(data, drawing, standalone=True) + '\n')
     if layout_note:
         notes.append(layout_note)
+    os.makedirs(output, exist_ok=True)
+    for name, text in rendered.items():
+        write_text_atomically(os.path.join(output, name), text)
     # files of an earlier report that this one does not have
     for name in stale:
         try:
