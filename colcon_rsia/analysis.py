@@ -364,18 +364,28 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         lines = text_of(file).split('\n')
         return lines[line - 1] if 0 < line <= len(lines) else ''
 
+    from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
+    stub_dir = os.path.dirname(os.path.dirname(os.path.dirname(header)))
+
+    def _user_file(file):
+        # the workspace's code (the package's and the headers of other
+        # packages it includes): not stand-ins, model or system headers
+        return not _inside(file, stub_dir) and \
+            not _inside(file, MODEL_HEADERS_DIR) and \
+            not file.startswith(('/usr/', '/opt/'))
+
     def own_errors(tu):
-        # errors elsewhere (stand-ins, model headers) hide none of the
-        # package's calls, and declarations cannot fix them
+        # errors elsewhere hide none of the package's calls, and
+        # declarations cannot fix them
         return [e for e in cpp.error_diagnostics(tu)
-                if e[1] and _inside(e[1], package_path)]
+                if e[1] and _user_file(e[1])]
     errors = own_errors(tu)
     best = (len(errors), 0, tu, _read_text(header))
     rounds = 0
     while errors and rounds < repair.MAX_REPAIR_ROUNDS:
         own_files = {entry.file} | {
             i.include.name for i in tu.get_includes()
-            if i.include is not None and _inside(i.include.name, package_path)}
+            if i.include is not None and _user_file(i.include.name)}
         repairs = repair.repairs_from_diagnostics(
             errors, read_line,
             texts=[text_of(f) for f in sorted({e[1] for e in errors})],

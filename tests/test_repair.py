@@ -300,3 +300,52 @@ def test_the_model_has_what_newer_rclcpp_code_uses(tmp_path):
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['status']
+
+
+# endpoints created through an object of a template parameter's type: the
+# call resolves only in instantiations, which the AST does not show
+TEMPLATED_HELPER = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Relay
+{
+public:
+  template<class NodeT>
+  explicit Relay(NodeT node)
+  {
+    pub_ = node->template create_publisher<std_msgs::msg::String>("relayed", 10);
+    sub_ = node->template create_subscription<std_msgs::msg::String>(
+      "incoming", 10,
+      [this](std_msgs::msg::String::ConstSharedPtr msg) { pub_->publish(*msg); });
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("relay");
+  Relay relay(node);
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_calls_on_a_template_parameter_are_recognised_by_name(tmp_path):
+    package = tmp_path / 'relay'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'relay.cpp').write_text(TEMPLATED_HELPER)
+    summary = analysis.analyze_package(
+        name='relay', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    recorded = sorted((c.role, c.line, c.recorded)
+                      for c in summary.coverage.call_sites)
+    # both calls have facts (in the unit: the node's main reaches the
+    # template constructor only through its instantiation)
+    assert [(role, line) for role, line, _ in recorded] == [
+        ('publisher', 11), ('subscriber', 12)]
+    assert all(where != 'none' for _, _, where in recorded)

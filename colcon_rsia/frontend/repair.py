@@ -27,6 +27,7 @@ import os
 import re
 import threading
 
+from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.model_mode import write_atomically
 
 # parses of a unit after the first: each round fixes what the previous one
@@ -217,6 +218,9 @@ def seed_repairs(header, source, declared):
     path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
     with _shared_lock:
         shared = _read_shared(path)
+    # a unit may include the model header or the package header that
+    # another unit lacked: only names declared in neither are seeded
+    declared = set(declared) | model_declarations()
     seeds = {r for r in shared
              if r[0] == STD_HEADER or not _declared(r[1], declared)}
     return bool(seeds) and add_repairs(header, source, seeds)
@@ -286,13 +290,36 @@ _DECLARATION = re.compile(
     r'^\s*#\s*define\s+(\w+)', re.MULTILINE)
 
 
+_COMMENT_OR_STRING = re.compile(
+    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.DOTALL)
+
+
 def declared_names(texts):
     """Names that classes, namespaces, aliases and macros of texts declare."""
     names = set()
     for text in texts:
-        for match in _DECLARATION.finditer(text):
+        # `class X  // : public Base` then `{` on the next line
+        code = _COMMENT_OR_STRING.sub(' ', text)
+        for match in _DECLARATION.finditer(code):
             names.update(g for g in match.groups() if g)
     return names
+
+
+_model_declarations = []
+
+
+def model_declarations():
+    """The names the model headers declare (read once)."""
+    with _shared_lock:
+        if not _model_declarations:
+            texts = []
+            for root, _, files in os.walk(MODEL_HEADERS_DIR):
+                for name in files:
+                    with open(os.path.join(root, name), encoding='utf-8',
+                              errors='replace') as h:
+                        texts.append(h.read())
+            _model_declarations.append(declared_names(texts))
+        return _model_declarations[0]
 
 
 def _uses_of_namespace(namespace, texts):
