@@ -11,6 +11,7 @@ import glob
 import hashlib
 import json
 import os
+import threading
 import time
 
 from colcon_rsia import __version__
@@ -58,6 +59,7 @@ STD_ENVIRONMENT_VARIABLE = 'COLCON_RSIA_CXX_STD'
 DEFAULT_STD = 'c++17'
 
 CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
+CXX_HEADERS = ('.h', '.hh', '.hpp', '.hxx', '.h++', '.ipp')
 # directories whose sources are never a node's (tests, generated output)
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
@@ -328,8 +330,8 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
                     unsaved_files=()):
     """Parse a TU; in model mode, repair what its errors show missing.
 
-    Returns (the TU with the fewest errors, parses after the first). A
-    round that makes things worse is undone and ends the repair.
+    Returns (the TU with the fewest errors in package code, parses after
+    the first). The repair header is left as that best round had it.
     """
     from colcon_rsia.frontend import cpp
     from colcon_rsia.frontend import repair
@@ -339,8 +341,13 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
             index, file=entry.file, arguments=entry.arguments,
             resource_dir=resource_dir, working_directory=entry.directory,
             unsaved_files=list(unsaved_files))
-    tu = parse()
     header = _repair_header_of(entry.arguments)
+    if header is not None and not repair.read_repairs(header):
+        # a unit never repaired starts with what its package's other units
+        # needed (their names, unless this package declares them)
+        repair.seed_repairs(header, relative,
+                            _package_declarations(package_path))
+    tu = parse()
     if header is None:
         return tu, 0
     texts = {}
@@ -357,18 +364,28 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         lines = text_of(file).split('\n')
         return lines[line - 1] if 0 < line <= len(lines) else ''
 
+    from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
+    stub_dir = os.path.dirname(os.path.dirname(os.path.dirname(header)))
+
+    def _user_file(file):
+        # the workspace's code (the package's and the headers of other
+        # packages it includes): not stand-ins, model or system headers
+        return not _inside(file, stub_dir) and \
+            not _inside(file, MODEL_HEADERS_DIR) and \
+            not file.startswith(('/usr/', '/opt/'))
+
     def own_errors(tu):
-        # errors elsewhere (stand-ins, model headers) hide none of the
-        # package's calls, and declarations cannot fix them
+        # errors elsewhere hide none of the package's calls, and
+        # declarations cannot fix them
         return [e for e in cpp.error_diagnostics(tu)
-                if e[1] and _inside(e[1], package_path)]
+                if e[1] and _user_file(e[1])]
     errors = own_errors(tu)
     best = (len(errors), 0, tu, _read_text(header))
     rounds = 0
     while errors and rounds < repair.MAX_REPAIR_ROUNDS:
         own_files = {entry.file} | {
             i.include.name for i in tu.get_includes()
-            if i.include is not None and _inside(i.include.name, package_path)}
+            if i.include is not None and _user_file(i.include.name)}
         repairs = repair.repairs_from_diagnostics(
             errors, read_line,
             texts=[text_of(f) for f in sorted({e[1] for e in errors})],
@@ -386,7 +403,33 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         # so that later parses of the unit do not pay for it
         from colcon_rsia.frontend.model_mode import write_atomically
         write_atomically(header, best[3])
+    if best[1]:
+        repair.share_repairs(header, repair.read_repairs(header))
     return best[2], rounds
+
+
+_declarations = {}
+_declarations_lock = threading.Lock()
+
+
+def _package_declarations(package_path):
+    """The names a package's own C++ files declare (read once)."""
+    with _declarations_lock:
+        if package_path not in _declarations:
+            texts = []
+            for root, dirs, files in os.walk(package_path):
+                dirs[:] = [d for d in dirs if d not in SKIPPED_DIRECTORIES
+                           and not d.startswith('.')]
+                for name in files:
+                    if name.endswith(CXX_EXTENSIONS + CXX_HEADERS):
+                        try:
+                            texts.append(safe_files.read_text(
+                                os.path.join(root, name), errors='replace'))
+                        except OSError:
+                            pass  # named by the checks before the parse
+            from colcon_rsia.frontend import repair
+            _declarations[package_path] = repair.declared_names(texts)
+        return _declarations[package_path]
 
 
 def _repair_header_of(arguments):

@@ -662,6 +662,7 @@ class _Walker:
         if ref is None:
             ref = _overload_candidate(cursor)
         if ref is None:
+            self._dependent_call(cursor, ctx, stack)
             return
         if cursor.spelling == 'operator=':
             children = _children(cursor)
@@ -686,6 +687,32 @@ class _Walker:
         arguments = list(cursor.get_arguments())
         handler = getattr(self, '_on_' + api.role)
         handler(cursor, ctx, stack, api, name, arguments)
+
+    def _dependent_call(self, cursor, ctx, stack):
+        """``node->template create_publisher<M>(...)`` in a template.
+
+        On an object of a template parameter's type (``NodeT node``) the
+        call resolves only when the template is instantiated, which the
+        AST does not show: the endpoint-creating methods are recognised by
+        their name (see ros_api.DEPENDENT_METHODS).
+        """
+        children = _children(cursor)
+        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
+            return
+        # a dependent member has no spelling: the name follows `.`/`->`
+        tokens = [t.spelling for t in source_tokens(children[0])]
+        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
+        if not accesses:
+            return
+        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
+        if not rest:
+            return
+        name = ros_api.dependent_method(rest[0], ros2=self._ros2)
+        if name is None:
+            return
+        api = ros_api.lookup_call(name)
+        handler = getattr(self, '_on_' + api.role)
+        handler(cursor, ctx, stack, api, name, list(cursor.get_arguments()))
 
     def _forwarded_package_constructor(self, cursor, ctx):
         """make_shared<C>(args) of a package class calls C's constructor.

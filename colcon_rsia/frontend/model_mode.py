@@ -728,6 +728,11 @@ def _unknown_namespaces(stubs, codes):
                     continue
                 if after and after.strip() == '<':
                     templates.add(name)
+                elif member and re.match(r'^[a-z][a-z0-9_]*$', name) and \
+                        _CAMEL.match(member):
+                    # ns::inner::Type: a nested namespace, which the
+                    # repairs declare with what is used of it (repair.py)
+                    continue
                 elif member or _CAMEL.match(name) or (
                         after and not name.isupper()):
                     members = types.setdefault(name, set())
