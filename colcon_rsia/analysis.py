@@ -148,7 +148,8 @@ def _coverage(path, units, nodes):
             for file, unit in sorted(units.items())],
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=False),
-            coverage.node_endpoint_lines(nodes), unit_lines))
+            coverage.node_endpoint_lines(nodes), unit_lines,
+            read={f for unit in units.values() for f in unit.files}))
 
 
 def synthesized_entries(path, *, workspace_package_dirs=(),

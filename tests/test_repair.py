@@ -349,3 +349,28 @@ def test_calls_on_a_template_parameter_are_recognised_by_name(tmp_path):
     assert [(role, line) for role, line, _ in recorded] == [
         ('publisher', 11), ('subscriber', 12)]
     assert all(where != 'none' for _, _, where in recorded)
+
+
+def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
+    package = _package(tmp_path)
+    (package / 'include' / 'acme_vision').mkdir(parents=True)
+    # a header nothing includes: the build never compiles its code
+    (package / 'include' / 'acme_vision' / 'unused.hpp').write_text(
+        '#include <rclcpp/rclcpp.hpp>\n'
+        'inline void unused(rclcpp::Node & node)\n'
+        '{\n'
+        '  node.create_publisher<std_msgs::msg::String>("never", 1);\n'
+        '}\n')
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    by_file = {(c.file, c.role): c.recorded
+               for c in summary.coverage.call_sites}
+    assert by_file == {
+        ('include/acme_vision/unused.hpp', 'publisher'): 'unread',
+        ('src/detector_node.cpp', 'publisher'): 'node',
+        ('src/detector_node.cpp', 'subscriber'): 'node'}
+    from colcon_rsia.coverage import package_report
+    report = package_report(summary)
+    assert report['call_sites']['publisher']['sites'] == 1
+    assert report['in_unread_files'] == [{
+        'file': 'include/acme_vision/unused.hpp', 'line': 4,
+        'role': 'publisher', 'api': 'create_publisher'}]
