@@ -808,7 +808,12 @@ def _stand_ins_for(include, codes):
     if len(parts) != 2 or not parts[1].endswith('.h'):
         return {include: _empty_stub(include)}
     package, name = parts[0], parts[1][:-2]
-    if not (_PACKAGE.match(package) and _CAMEL.match(name)):
+    # messages are CamelCase, with exceptions (tf/tfMessage.h): a header
+    # whose stem the sources name as `package::stem` is one too
+    named = _IDENTIFIER.match(name) and any(
+        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b', code)
+        for code in codes)
+    if not (_PACKAGE.match(package) and (_CAMEL.match(name) or named)):
         return {include: _empty_stub(include)}
     for suffix, member in (('ActionGoal', 'goal'), ('ActionResult', 'result'),
                            ('ActionFeedback', 'feedback')):
