@@ -167,6 +167,8 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
     include_dirs = _own_include_dirs(path)
     include_dirs += [os.path.join(package, 'include')
                      for package in sorted(workspace_package_dirs)]
+    # "subdir/header.hpp" relative to the package (include_directories(.))
+    include_dirs.append(path)
     if with_system_ros:
         include_dirs += sorted(glob.glob('/opt/ros/*/include'))
     include_dirs = [d for d in dict.fromkeys(include_dirs) if os.path.isdir(d)]

@@ -88,8 +88,10 @@ MEMBER = 'member'                  # a static member of a type declared here
 STD_HEADER = 'std-header'          # a standard header to include
 
 # when one name is asked for as several kinds, the first of these wins
+# (a name used as a type somewhere is a class, even where `Name::` made it
+# look like a namespace: QFrame *line; QFrame::HLine)
 _PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION,
-             NAMESPACE, TEMPLATE, TYPE, FUNCTION, CONSTANT, OBJECT)
+             TEMPLATE, TYPE, NAMESPACE, FUNCTION, CONSTANT, OBJECT)
 
 # what a name of std:: needs (the model includes the costly ones only when
 # the sources name them; a name reached otherwise is repaired here)
@@ -260,7 +262,11 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
 
 
 def _one_kind_each(repairs):
-    """Keep one kind per name (a name both a type and an object is not)."""
+    """Keep one kind per name (a name both a type and an object is not).
+
+    What was taken as declared inside a name that turns out a class
+    becomes a member of that class.
+    """
     chosen = {}
     for kind, name in sorted(repairs):
         if kind not in _PRIORITY:
@@ -270,7 +276,17 @@ def _one_kind_each(repairs):
         if current is None or \
                 _PRIORITY.index(kind) < _PRIORITY.index(current[0]):
             chosen[name] = (kind, name)
-    return set(chosen.values())
+    classes = {name for kind, name in chosen.values()
+               if kind in (TYPE, TEMPLATE)}
+    result = set()
+    for kind, name in chosen.values():
+        owner = name.rsplit('::', 1)[0] if '::' in name else None
+        if owner in classes and kind not in (MEMBER, STD_HEADER):
+            kind = MEMBER
+        elif any(name.startswith(c + '::') for c in classes if c != owner):
+            continue  # deeper inside a class: not declarable from outside
+        result.add((kind, name))
+    return result
 
 
 def _declared(name, declared):
@@ -469,9 +485,14 @@ def _by_use(name, after, *, unqualified):
         return TEMPLATE, name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
-    if _CAMEL.match(name) or re.match(r'(?:[&*]\s*)?[A-Za-z_]', after):
-        # CamelCase, or a name followed by a name: `ns::archive ar(...)`
+    if re.match(r'(?:[&*]\s*)?[A-Za-z_]', after) or \
+            (_CAMEL.match(name) and (unqualified or not after or
+                                     after.startswith(('{', '*', '&')))):
+        # a name followed by a name (`ns::archive ar(...)`), or CamelCase
         return TYPE, name
+    if _CAMEL.match(name):
+        # a CamelCase value: an enumerator (Qt::AlignCenter)
+        return CONSTANT, name
     return OBJECT, name
 
 
