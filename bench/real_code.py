@@ -102,7 +102,7 @@ def _summary(build_base, package):
 
 
 def _recorded(summary, sites):
-    """({sites with a fact}, {sites with a fact of a node}).
+    """(sites counted, {sites with a fact}, {sites with a fact of a node}).
 
     From the summary's coverage section; a summary of an older analyser
     has none: its nodes' endpoints are matched here (node facts only).
@@ -111,14 +111,17 @@ def _recorded(summary, sites):
     if coverage is None:
         lines = _node_lines(summary) if summary else {}
         hits = match_sites(sites, lines)
-        return hits, hits
+        return sites, hits, hits
     recorded = {(c['file'], c['line'], c['role']): c['recorded']
                 for c in coverage.get('call_sites', [])}
+    # a header no unit includes is code the build never compiles
+    sites = [s for s in sites
+             if recorded.get((s.file, s.line, s.role)) != 'unread']
     facts = {s for s in sites
              if recorded.get((s.file, s.line, s.role), 'none') != 'none'}
     in_nodes = {s for s in sites
                 if recorded.get((s.file, s.line, s.role)) == 'node'}
-    return facts, in_nodes
+    return sites, facts, in_nodes
 
 
 def _node_lines(summary):
@@ -202,7 +205,7 @@ def main():
         totals['units'] += units
         totals['units_with_errors'] += with_errors
         sites = scan_package(path)
-        hits, in_nodes = _recorded(summary, sites)
+        sites, hits, in_nodes = _recorded(summary, sites)
         for role in (PUBLISHER, SUBSCRIBER):
             totals[role + '_sites'] += sum(1 for s in sites if s.role == role)
             totals[role + '_hits'] += sum(1 for s in hits if s.role == role)

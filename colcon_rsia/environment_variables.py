@@ -26,5 +26,16 @@ CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'A clang resource directory (with include/stddef.h) for rsia to use '
     'instead of the newest /usr/lib/llvm-*/lib/clang/*')
 
+"""Environment variable: the largest file read from a package, in MB"""
+MAX_FILE_MB_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_MAX_FILE_MB',
+    'The largest file rsia reads from a package, in megabytes (default: 8)')
+
+"""Environment variable: more directories package files may resolve into"""
+ALLOWED_ROOTS_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_ALLOWED_ROOTS',
+    'Directories (separated by :) outside a package that its files may '
+    'link into for rsia to read them')
+
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'

@@ -21,17 +21,19 @@ PACKAGE_DIR = Path(__file__).resolve().parents[1] / 'colcon_rsia'
 # __version__); the summary contract (model, package.store) is the one
 # thing both phases share
 ALLOWED = {
-    'model': set(),
-    'frontend': {'model', 'environment_variables'},
-    'launch': set(),
-    'package': {'model', 'frontend', 'environment_variables'},
-    'system': {'model', 'launch', 'package.store'},
-    'report': {'model', 'system'},
-    'event_handler': {'package'},
-    'subverb': {'model', 'package', 'system', 'report',
-                'environment_variables'},
-    'verb': {'subverb'},
+    'model': {'safe_files'},
     'environment_variables': set(),
+    # reading files of an untrusted workspace: for every layer
+    'safe_files': {'environment_variables'},
+    'frontend': {'model', 'environment_variables', 'safe_files'},
+    'launch': {'safe_files'},
+    'package': {'model', 'frontend', 'environment_variables', 'safe_files'},
+    'system': {'model', 'launch', 'package.store', 'safe_files'},
+    'report': {'model', 'system', 'package.store', 'safe_files'},
+    'event_handler': {'package', 'safe_files'},
+    'subverb': {'model', 'package', 'system', 'report',
+                'environment_variables', 'safe_files'},
+    'verb': {'subverb'},
 }
 
 

@@ -13,8 +13,9 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[1]
 OUR_VARIABLES = {
-    'COLCON_RSIA_CLANG_RESOURCE_DIR', 'COLCON_RSIA_CXX_STD',
-    'COLCON_RSIA_HEADER_MODE'}
+    'COLCON_RSIA_ALLOWED_ROOTS', 'COLCON_RSIA_CLANG_RESOURCE_DIR',
+    'COLCON_RSIA_CXX_STD', 'COLCON_RSIA_HEADER_MODE',
+    'COLCON_RSIA_MAX_FILE_MB'}
 
 
 def test_environment_variables_are_listed_by_colcon_help():

@@ -246,3 +246,131 @@ def test_unresolved_callees_are_no_crash(tmp_path):
     assert not [d for d in summary.diagnostics if 'internal error' in d]
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['out']
+
+
+# what real ROS 2 code uses of rclcpp beyond the basics (Iron/Jazzy)
+NEWER_RCLCPP = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp/parameter_client.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Watcher : public rclcpp::Node
+{
+public:
+  Watcher()
+  : Node("watcher", rclcpp::NodeOptions().enable_logger_service(true))
+  {
+    rclcpp::PublisherOptions options;
+    options.event_callbacks.matched_callback =
+      [](rclcpp::MatchedInfo & info) { (void)info.current_count; };
+    pub_ = create_publisher<std_msgs::msg::String>("status", 10, options);
+    auto overrides =
+      get_node_parameters_interface()->get_parameter_overrides();
+    remote_ = std::make_shared<rclcpp::AsyncParametersClient>(this, "other");
+    sync_ = std::make_shared<rclcpp::SyncParametersClient>(this, "other");
+    remote_->wait_for_service(std::chrono::seconds(1));
+    auto values = sync_->get_parameters({"rate"});
+    get_clock()->wait_until_started(rclcpp::Duration(1, 0));
+    (void)overrides; (void)values; (void)get_clock()->started();
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::AsyncParametersClient::SharedPtr remote_;
+  rclcpp::SyncParametersClient::SharedPtr sync_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Watcher>());
+}
+"""
+
+
+def test_the_model_has_what_newer_rclcpp_code_uses(tmp_path):
+    package = tmp_path / 'watcher'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'watcher.cpp').write_text(NEWER_RCLCPP)
+    summary = analysis.analyze_package(
+        name='watcher', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    # no repair needed: the model headers declare all of it
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['status']
+
+
+# endpoints created through an object of a template parameter's type: the
+# call resolves only in instantiations, which the AST does not show
+TEMPLATED_HELPER = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Relay
+{
+public:
+  template<class NodeT>
+  explicit Relay(NodeT node)
+  {
+    pub_ = node->template create_publisher<std_msgs::msg::String>("relayed", 10);
+    sub_ = node->template create_subscription<std_msgs::msg::String>(
+      "incoming", 10,
+      [this](std_msgs::msg::String::ConstSharedPtr msg) { pub_->publish(*msg); });
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("relay");
+  Relay relay(node);
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_calls_on_a_template_parameter_are_recognised_by_name(tmp_path):
+    package = tmp_path / 'relay'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'relay.cpp').write_text(TEMPLATED_HELPER)
+    summary = analysis.analyze_package(
+        name='relay', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    recorded = sorted((c.role, c.line, c.recorded)
+                      for c in summary.coverage.call_sites)
+    # both calls have facts (in the unit: the node's main reaches the
+    # template constructor only through its instantiation)
+    assert [(role, line) for role, line, _ in recorded] == [
+        ('publisher', 11), ('subscriber', 12)]
+    assert all(where != 'none' for _, _, where in recorded)
+
+
+def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
+    package = _package(tmp_path)
+    (package / 'include' / 'acme_vision').mkdir(parents=True)
+    # a header nothing includes: the build never compiles its code
+    (package / 'include' / 'acme_vision' / 'unused.hpp').write_text(
+        '#include <rclcpp/rclcpp.hpp>\n'
+        'inline void unused(rclcpp::Node & node)\n'
+        '{\n'
+        '  node.create_publisher<std_msgs::msg::String>("never", 1);\n'
+        '}\n')
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    by_file = {(c.file, c.role): c.recorded
+               for c in summary.coverage.call_sites}
+    assert by_file == {
+        ('include/acme_vision/unused.hpp', 'publisher'): 'unread',
+        ('src/detector_node.cpp', 'publisher'): 'node',
+        ('src/detector_node.cpp', 'subscriber'): 'node'}
+    from colcon_rsia.package.coverage import package_report
+    report = package_report(summary)
+    assert report['call_sites']['publisher']['sites'] == 1
+    assert report['in_unread_files'] == [{
+        'file': 'include/acme_vision/unused.hpp', 'line': 4,
+        'role': 'publisher', 'api': 'create_publisher'}]

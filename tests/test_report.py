@@ -143,7 +143,7 @@ def test_summary_md_for_a_pull_request(system):
     lines = summary.splitlines()
     assert lines[0] == '### colcon-rsia: rate impact'
     assert '**Changed since `origin/main`:** 1 node' in lines
-    assert f'- `{LASER}`: src/laser_driver.cpp changed' in lines
+    assert f'- `{LASER}`: `src/laser_driver.cpp` changed' in lines
     assert '**Rate-aware impact: 2 nodes** (traditional data-flow ' \
         'impact: 5)' in lines
     rows = [line for line in lines if line.startswith('| `')]
@@ -151,10 +151,10 @@ def test_summary_md_for_a_pull_request(system):
         f'`{LASER}`', '`sysbot_navigation/planner`',
         '`sysbot_perception/scan_filter`', '`sysbot_drivers/base_driver`',
         '`sysbot_navigation/controller`', '`sysbot_navigation/system_monitor`']
-    assert '| `sysbot_perception/scan_filter` | rate-aware | via /scan of ' \
-        f'{LASER} (changed node: relabelled dependent) |' in lines
+    assert '| `sysbot_perception/scan_filter` | rate-aware | via `/scan` of ' \
+        f'`{LASER}` (changed node: relabelled dependent) |' in lines
     assert '| `sysbot_navigation/controller` | traditional only | data flow ' \
-        'only: held by independent /plan of sysbot_navigation/planner ' \
+        'only: held by independent `/plan` of `sysbot_navigation/planner` ' \
         '(timer 5 Hz) |' in lines
     assert '- `/plan` of `sysbot_navigation/planner` (timer 5 Hz): holds ' \
         '`sysbot_navigation/controller`, `sysbot_navigation/system_monitor`' \
@@ -401,7 +401,7 @@ def test_since_on_the_command_line(git_workspace, tmp_path):
     assert report.returncode == 0, report.stderr
     summary = (out / 'summary.md').read_text()
     assert '**Changed since `HEAD`:** 1 node' in summary
-    assert f'- `{LASER}`: src/laser_driver.cpp changed' in summary
+    assert f'- `{LASER}`: `src/laser_driver.cpp` changed' in summary
     bad = _git_colcon(tmp_path, 'impact', '--since', 'no-such-branch')
     assert bad.returncode == 1
     assert '--since no-such-branch: unknown revision in the git ' \

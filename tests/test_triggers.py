@@ -255,8 +255,10 @@ def test_report_shows_both_models(triggers_workspace, tmp_path):
         node('joints'), check=True)
     summary = (tmp_path / 'summary.md').read_text()
     assert '(ratio 0.84; paper model 1, trigger model 0.84)' in summary
-    assert '| `trig_nodes/fusion` | traditional only | held: /joint_states ' \
-        'does not trigger /scan_relayed of trig_nodes/scan_relay |' in summary
+    # names in the reason are inline code (never Markdown)
+    assert '| `trig_nodes/fusion` | traditional only | held: `/joint_states` ' \
+        'does not trigger `/scan_relayed` of `trig_nodes/scan_relay` |' \
+        in summary
     dot = (tmp_path / 'graph.dot').read_text()
     assert '"topic:/image_third" [label="/image_third\\n10 Hz (/image / 3)"' \
         in dot

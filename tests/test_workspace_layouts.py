@@ -111,3 +111,30 @@ def test_coverage_of_the_analysed_workspace(tmp_path):
     assert failing.returncode == 2, failing.stdout + failing.stderr
     assert run_colcon(['rsia', 'coverage', '--fail-under', '100'],
                       cwd=root).returncode == 0
+
+
+def test_coverage_names_the_packages_whose_analysis_failed(tmp_path):
+    root = _workspace(tmp_path)
+    # a compile database that is not JSON: cob_sensors cannot be analysed
+    database = root / 'build' / 'cob_sensors' / 'compile_commands.json'
+    database.parent.mkdir(parents=True)
+    database.write_text('{ not json')
+    analysed = run_colcon(['rsia', 'analyze'], cwd=root)
+    assert analysed.returncode == 0, analysed.stdout + analysed.stderr
+    assert '1 packages failed' in analysed.stdout
+    result = run_colcon(['rsia', 'coverage', '--format', 'json'], cwd=root,
+                        check=True)
+    by_name = {p['package']: p for p in json.loads(result.stdout)['packages']}
+    assert by_name['cob_sensors']['status'] == 'failed'
+    assert 'compile_commands.json' in by_name['cob_sensors']['error']
+    assert by_name['cob_processing']['status'] == 'analysed'
+    # a failed package fails the check, whatever the share
+    assert run_colcon(['rsia', 'coverage', '--fail-under', '0'],
+                      cwd=root).returncode == 2
+    # once analysed again, the failure is gone
+    database.unlink()
+    run_colcon(['rsia', 'analyze'], cwd=root, check=True)
+    result = run_colcon(['rsia', 'coverage', '--format', 'json'], cwd=root,
+                        check=True)
+    by_name = {p['package']: p for p in json.loads(result.stdout)['packages']}
+    assert by_name['cob_sensors']['status'] == 'analysed'

@@ -9,9 +9,14 @@ import os
 import shlex
 from typing import List
 
+from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import \
     CLANG_RESOURCE_DIR_ENVIRONMENT_VARIABLE
 from colcon_rsia.environment_variables import OLD_CLANG_RESOURCE_DIR_NAME
+
+# a compile database may be this many times the size limit of a source: it
+# holds a command line per translation unit
+COMPILE_DB_SIZE_FACTOR = 8
 
 COMPILE_DB_FILENAME = 'compile_commands.json'
 
@@ -49,8 +54,10 @@ def load_compile_database(path):
     :raises CompileDatabaseError: if it is missing or malformed
     """
     try:
-        with open(path, 'rb') as h:
-            raw = json.loads(h.read().decode('utf-8', errors='replace'))
+        # a database lists every unit: larger than a source may be
+        raw = json.loads(safe_files.read_bytes(
+            path, limit=COMPILE_DB_SIZE_FACTOR * safe_files.max_file_bytes(),
+        ).decode('utf-8', errors='surrogateescape'))
     except FileNotFoundError:
         raise CompileDatabaseError(f"no compile database at '{path}'")
     except (OSError, ValueError) as e:

@@ -10,6 +10,7 @@ ever executed; macro bodies are read by a small arithmetic parser.
 import re
 
 import clang.cindex as ci
+from colcon_rsia import safe_files
 
 CK = ci.CursorKind
 
@@ -162,8 +163,8 @@ class _Macros:
                 if name.startswith(_SYSTEM_PREFIXES):
                     continue
                 try:
-                    with open(name, encoding='utf-8', errors='replace') as h:
-                        text = h.read()
+                    # checked: a header may be a link to /dev/zero
+                    text = safe_files.read_text(name)
                 except OSError:
                     continue
                 text = re.sub(r'/\*.*?\*/', ' ', text, flags=re.DOTALL)

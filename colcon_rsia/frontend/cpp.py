@@ -71,8 +71,11 @@ class _MemberInit:
         self.member = member
 
 
-def parse(index, *, file, arguments, resource_dir, working_directory):
+def parse(index, *, file, arguments, resource_dir, working_directory,
+          unsaved_files=()):
     """Parse one translation unit with libclang.
+
+    :param unsaved_files: (path, content) pairs read instead of the files
 
     :raises clang.cindex.TranslationUnitLoadError: when libclang gives up
     """
@@ -81,7 +84,8 @@ def parse(index, *, file, arguments, resource_dir, working_directory):
         args += ['-resource-dir', resource_dir]
     # the default limit of 20 errors truncates the AST
     args += ['-ferror-limit=0', '-working-directory', working_directory]
-    return index.parse(file, args=args, options=PARSE_OPTIONS)
+    return index.parse(file, args=args, unsaved_files=list(unsaved_files),
+                       options=PARSE_OPTIONS)
 
 
 def parse_diagnostics(tu):
@@ -661,6 +665,7 @@ class _Walker:
         if ref is None:
             ref = _overload_candidate(cursor)
         if ref is None:
+            self._dependent_call(cursor, ctx, stack)
             return
         if cursor.spelling == 'operator=':
             children = _children(cursor)
@@ -685,6 +690,32 @@ class _Walker:
         arguments = list(cursor.get_arguments())
         handler = getattr(self, '_on_' + api.role)
         handler(cursor, ctx, stack, api, name, arguments)
+
+    def _dependent_call(self, cursor, ctx, stack):
+        """``node->template create_publisher<M>(...)`` in a template.
+
+        On an object of a template parameter's type (``NodeT node``) the
+        call resolves only when the template is instantiated, which the
+        AST does not show: the endpoint-creating methods are recognised by
+        their name (see ros_api.DEPENDENT_METHODS).
+        """
+        children = _children(cursor)
+        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
+            return
+        # a dependent member has no spelling: the name follows `.`/`->`
+        tokens = [t.spelling for t in source_tokens(children[0])]
+        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
+        if not accesses:
+            return
+        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
+        if not rest:
+            return
+        name = ros_api.dependent_method(rest[0], ros2=self._ros2)
+        if name is None:
+            return
+        api = ros_api.lookup_call(name)
+        handler = getattr(self, '_on_' + api.role)
+        handler(cursor, ctx, stack, api, name, list(cursor.get_arguments()))
 
     def _forwarded_package_constructor(self, cursor, ctx):
         """make_shared<C>(args) of a package class calls C's constructor.

@@ -34,6 +34,8 @@ import re
 import tempfile
 import threading
 
+from colcon_rsia import safe_files
+
 MODEL_HEADERS_DIR = os.path.join(
     os.path.dirname(os.path.abspath(__file__)), 'model_headers')
 
@@ -386,8 +388,8 @@ class _Scanner:
 
 def _read_text(path):
     try:
-        with open(path, 'rb') as h:
-            data = h.read()
+        # checked: a header may be a link to /dev/zero, or a FIFO
+        data = safe_files.read_bytes(path)
     except OSError:
         return None
     return data.decode('utf-8', errors='surrogateescape')
@@ -598,6 +600,7 @@ def write_atomically(path, content):
     fd, temporary = tempfile.mkstemp(
         dir=os.path.dirname(path), prefix='.rsia-', suffix='.tmp')
     try:
+        os.fchmod(fd, safe_files.file_mode())
         with os.fdopen(fd, 'w', encoding='utf-8',
                        errors='surrogateescape') as h:
             h.write(content)
@@ -725,6 +728,11 @@ def _unknown_namespaces(stubs, codes):
                     continue
                 if after and after.strip() == '<':
                     templates.add(name)
+                elif member and re.match(r'^[a-z][a-z0-9_]*$', name) and \
+                        _CAMEL.match(member):
+                    # ns::inner::Type: a nested namespace, which the
+                    # repairs declare with what is used of it (repair.py)
+                    continue
                 elif member or _CAMEL.match(name) or (
                         after and not name.isupper()):
                     members = types.setdefault(name, set())
@@ -800,7 +808,12 @@ def _stand_ins_for(include, codes):
     if len(parts) != 2 or not parts[1].endswith('.h'):
         return {include: _empty_stub(include)}
     package, name = parts[0], parts[1][:-2]
-    if not (_PACKAGE.match(package) and _CAMEL.match(name)):
+    # messages are CamelCase, with exceptions (tf/tfMessage.h): a header
+    # whose stem the sources name as `package::stem` is one too
+    named = _IDENTIFIER.match(name) and any(
+        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b', code)
+        for code in codes)
+    if not (_PACKAGE.match(package) and (_CAMEL.match(name) or named)):
         return {include: _empty_stub(include)}
     for suffix, member in (('ActionGoal', 'goal'), ('ActionResult', 'result'),
                            ('ActionFeedback', 'feedback')):

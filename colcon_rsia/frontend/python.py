@@ -51,6 +51,7 @@ import string
 import tokenize
 
 from colcon_rsia import model
+from colcon_rsia import safe_files
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
 
@@ -97,14 +98,14 @@ class SourceError(Exception):
     """A module that cannot be read or parsed (one line, no file name)."""
 
 
-def read_module(path):
+def read_module(path, *, roots=None):
     """Parse a Python file without running it; return (tree, text).
 
+    :param roots: the directories the file's real path must be inside
     :raises SourceError: when the file cannot be read, decoded or parsed
     """
     try:
-        with open(path, 'rb') as h:
-            data = h.read()
+        data = safe_files.read_bytes(path, roots=roots)
     except OSError as e:
         raise SourceError(f'cannot be read ({e.strerror or e})') from None
     try:
@@ -125,7 +126,10 @@ def read_module(path):
         raise SourceError(
             f'syntax error at line {e.lineno}: {e.msg}') from None
     except (ValueError, RecursionError, MemoryError) as e:
-        raise SourceError(f'cannot be parsed ({e})') from None
+        reason = str(e) or {
+            RecursionError: 'nested too deeply', MemoryError: 'too large',
+        }.get(type(e), type(e).__name__)
+        raise SourceError(f'cannot be parsed ({reason})') from None
 
 
 def normalize_msg_type(dotted):
@@ -471,7 +475,7 @@ def _load_module(name, path, package_path):
     cached = _MODULE_CACHE.get(key)
     if cached is not None and cached[0] == stamp:
         return cached[1]
-    tree, text = read_module(path)
+    tree, text = read_module(path, roots=[package_path])
     module = _Module(name, path, os.path.relpath(path, package_path),
                      tree, text)
     if len(_MODULE_CACHE) >= _CACHE_LIMIT:

@@ -25,7 +25,9 @@ read from the cache: a package is repaired once.
 import hashlib
 import os
 import re
+import threading
 
+from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.model_mode import write_atomically
 
 # parses of a unit after the first: each round fixes what the previous one
@@ -42,7 +44,12 @@ _IN_NAMESPACE = re.compile(
     r"^no (type|template|member|class) named '(\w+)' in namespace '([\w:]+)'")
 _NOT_NAMESPACE = re.compile(
     r"^use of undeclared identifier '(\w+)'|^expected namespace name")
+_IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
 _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)'$")
+_INCOMPLETE = re.compile(
+    r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
+    r'^(?:member access into|variable has|field has) incomplete type '
+    r"'(?:struct |class )?([\w:]+)'$")
 _ARGUMENT_NOT_VALUE = re.compile(
     r"^'\w+' does not refer to a value|"
     r"^expected '\(' for function-style cast")
@@ -78,6 +85,76 @@ MACRO_VOID = 'macro-void'          # FOO(...) at declaration level
 MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
 NO_OVERRIDE = 'no-override'        # `override` made a no-op
 MEMBER = 'member'                  # a static member of a type declared here
+STD_HEADER = 'std-header'          # a standard header to include
+
+# when one name is asked for as several kinds, the first of these wins
+# (a name used as a type somewhere is a class, even where `Name::` made it
+# look like a namespace: QFrame *line; QFrame::HLine)
+_PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION,
+             TEMPLATE, TYPE, NAMESPACE, FUNCTION, CONSTANT, OBJECT)
+
+# what a name of std:: needs (the model includes the costly ones only when
+# the sources name them; a name reached otherwise is repaired here)
+_STD_HEADER_OF = {
+    name: header for header, names in {
+        'algorithm': 'sort stable_sort find find_if count count_if copy '
+                     'copy_if fill transform remove remove_if replace '
+                     'reverse rotate unique min max minmax min_element '
+                     'max_element clamp all_of any_of none_of for_each '
+                     'lower_bound upper_bound binary_search equal search '
+                     'partition nth_element',
+        'cmath': 'sqrt cbrt hypot pow exp log log10 log2 sin cos tan asin '
+                 'acos atan atan2 sinh cosh tanh fabs abs floor ceil round '
+                 'lround trunc fmod remainder copysign isnan isinf isfinite '
+                 'fmin fmax signbit',
+        'numeric': 'accumulate iota inner_product partial_sum reduce gcd lcm '
+                   'adjacent_difference transform_reduce',
+        'memory': 'shared_ptr unique_ptr weak_ptr make_shared make_unique '
+                  'enable_shared_from_this static_pointer_cast '
+                  'dynamic_pointer_cast',
+        'functional': 'function bind placeholders ref cref hash invoke '
+                      'mem_fn reference_wrapper',
+        'sstream': 'stringstream ostringstream istringstream',
+        'iostream': 'cout cerr clog cin',
+        'iomanip': 'setprecision setw setfill put_time quoted',
+        'limits': 'numeric_limits',
+        'mutex': 'mutex recursive_mutex timed_mutex lock_guard unique_lock '
+                 'scoped_lock call_once once_flag',
+        'shared_mutex': 'shared_mutex shared_lock',
+        'condition_variable': 'condition_variable',
+        'thread': 'thread this_thread',
+        'atomic': 'atomic atomic_bool atomic_int',
+        'chrono': 'chrono',
+        'optional': 'optional nullopt make_optional',
+        'variant': 'variant visit holds_alternative monostate',
+        'tuple': 'tuple make_tuple tie get',
+        'utility': 'pair make_pair move forward swap exchange',
+        'map': 'map multimap',
+        'unordered_map': 'unordered_map',
+        'set': 'set multiset',
+        'unordered_set': 'unordered_set',
+        'list': 'list',
+        'deque': 'deque',
+        'queue': 'queue priority_queue',
+        'stack': 'stack',
+        'array': 'array',
+        'string_view': 'string_view',
+        'regex': 'regex regex_match regex_search regex_replace smatch',
+        'random': 'mt19937 random_device uniform_real_distribution '
+                  'uniform_int_distribution normal_distribution',
+        'future': 'future promise async',
+        'filesystem': 'filesystem',
+        'fstream': 'ifstream ofstream fstream',
+        'iterator': 'back_inserter inserter distance advance next prev '
+                    'begin end',
+        'stdexcept': 'runtime_error logic_error invalid_argument '
+                     'out_of_range',
+        'cstring': 'memcpy memset strlen strcmp strncpy',
+        'cstdlib': 'exit getenv abort',
+        'complex': 'complex',
+        'bitset': 'bitset',
+        'numbers': 'numbers',
+    }.items() for name in names.split()}
 
 
 def repair_header(stub_dir, source):
@@ -107,10 +184,57 @@ def read_repairs(path):
 def add_repairs(path, source, repairs):
     """Add declarations to a unit's repair header; return whether it grew."""
     known = read_repairs(path)
-    if repairs <= known:
+    merged = _one_kind_each(known | repairs)
+    if merged == known:
         return False
-    write_atomically(path, _render(known | repairs, source))
+    write_atomically(path, _render(merged, source))
     return True
+
+
+# what one unit needed that any unit of the package may need: qualified
+# names, macros and standard headers (shared through this file, so that the
+# units parsed later start with them and need fewer parses)
+SHARED_REPAIRS = 'package.repairs'
+_shared_lock = threading.Lock()
+
+
+def _shareable(repair):
+    kind, name = repair
+    return kind == STD_HEADER or kind.startswith('macro-') or (
+        '::' in name and kind != MEMBER)
+
+
+def share_repairs(header, repairs):
+    """Offer a unit's repairs to the units of its package parsed later."""
+    path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
+    with _shared_lock:
+        known = _read_shared(path)
+        offered = {r for r in repairs if _shareable(r)}
+        if not offered <= known:
+            write_atomically(path, ''.join(
+                f'{kind} {name}\n' for kind, name in sorted(known | offered)))
+
+
+def seed_repairs(header, source, declared):
+    """Start a unit's (empty) repair header with its package's repairs."""
+    path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
+    with _shared_lock:
+        shared = _read_shared(path)
+    # a unit may include the model header or the package header that
+    # another unit lacked: only names declared in neither are seeded
+    declared = set(declared) | model_declarations()
+    seeds = {r for r in shared
+             if r[0] == STD_HEADER or not _declared(r[1], declared)}
+    return bool(seeds) and add_repairs(header, source, seeds)
+
+
+def _read_shared(path):
+    try:
+        with open(path, encoding='utf-8') as h:
+            return {tuple(line.split(' ', 1)) for line in h.read().split('\n')
+                    if ' ' in line}
+    except OSError:
+        return set()
 
 
 def repairs_from_diagnostics(diagnostics, read_line, texts=(),
@@ -130,8 +254,39 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
             repairs |= _uses_of_namespace(name, texts)
-    return {r for r in repairs if r[0] and not _declared(r[1], declared)
-            and not any(part in _KEYWORDS for part in r[1].split('::'))}
+    return _one_kind_each({
+        r for r in repairs
+        if r[0] == STD_HEADER or (
+            not _declared(r[1], declared) and
+            not any(part in _KEYWORDS for part in r[1].split('::')))})
+
+
+def _one_kind_each(repairs):
+    """Keep one kind per name (a name both a type and an object is not).
+
+    What was taken as declared inside a name that turns out a class
+    becomes a member of that class.
+    """
+    chosen = {}
+    for kind, name in sorted(repairs):
+        if kind not in _PRIORITY:
+            chosen[(kind, name)] = (kind, name)
+            continue
+        current = chosen.get(name)
+        if current is None or \
+                _PRIORITY.index(kind) < _PRIORITY.index(current[0]):
+            chosen[name] = (kind, name)
+    classes = {name for kind, name in chosen.values()
+               if kind in (TYPE, TEMPLATE)}
+    result = set()
+    for kind, name in chosen.values():
+        owner = name.rsplit('::', 1)[0] if '::' in name else None
+        if owner in classes and kind not in (MEMBER, STD_HEADER):
+            kind = MEMBER
+        elif any(name.startswith(c + '::') for c in classes if c != owner):
+            continue  # deeper inside a class: not declarable from outside
+        result.add((kind, name))
+    return result
 
 
 def _declared(name, declared):
@@ -146,18 +301,41 @@ def _declared(name, declared):
 
 _DECLARATION = re.compile(
     r'\b(?:class|struct|union|enum(?:\s+class)?|namespace)\s+'
-    r'(?:\w+\s+)?(\w+)\s*[:{;]|'
+    r'(?:\w+\s+)?(\w+)\s*(?:final\s*)?[:{]|'
     r'\busing\s+(\w+)\s*=|\btypedef\b[^;{}]*?\b(\w+)\s*;|'
     r'^\s*#\s*define\s+(\w+)', re.MULTILINE)
+
+
+_COMMENT_OR_STRING = re.compile(
+    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.DOTALL)
 
 
 def declared_names(texts):
     """Names that classes, namespaces, aliases and macros of texts declare."""
     names = set()
     for text in texts:
-        for match in _DECLARATION.finditer(text):
+        # `class X  // : public Base` then `{` on the next line
+        code = _COMMENT_OR_STRING.sub(' ', text)
+        for match in _DECLARATION.finditer(code):
             names.update(g for g in match.groups() if g)
     return names
+
+
+_model_declarations = []
+
+
+def model_declarations():
+    """The names the model headers declare (read once)."""
+    with _shared_lock:
+        if not _model_declarations:
+            texts = []
+            for root, _, files in os.walk(MODEL_HEADERS_DIR):
+                for name in files:
+                    with open(os.path.join(root, name), encoding='utf-8',
+                              errors='replace') as h:
+                        texts.append(h.read())
+            _model_declarations.append(declared_names(texts))
+        return _model_declarations[0]
 
 
 def _uses_of_namespace(namespace, texts):
@@ -187,6 +365,10 @@ def _repairs(diagnostics, read_line):
         match = _UNDECLARED.match(message)
         if match:
             kind, name = _by_use(match.group(1), after, unqualified=True)
+            if match.group(1) not in text and not _CAMEL.match(name):
+                # spelled in a macro's body (THROW_ON_NULLPTR(p) expanding
+                # to rcpputils::...): a namespace, by far the most common
+                kind = NAMESPACE
             # an undeclared lower-case variable is nearly always a local
             # whose declaration failed (an error of its own): declaring a
             # global of that name would only hide the cause
@@ -208,6 +390,18 @@ def _repairs(diagnostics, read_line):
         match = _UNKNOWN_TEMPLATE.match(message)
         if match:
             repairs.add((TEMPLATE, _qualified(match.group(1), text, column)))
+            continue
+        match = _IN_STD.match(message)
+        if match:
+            # a standard header the real headers would have brought in
+            header = _STD_HEADER_OF.get(match.group(1))
+            if header:
+                repairs.add((STD_HEADER, header))
+            continue
+        match = _INCOMPLETE.search(message)
+        if match:
+            # a class only forward-declared (its definition is generated)
+            repairs.add((TYPE, match.group(1) or match.group(2)))
             continue
         match = _IN_CLASS.match(message)
         if match:
@@ -291,9 +485,14 @@ def _by_use(name, after, *, unqualified):
         return TEMPLATE, name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
-    if _CAMEL.match(name) or re.match(r'(?:[&*]\s*)?[A-Za-z_]', after):
-        # CamelCase, or a name followed by a name: `ns::archive ar(...)`
+    if re.match(r'(?:[&*]\s*)?[A-Za-z_]', after) or \
+            (_CAMEL.match(name) and (unqualified or not after or
+                                     after.startswith(('{', '*', '&')))):
+        # a name followed by a name (`ns::archive ar(...)`), or CamelCase
         return TYPE, name
+    if _CAMEL.match(name):
+        # a CamelCase value: an enumerator (Qt::AlignCenter)
+        return CONSTANT, name
     return OBJECT, name
 
 
@@ -314,6 +513,9 @@ def _render(repairs, source):
         *namespaces, short = name.split('::')
         if kind == MEMBER:
             continue  # in its type's declaration
+        if kind == STD_HEADER:
+            lines.append(f'#include <{name}>')
+            continue
         if kind == NO_OVERRIDE:
             lines += ['#define override', '#define final']
             continue

@@ -339,6 +339,27 @@ MAIN_FUNCTION = 'main'
 NODELET_INIT_METHOD = 'onInit'
 
 
+# methods whose name alone says what a call on an object of a template
+# parameter's type does (the endpoint-creating ones; no other library of the
+# ROS world has methods of these names): name -> (ROS 1 API, ROS 2 API)
+DEPENDENT_METHODS = {
+    'advertise': ('ros::NodeHandle::advertise', None),
+    'subscribe': ('ros::NodeHandle::subscribe', None),
+    'create_publisher': (None, 'rclcpp::Node::create_publisher'),
+    'create_subscription': (None, 'rclcpp::Node::create_subscription'),
+    'create_wall_timer': (None, 'rclcpp::Node::create_wall_timer'),
+}
+
+
+def dependent_method(method, *, ros2):
+    """The API a dependent call of `method` stands for, or None."""
+    names = DEPENDENT_METHODS.get(method)
+    if names is None:
+        return None
+    name = names[1] if ros2 else names[0]
+    return name if name in CALLS else None
+
+
 def lookup_call(qualified_name):
     """Return the :class:`Api` for a called declaration, or None."""
     return CALLS.get(qualified_name)

@@ -10,6 +10,7 @@ import re
 from typing import Dict
 from typing import List
 
+from colcon_rsia import safe_files
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import LaunchResult
 from colcon_rsia.launch.safe_eval import Unresolved
@@ -87,8 +88,10 @@ class Loader:
                 raise LaunchError(
                     f'{path}: the file is too large to be a launch or '
                     f'parameter file ({size} bytes).')
-            with open(path, 'rb') as f:
-                data = f.read(MAX_FILE_SIZE + 1)
+            # checked: a FIFO or a link to /dev/zero must not hang us
+            data = safe_files.read_bytes(path, limit=MAX_FILE_SIZE)
+        except safe_files.UnsafeFileError as e:
+            raise LaunchError(f'{path}: {e}.')
         except OSError as e:
             raise LaunchError(f'{path}: cannot be read ({e.strerror}).')
         if str(path) not in self.result.files:

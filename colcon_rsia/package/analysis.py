@@ -9,10 +9,12 @@ The event handler and ``colcon rsia analyze`` both call
 from concurrent.futures import ThreadPoolExecutor
 import glob
 import os
+import threading
 import time
 
 from colcon_rsia import __version__
 from colcon_rsia import model
+from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import CXX_STD_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
@@ -50,6 +52,7 @@ HEADER_MODES = ('model', 'exact')
 DEFAULT_STD = 'c++17'
 
 CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
+CXX_HEADERS = ('.h', '.hh', '.hpp', '.hxx', '.h++', '.ipp')
 # directories whose sources are never a node's (tests, generated output)
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
@@ -138,7 +141,8 @@ def _coverage(path, units, nodes):
             for file, unit in sorted(units.items())],
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=False),
-            coverage.node_endpoint_lines(nodes), unit_lines))
+            coverage.node_endpoint_lines(nodes), unit_lines,
+            read={f for unit in units.values() for f in unit.files}))
 
 
 def synthesized_entries(path, *, workspace_package_dirs=(),
@@ -156,6 +160,8 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
     include_dirs = _own_include_dirs(path)
     include_dirs += [os.path.join(package, 'include')
                      for package in sorted(workspace_package_dirs)]
+    # "subdir/header.hpp" relative to the package (include_directories(.))
+    include_dirs.append(path)
     if with_system_ros:
         include_dirs += sorted(glob.glob('/opt/ros/*/include'))
     include_dirs = [d for d in dict.fromkeys(include_dirs) if os.path.isdir(d)]
@@ -208,15 +214,23 @@ def _model_entries(entries, path, workspace_package_dirs, stub_dir):
     return model_entries
 
 
+def _relative(path, directory):
+    return os.path.relpath(path, directory) if _inside(path, directory) \
+        else path
+
+
 def _inside(file, directory):
     return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
 
 
 def parse_units(entries, *, package_path, resource_dir, cache, jobs):
     """Parse the TUs in a thread pool; return (facts by file, messages)."""
+    hidden = _unsafe_includes(entries, package_path)
+
     def work(entry):
         try:
-            return _unit_facts(entry, package_path, resource_dir, cache)
+            return _unit_facts(
+                entry, package_path, resource_dir, cache, hidden)
         except Exception as e:  # noqa: B902
             # a bug of ours in one unit loses that unit, not the package
             relative = os.path.relpath(entry.file, package_path)
@@ -232,9 +246,34 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs):
     return units, diagnostics
 
 
-def _unit_facts(entry, package_path, resource_dir, cache):
-    """Facts of one TU, from the cache when nothing it reads changed."""
-    relative = os.path.relpath(entry.file, package_path)
+def _unsafe_includes(entries, package_path):
+    """Files an include could make libclang open that it must not."""
+    search_dirs = sorted({d for e in entries for d in safe_files.include_dirs(
+        e.arguments, e.directory)})
+    return safe_files.unsafe_inputs(
+        [e.file for e in entries], search_dirs=search_dirs,
+        roots=[package_path] + search_dirs,
+        # colcon_rsia itself (its model headers): this module is in
+        # colcon_rsia/package
+        skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
+
+
+def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
+    """Facts of one TU, from the cache when nothing it reads changed.
+
+    :param hidden: {file: why} of files libclang is given as empty
+    """
+    hidden = hidden or {}
+    relative = safe_files.display(os.path.relpath(entry.file, package_path))
+    try:
+        safe_files.check_file(entry.file, roots=[package_path])
+        safe_files.read_head(entry.file, 1)
+    except safe_files.UnsafeFileError as e:
+        return None, [f'{relative}: {e}']
+    except FileNotFoundError:
+        pass  # said below
+    except OSError as e:
+        return None, [f'{relative}: cannot be read ({e.strerror or e})']
     cache_file = None
     if cache is not None:
         cache_file = unit_cache_file(cache, entry)
@@ -244,13 +283,18 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     # imported here: libclang is needed only when something is parsed
     import clang.cindex as ci
     from colcon_rsia.frontend import cpp
+    from colcon_rsia.frontend.clang_names import allow_undecodable_names
+    allow_undecodable_names()
     if not os.path.isfile(entry.file):
         return None, [f'{relative}: source file missing (stale compile '
                       'database?); skipped']
     try:
         index = ci.Index.create()
+        # the files that failed the checks are seen by libclang as empty
         tu, rounds = _parse_repaired(
-            index, entry, resource_dir, package_path, relative)
+            index, entry, resource_dir, package_path, relative,
+            unsaved_files=[(file, '') for file in sorted(
+                set(hidden) | {os.path.realpath(h) for h in hidden})])
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
     facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
@@ -265,6 +309,10 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})
+    facts.diagnostics += [
+        f"{relative}: includes '{safe_files.display(_relative(h, package_path))}'"
+        f', which {reason}' for h, reason in sorted(hidden.items())
+        if h in includes or os.path.realpath(h) in includes]
     facts.files = [relative] + [
         os.path.relpath(i, package_path) for i in includes
         if _inside(i, package_path)]
@@ -275,11 +323,12 @@ def _unit_facts(entry, package_path, resource_dir, cache):
     return facts, list(facts.diagnostics)
 
 
-def _parse_repaired(index, entry, resource_dir, package_path, relative):
+def _parse_repaired(index, entry, resource_dir, package_path, relative,
+                    unsaved_files=()):
     """Parse a TU; in model mode, repair what its errors show missing.
 
-    Returns (the TU with the fewest errors, parses after the first). A
-    round that makes things worse is undone and ends the repair.
+    Returns (the TU with the fewest errors in package code, parses after
+    the first). The repair header is left as that best round had it.
     """
     from colcon_rsia.frontend import cpp
     from colcon_rsia.frontend import repair
@@ -287,9 +336,15 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
     def parse():
         return cpp.parse(
             index, file=entry.file, arguments=entry.arguments,
-            resource_dir=resource_dir, working_directory=entry.directory)
-    tu = parse()
+            resource_dir=resource_dir, working_directory=entry.directory,
+            unsaved_files=list(unsaved_files))
     header = _repair_header_of(entry.arguments)
+    if header is not None and not repair.read_repairs(header):
+        # a unit never repaired starts with what its package's other units
+        # needed (their names, unless this package declares them)
+        repair.seed_repairs(header, relative,
+                            _package_declarations(package_path))
+    tu = parse()
     if header is None:
         return tu, 0
     texts = {}
@@ -297,8 +352,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
     def text_of(file):
         if file not in texts:
             try:
-                with open(file, encoding='utf-8', errors='replace') as h:
-                    texts[file] = h.read()
+                texts[file] = safe_files.read_text(file, errors='replace')
             except OSError:
                 texts[file] = ''
         return texts[file]
@@ -307,18 +361,28 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
         lines = text_of(file).split('\n')
         return lines[line - 1] if 0 < line <= len(lines) else ''
 
+    from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
+    stub_dir = os.path.dirname(os.path.dirname(os.path.dirname(header)))
+
+    def _user_file(file):
+        # the workspace's code (the package's and the headers of other
+        # packages it includes): not stand-ins, model or system headers
+        return not _inside(file, stub_dir) and \
+            not _inside(file, MODEL_HEADERS_DIR) and \
+            not file.startswith(('/usr/', '/opt/'))
+
     def own_errors(tu):
-        # errors elsewhere (stand-ins, model headers) hide none of the
-        # package's calls, and declarations cannot fix them
+        # errors elsewhere hide none of the package's calls, and
+        # declarations cannot fix them
         return [e for e in cpp.error_diagnostics(tu)
-                if e[1] and _inside(e[1], package_path)]
+                if e[1] and _user_file(e[1])]
     errors = own_errors(tu)
     best = (len(errors), 0, tu, _read_text(header))
     rounds = 0
     while errors and rounds < repair.MAX_REPAIR_ROUNDS:
         own_files = {entry.file} | {
             i.include.name for i in tu.get_includes()
-            if i.include is not None and _inside(i.include.name, package_path)}
+            if i.include is not None and _user_file(i.include.name)}
         repairs = repair.repairs_from_diagnostics(
             errors, read_line,
             texts=[text_of(f) for f in sorted({e[1] for e in errors})],
@@ -336,7 +400,33 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative):
         # so that later parses of the unit do not pay for it
         from colcon_rsia.frontend.model_mode import write_atomically
         write_atomically(header, best[3])
+    if best[1]:
+        repair.share_repairs(header, repair.read_repairs(header))
     return best[2], rounds
+
+
+_declarations = {}
+_declarations_lock = threading.Lock()
+
+
+def _package_declarations(package_path):
+    """The names a package's own C++ files declare (read once)."""
+    with _declarations_lock:
+        if package_path not in _declarations:
+            texts = []
+            for root, dirs, files in os.walk(package_path):
+                dirs[:] = [d for d in dirs if d not in SKIPPED_DIRECTORIES
+                           and not d.startswith('.')]
+                for name in files:
+                    if name.endswith(CXX_EXTENSIONS + CXX_HEADERS):
+                        try:
+                            texts.append(safe_files.read_text(
+                                os.path.join(root, name), errors='replace'))
+                        except OSError:
+                            pass  # named by the checks before the parse
+            from colcon_rsia.frontend import repair
+            _declarations[package_path] = repair.declared_names(texts)
+        return _declarations[package_path]
 
 
 def _repair_header_of(arguments):
@@ -364,6 +454,10 @@ def build_summary(*, name, path, build_base, units):
     executables = find_executables(package_path=path, build_base=build_base)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
+    unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
+    summary.diagnostics += unreadable
+    unknown_executables = 'CMakeLists.txt cannot be read' if unreadable \
+        else 'no executable of CMakeLists.txt builds it'
     # a unit with its own main() is a program, never library code that
     # every executable would take in; one no executable builds (CMake we
     # could not read) is a node named after its file
@@ -374,14 +468,17 @@ def build_summary(*, name, path, build_base, units):
                 executables[stem] = [file]
                 executable_sources.add(file)
                 summary.diagnostics.append(
-                    f'{os.path.relpath(file, path)} defines main() but no '
-                    f"executable of CMakeLists.txt builds it: node '{stem}' "
-                    'named after the file')
+                    f'{os.path.relpath(file, path)} defines main() but '
+                    f"{unknown_executables}: node '{stem}' named after the "
+                    'file')
     library = [u for f, u in units.items() if f not in executable_sources]
     for executable, sources in sorted(executables.items()):
         own = [units[s] for s in sources if s in units]
         if not own:
             summary.diagnostics.append(
+                f"executable '{executable}': none of its sources could be "
+                'analysed (see above); skipped' if any(
+                    os.path.lexists(s) for s in sources) else
                 f"executable '{executable}': none of its sources is in the "
                 'compile database; skipped')
             continue

@@ -18,7 +18,7 @@ from colcon_rsia.package import store
 
 def unit_cache_file(cache_dir, entry):
     """The cache file of the unit of a compile-database entry."""
-    digest = hashlib.sha1(entry.file.encode()).hexdigest()[:16]
+    digest = hashlib.sha1(os.fsencode(entry.file)).hexdigest()[:16]
     return os.path.join(cache_dir, digest + '.json')
 
 

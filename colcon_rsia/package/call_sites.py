@@ -18,6 +18,8 @@ from dataclasses import dataclass
 import os
 import re
 
+from colcon_rsia import safe_files
+
 PUBLISHER = 'publisher'
 SUBSCRIBER = 'subscriber'
 
@@ -46,9 +48,12 @@ _CXX_CALLS = {
     'create_camera_subscription': SUBSCRIBER,
 }
 _CXX_CALL = re.compile(
-    r'(?P<before>[.:>=(,{;!&|?]|\breturn|\btemplate|^)\s*'
-    r'(?P<name>' + '|'.join(sorted(_CXX_CALLS, key=len, reverse=True)) +
-    r')\s*[<(]', re.MULTILINE)
+    r'\b(?P<name>' + '|'.join(sorted(_CXX_CALLS, key=len, reverse=True)) +
+    r')\s*[<(]')
+# what may come before a call's name: a member access, an operator or a
+# punctuator, `return`/`template`, or the start of a line
+_CALL_CONTEXT = re.compile(r'(?:[.:>=(,{;!&|?]|\breturn|\btemplate)$')
+_LOOK_BACK = 200
 _CXX_COMMENT_OR_LITERAL = re.compile(
     r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'',
     re.DOTALL)
@@ -75,9 +80,6 @@ _PYTHON_METHODS = {
     'create_subscription': SUBSCRIBER,
 }
 
-# files larger than this are generated, not written: not counted
-MAX_FILE_BYTES = 2 * 1024 * 1024
-
 
 @dataclass(frozen=True)
 class CallSite:
@@ -103,6 +105,13 @@ def cxx_call_sites(text):
     sites = []
     for match in _CXX_CALL.finditer(code):
         start = match.start('name')
+        before = code[max(0, start - _LOOK_BACK):start]
+        stripped = before.rstrip()
+        # (checked here, not in the pattern: a pattern that first skips
+        # whitespace is quadratic in the long blank runs left by comments)
+        if stripped and '\n' not in before[len(stripped):] and \
+                not _CALL_CONTEXT.search(stripped):
+            continue
         line = code.count('\n', 0, start) + 1
         name = match.group('name')
         sites.append((line, _CXX_CALLS[name], name))
@@ -186,8 +195,7 @@ def _is_python_file(path):
     if os.path.splitext(path)[1]:
         return False
     try:
-        with open(path, 'rb') as h:
-            first = h.readline(200)
+        first = safe_files.read_head(path, 200).split(b'\n', 1)[0]
     except OSError:
         return False
     return first.startswith(b'#!') and b'python' in first
@@ -216,11 +224,6 @@ def scan_package(package_path):
     for path in package_files(package_path):
         if not os.path.isfile(path) or os.path.islink(path):
             continue
-        try:
-            if os.path.getsize(path) > MAX_FILE_BYTES:
-                continue
-        except OSError:
-            continue
         if path.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS):
             scan = cxx_call_sites
         elif _is_python_file(path):
@@ -228,8 +231,10 @@ def scan_package(package_path):
         else:
             continue
         try:
-            with open(path, encoding='utf-8', errors='replace') as h:
-                text = h.read()
+            # the analysis's own checks and size limit: a file it did not
+            # read is not counted either (it names the file)
+            text = safe_files.read_text(
+                path, roots=[package_path], errors='replace')
         except OSError:
             continue
         relative = os.path.relpath(path, package_path)

@@ -26,6 +26,9 @@ LINE_SLACK = 2
 RECORDED_IN_NODE = 'node'
 RECORDED_IN_UNIT = 'unit'
 NOT_RECORDED = 'none'
+# in a header no translation unit includes: code the build never compiles
+# (not counted against the analysis)
+IN_UNREAD_FILE = 'unread'
 
 
 def endpoint_lines(fact_lists):
@@ -72,15 +75,21 @@ def match_sites(sites, lines):
     return matched
 
 
-def call_site_coverage(sites, node_lines, unit_lines=None):
-    """[model.CallSiteCoverage] of these sites against recorded facts."""
+def call_site_coverage(sites, node_lines, unit_lines=None, read=None):
+    """[model.CallSiteCoverage] of these sites against recorded facts.
+
+    :param read: the files some unit read, when known: a site elsewhere is
+      in code the build never compiles
+    """
     in_nodes = match_sites(sites, node_lines)
     rest = [s for s in sites if s not in in_nodes]
     in_units = match_sites(rest, unit_lines) if unit_lines else set()
     result = []
     for site in sites:
         recorded = RECORDED_IN_NODE if site in in_nodes else \
-            RECORDED_IN_UNIT if site in in_units else NOT_RECORDED
+            RECORDED_IN_UNIT if site in in_units else \
+            IN_UNREAD_FILE if read is not None and site.file not in read \
+            else NOT_RECORDED
         result.append(model.CallSiteCoverage(
             file=site.file, line=site.line, role=site.role, api=site.api,
             recorded=recorded))
@@ -116,7 +125,8 @@ def package_report(summary):
         1 for u in coverage.units if u.repair_rounds)
     report['call_sites'] = {}
     for role in (PUBLISHER, SUBSCRIBER):
-        sites = [c for c in coverage.call_sites if c.role == role]
+        sites = [c for c in coverage.call_sites
+                 if c.role == role and c.recorded != IN_UNREAD_FILE]
         report['call_sites'][role] = {
             'sites': len(sites),
             'in_nodes': sum(1 for c in sites
@@ -126,6 +136,9 @@ def package_report(summary):
     report['missed'] = [
         {'file': c.file, 'line': c.line, 'role': c.role, 'api': c.api}
         for c in coverage.call_sites if c.recorded == NOT_RECORDED]
+    report['in_unread_files'] = [
+        {'file': c.file, 'line': c.line, 'role': c.role, 'api': c.api}
+        for c in coverage.call_sites if c.recorded == IN_UNREAD_FILE]
     report['unresolved_topics'] = [
         {'node': node.id, 'role': role, 'topic': endpoint.topic,
          'location': endpoint.location}

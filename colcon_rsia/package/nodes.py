@@ -13,6 +13,7 @@ import json
 import os
 import re
 
+from colcon_rsia import safe_files
 import defusedxml.ElementTree as ElementTree
 
 NODELET_BASE_CLASS = 'nodelet::Nodelet'
@@ -77,9 +78,9 @@ _SET = re.compile(r'^[ \t]*set\s*\(\s*(\w+)\s+([^)\s]+)\s*\)',
 def cmakelists_text(package_path):
     """The package's CMakeLists.txt without its comments, or None."""
     try:
-        with open(os.path.join(package_path, 'CMakeLists.txt'),
-                  encoding='utf-8', errors='replace') as h:
-            return re.sub(r'#[^\n]*', '', h.read())
+        return re.sub(r'#[^\n]*', '', safe_files.read_text(
+            os.path.join(package_path, 'CMakeLists.txt'),
+            roots=[package_path]))
     except OSError:
         return None
 
@@ -170,7 +171,8 @@ def find_nodelets(*, package_path, exported_classes):
     declared = {}
     for xml_path in _plugin_xml_files(package_path):
         try:
-            root = ElementTree.parse(xml_path).getroot()
+            root = ElementTree.fromstring(safe_files.read_bytes(
+                xml_path, roots=[package_path]))
         except (OSError, ElementTree.ParseError, ValueError):
             continue
         for element in root.iter('class'):
@@ -190,7 +192,8 @@ def find_nodelets(*, package_path, exported_classes):
 def _plugin_xml_files(package_path):
     manifest = os.path.join(package_path, 'package.xml')
     try:
-        root = ElementTree.parse(manifest).getroot()
+        root = ElementTree.fromstring(safe_files.read_bytes(
+            manifest, roots=[package_path]))
     except (OSError, ElementTree.ParseError, ValueError):
         return []
     files = []

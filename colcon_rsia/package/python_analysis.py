@@ -96,7 +96,10 @@ def build_python_summary(*, name, path):
     summary.coverage = model.Coverage(
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=True),
-            coverage.node_endpoint_lines(summary.nodes), unit_lines))
+            coverage.node_endpoint_lines(summary.nodes), unit_lines,
+            # a module no node loads (a plugin of rqt, a library of
+            # another package's scripts) is not this package's nodes' code
+            read={f for unit in units.values() for f in unit.files}))
     return summary
 
 

@@ -28,6 +28,7 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
+from colcon_rsia import safe_files
 from colcon_rsia.package.nodes import cmakelists_text
 from colcon_rsia.package.nodes import project_name
 import defusedxml.ElementTree as ElementTree
@@ -67,8 +68,9 @@ class PythonLayout:
 def build_type(package_path):
     """The package's build type from package.xml (default ``catkin``)."""
     try:
-        root = ElementTree.parse(
-            os.path.join(package_path, 'package.xml')).getroot()
+        root = ElementTree.fromstring(safe_files.read_bytes(
+            os.path.join(package_path, 'package.xml'),
+            roots=[package_path]))
     except (OSError, ElementTree.ParseError, ValueError):
         return 'catkin'
     for export in root.iter('export'):
@@ -176,8 +178,7 @@ def _script_files(package_path):
 
 def _has_python_shebang(path):
     try:
-        with open(path, 'rb') as h:
-            first = h.readline(200)
+        first = safe_files.read_head(path, 200).split(b'\n')[0]
     except OSError:
         return False
     return first.startswith(b'#!') and b'python' in first
@@ -233,6 +234,8 @@ def _expand(word, variables):
 # --- setup.py / setup.cfg ---------------------------------------------------
 
 def _entry_points(package_path, layout):
+    layout.problems += safe_files.unreadable_files(
+        package_path, ['setup.py', 'setup.cfg'])
     specs = _setup_py_console_scripts(package_path)
     if specs is None:
         specs = _setup_cfg_console_scripts(package_path)
@@ -259,9 +262,9 @@ def _entry_points(package_path, layout):
 def _setup_py_console_scripts(package_path):
     """The console_scripts of setup.py, or None when it names none."""
     try:
-        with open(os.path.join(package_path, 'setup.py'), 'rb') as h:
-            tree = ast.parse(h.read())
-    except (OSError, SyntaxError, ValueError):
+        tree = ast.parse(safe_files.read_bytes(
+            os.path.join(package_path, 'setup.py'), roots=[package_path]))
+    except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
         return None
     constants = {}
     for node in tree.body:
@@ -331,8 +334,9 @@ def _static(node, constants):
 def _setup_cfg_console_scripts(package_path):
     parser = configparser.ConfigParser(interpolation=None)
     try:
-        parser.read(os.path.join(package_path, 'setup.cfg'),
-                    encoding='utf-8')
+        parser.read_string(safe_files.read_bytes(
+            os.path.join(package_path, 'setup.cfg'),
+            roots=[package_path]).decode('utf-8'))
         value = parser.get('options.entry_points', 'console_scripts',
                            fallback='')
     except (configparser.Error, OSError, UnicodeDecodeError):

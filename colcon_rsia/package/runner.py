@@ -22,6 +22,7 @@ from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
 from colcon_rsia.package.nodes import find_executables
+from colcon_rsia.safe_files import display
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
@@ -53,12 +54,12 @@ class Outcome:
     skipped: bool = False
 
     def line(self):
-        """One line for the console."""
+        """One line for the console (undecodable names escaped)."""
         if self.summary is not None:
-            return summary_line(self.summary)
+            return display(summary_line(self.summary))
         if self.warning is not None:
-            return f'rsia: {self.package}: {self.warning}'
-        return f'rsia: {self.package}: analysis failed: {self.error}'
+            return display(f'rsia: {self.package}: {self.warning}')
+        return display(f'rsia: {self.package}: analysis failed: {self.error}')
 
 
 def summary_line(summary):
@@ -147,6 +148,9 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
     :param bool without_build: analyse a package that has no compile
       database from its sources (else: warn how to get the database)
     """
+    problem = store.name_problem(name)
+    if problem:
+        return Outcome(display(name), warning=problem)
     try:
         return _analyze(
             name=name, package_type=package_type, path=path,

@@ -7,12 +7,32 @@ import os
 import tempfile
 
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.safe_files import display
+from colcon_rsia.safe_files import file_mode
+from colcon_rsia.safe_files import max_file_bytes
+from colcon_rsia.safe_files import read_bytes
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
 # why the last analysis of a package failed (removed by the next success)
 FAILURE_FILENAME = 'failure.json'
 CACHE_DIRNAME = 'cache'
+SUMMARY_SIZE_FACTOR = 8
+
+
+def name_problem(name):
+    """Why a package name cannot name a directory under the build base.
+
+    Every path of a package's output is ``<build base>/<name>/…``: a name
+    that is not one plain path component (``../../x``, ``a/b``, ``..``)
+    would put it elsewhere. None when the name is fine.
+    """
+    if not name or name in ('.', '..') or '\0' in name or \
+            any(s and s in name for s in (os.sep, os.altsep)):
+        return (f"the package name '{display(name)}' is not a plain "
+                'directory name: its results would be written outside the '
+                'build base; skipped')
+    return None
 
 
 def summary_path(package_build_base):
@@ -31,14 +51,26 @@ def write_json_atomically(path, data):
     A temp file in the same directory is renamed over the target; a build
     killed mid-write leaves at most a stray temp file.
     """
+    write_text_atomically(
+        path, json.dumps(data, indent=1, sort_keys=True) + '\n')
+
+
+def write_text_atomically(path, text):
+    r"""Write a text file whole or not at all (see write_json_atomically).
+
+    Undecodable names (surrogate escapes) are written as ``\\udce9``
+    rather than failing the write.
+    """
     directory = os.path.dirname(path)
     os.makedirs(directory, exist_ok=True)
     fd, tmp = tempfile.mkstemp(
         dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
     try:
-        with os.fdopen(fd, 'w', encoding='utf-8') as h:
-            json.dump(data, h, indent=1, sort_keys=True)
-            h.write('\n')
+        # like every other build artifact, not mkstemp's 0600
+        os.fchmod(fd, file_mode())
+        with os.fdopen(fd, 'w', encoding='utf-8',
+                       errors='backslashreplace') as h:
+            h.write(text)
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -89,10 +121,15 @@ def read_summary(path):
     :raises SummaryError: with one sentence naming the file and the problem
     """
     try:
-        with open(path, encoding='utf-8') as h:
-            data = json.load(h)
+        # a summary lists every fact of a package: above a source's limit
+        data = json.loads(read_bytes(
+            path, limit=SUMMARY_SIZE_FACTOR * max_file_bytes()).decode('utf-8'))
     except FileNotFoundError:
         raise SummaryError(f"no summary at '{path}'")
+    except RecursionError:
+        raise SummaryError(
+            f"corrupted summary '{path}' (nested too deeply); re-run "
+            "'colcon rsia analyze' for its package")
     except (OSError, ValueError) as e:
         raise SummaryError(
             f"corrupted summary '{path}' ({e}); re-run "

@@ -3,11 +3,19 @@
 """``summary.md``: a short Markdown summary for a pull-request comment.
 
 No links (a comment has nowhere to link to), no HTML; long lists are cut.
+Every value taken from the analysed code (names, ids, file names, a
+revision) is data, never Markdown: it goes out as inline code
+(:func:`code`) or with every punctuation character escaped (:func:`text`),
+on one line, so that a crafted topic or file name cannot add a link, an
+image, HTML, emphasis or a heading to the comment.
 """
+
+import re
 
 from colcon_rsia.report import CHANGED
 from colcon_rsia.report import RATE
 from colcon_rsia.report import TRADITIONAL
+from colcon_rsia.safe_files import display
 
 # at most this many rows in a table or items in a list
 MAX_ITEMS = 40
@@ -19,17 +27,47 @@ STATUS_TEXT = {
 }
 
 
-def code(text):
-    """Inline code that survives backticks in the text."""
-    text = str(text).replace('\n', ' ')
-    fence = '``' if '`' in text else '`'
-    pad = ' ' if fence == '``' else ''
-    return f'{fence}{pad}{text}{pad}{fence}'
+# a word that no Markdown renderer (GFM, and GitHub's mentions, issue and
+# commit references, emoji, math) takes for markup: letters, digits and
+# hyphens, maybe in parentheses or before a comma, colon or semicolon
+_PLAIN_WORD = re.compile(r'\(?-*[^\W_]+(-+[^\W_]+)*\)?[,;:]?\Z')
+# GitHub links a word of 7 or more hex digits to a commit
+_COMMIT_LIKE = re.compile(r'\(?[0-9a-fA-F]{7,}')
 
 
-def cell(text):
-    """Text safe inside a table cell."""
-    return str(text).replace('\n', ' ').replace('|', '\\|')
+def _one_line(value):
+    """The value as printable text on one line (whitespace runs collapsed)."""
+    value = display(str(value))
+    value = ''.join(c if c.isprintable() else ' ' for c in value)
+    return ' '.join(value.split())
+
+
+def code(value):
+    """Inline code holding any value, backticks included."""
+    value = _one_line(value)
+    if not value:
+        return ''
+    fence = '`' * (max(map(len, re.findall('`+', value)), default=0) + 1)
+    # a space on each side keeps a backtick at either end off the fence
+    # (CommonMark strips one such space on each side)
+    pad = ' ' if value[0] == '`' or value[-1] == '`' else ''
+    return f'{fence}{pad}{value}{pad}{fence}'
+
+
+def text(value):
+    """Text that Markdown shows as written, and never as markup.
+
+    Plain words stay plain; every other word (a topic, an id, a file name,
+    anything with punctuation) goes out as inline code.
+    """
+    return ' '.join(
+        word if _PLAIN_WORD.match(word) and not _COMMIT_LIKE.match(word)
+        else code(word) for word in _one_line(value).split(' '))
+
+
+def cell(value):
+    """Markdown (of :func:`code` or :func:`text`) safe in a table cell."""
+    return str(value).replace('|', '\\|')
 
 
 def _cut(items, what):
@@ -90,7 +128,8 @@ def _with_changes(data):
     shown, more = _cut(data.changed, 'nodes')
     for node_id in shown:
         lines.append(
-            f"- {code(node_id)}: {'; '.join(data.reasons.get(node_id, []))}")
+            f'- {code(node_id)}: '
+            f"{text('; '.join(data.reasons.get(node_id, [])))}")
     lines += more
     rate = impact['rate_impact']
     traditional = impact['traditional_impact']
@@ -111,8 +150,8 @@ def _with_changes(data):
             status_text = STATUS_TEXT.get(status, '')
         why = data.via.get(node_id) if node_id not in data.changed else \
             '; '.join(data.reasons.get(node_id, []))
-        lines.append(f'| {cell(code(node_id))} | {cell(status_text)} | '
-                     f'{cell(why or "")} |')
+        lines.append(f'| {cell(code(node_id))} | {cell(text(status_text))} | '
+                     f'{cell(text(why or ""))} |')
     lines += more
     if data.stopped:
         lines += ['', '**Stopped at independent edges** (the publisher keeps '
@@ -122,7 +161,7 @@ def _with_changes(data):
             held = ', '.join(code(h) for h in edge.held)
             lines.append(
                 f'- {code(edge.topic)} of {code(edge.node)} '
-                f"({', '.join(edge.patterns)})"
+                f"({text(', '.join(edge.patterns))})"
                 + (f': holds {held}' if held else ''))
         lines += more
     return lines

@@ -5,6 +5,7 @@
 import json
 import os
 
+from colcon_rsia.package.store import write_text_atomically
 from colcon_rsia.report import build_report
 from colcon_rsia.report.drawing import draw_system
 from colcon_rsia.report.html import graph_svg
@@ -30,13 +31,14 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     data = build_report(system, changed=changed, reasons=reasons, since=since,
                         model_name=model_name)
     drawing, layout_note = draw_system(system, dot_executable=dot_executable)
-    os.makedirs(output, exist_ok=True)
     written = []
     notes = []
+    # every file is rendered before any is written: a failure leaves the
+    # directory as it was, never a half-written or empty index.html
+    rendered = {}
 
     def write(name, text):
-        with open(os.path.join(output, name), 'w', encoding='utf-8') as h:
-            h.write(text)
+        rendered[name] = text
         written.append(name)
 
     write('index.html', render_html(data, drawing))
@@ -57,6 +59,9 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
     write('graph.svg', graph_svg(data, drawing, standalone=True) + '\n')
     if layout_note:
         notes.append(layout_note)
+    os.makedirs(output, exist_ok=True)
+    for name, text in rendered.items():
+        write_text_atomically(os.path.join(output, name), text)
     # files of an earlier report that this one does not have
     for name in stale:
         try:

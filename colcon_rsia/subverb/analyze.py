@@ -1,6 +1,7 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
+import argparse
 import os
 import time
 
@@ -13,6 +14,18 @@ from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 logger = colcon_logger.getChild(__name__)
+
+
+def positive_int(text):
+    """An argparse type: a whole number of at least 1."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(
+            f"'{text}' is not a whole number of 1 or more")
+    return value
 
 
 class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
@@ -33,7 +46,7 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                  f'{HEADER_MODE_ENVIRONMENT_VARIABLE.name} environment '
                  'variable, else model')
         parser.add_argument(
-            '--jobs', type=int, default=None,
+            '--jobs', type=positive_int, default=None, metavar='N',
             help='Translation units parsed in parallel (default: the number '
                  'of CPUs)')
 

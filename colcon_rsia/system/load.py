@@ -23,8 +23,14 @@ def split_launch_arguments(words, package_paths):
     arguments = dict(w.split(':=', 1) for w in words if ':=' in w)
     if len(positional) == 1 and os.path.isfile(positional[0]):
         return os.path.abspath(positional[0]), arguments
+    if len(positional) == 1:
+        raise _missing_launch_file(positional[0])
     if len(positional) == 2:
         package, name = positional
+        if package not in package_paths and os.path.isfile(package):
+            raise LaunchArgumentError(
+                f'--launch {package}: a launch file takes only name:=value '
+                f"arguments, got '{name}'")
         if package not in package_paths:
             raise LaunchArgumentError(
                 f"unknown package '{package}' for --launch (the packages "
@@ -37,6 +43,15 @@ def split_launch_arguments(words, package_paths):
     raise LaunchArgumentError(
         '--launch takes FILE or PKG FILE, then any name:=value arguments; '
         f'got {" ".join(words)!r}')
+
+
+def _missing_launch_file(path):
+    if os.path.exists(path):
+        return LaunchArgumentError(
+            f'--launch {path}: not a regular file; give a launch file')
+    return LaunchArgumentError(
+        f'--launch {path}: file not found (or give PKG FILE to find a '
+        'launch file in a package)')
 
 
 def find_launch_file(package_path, name):

@@ -81,7 +81,12 @@ def select_changed(system, args):
     from colcon_rsia.system.since import changed_since
     from colcon_rsia.system.since import ChangeError
     from colcon_rsia.system.since import describe_reasons
-    if getattr(args, 'since', None):
+    since = getattr(args, 'since', None)
+    if since is not None and not since.strip():
+        # an unset CI variable: `--since "$BASE"`
+        return None, {}, ('--since needs a git revision, got an empty '
+                          'string (is the variable that should hold it set?)')
+    if since:
         try:
             reasons = changed_since(system, args.since)
         except ChangeError as e:

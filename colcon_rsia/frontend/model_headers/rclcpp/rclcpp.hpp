@@ -20,6 +20,7 @@
 #define RSIA_MODEL_RCLCPP 1
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -312,6 +313,11 @@ public:
   bool sleep_for(Duration rel_time, Context::SharedPtr context = nullptr);
   bool ros_time_is_active();
   rcl_clock_type_t get_clock_type() const;
+  // Iron+
+  bool started();
+  bool wait_until_started(
+    const Duration & timeout, Context::SharedPtr context = nullptr,
+    const Duration & wait_tick_ns = Duration(0, 10000000));
 };
 
 // rclcpp/qos.hpp
@@ -524,6 +530,51 @@ public:
   bool automatically_declare_parameters_from_overrides() const;
   NodeOptions & automatically_declare_parameters_from_overrides(
     bool automatically_declare_parameters_from_overrides);
+  // Jazzy+
+  bool enable_logger_service() const;
+  NodeOptions & enable_logger_service(bool enable_log_service);
+};
+
+// event_handler.hpp (qos_event.hpp before Iron): the status of QoS events
+struct QOSEventInfo
+{
+  int32_t total_count;
+  int32_t total_count_change;
+  int32_t current_count;
+  int32_t current_count_change;
+  int32_t alive_count;
+  int32_t alive_count_change;
+  int32_t not_alive_count;
+  int32_t not_alive_count_change;
+  int32_t last_policy_kind;
+};
+using QOSDeadlineOfferedInfo = QOSEventInfo;
+using QOSDeadlineRequestedInfo = QOSEventInfo;
+using QOSLivelinessLostInfo = QOSEventInfo;
+using QOSLivelinessChangedInfo = QOSEventInfo;
+using QOSOfferedIncompatibleQoSInfo = QOSEventInfo;
+using QOSRequestedIncompatibleQoSInfo = QOSEventInfo;
+using QOSMessageLostInfo = QOSEventInfo;
+using IncompatibleTypeInfo = QOSEventInfo;
+using MatchedInfo = QOSEventInfo;
+
+struct PublisherEventCallbacks
+{
+  std::function<void(QOSDeadlineOfferedInfo &)> deadline_callback;
+  std::function<void(QOSLivelinessLostInfo &)> liveliness_callback;
+  std::function<void(QOSOfferedIncompatibleQoSInfo &)> incompatible_qos_callback;
+  std::function<void(IncompatibleTypeInfo &)> incompatible_type_callback;
+  std::function<void(MatchedInfo &)> matched_callback;
+};
+
+struct SubscriptionEventCallbacks
+{
+  std::function<void(QOSDeadlineRequestedInfo &)> deadline_callback;
+  std::function<void(QOSLivelinessChangedInfo &)> liveliness_callback;
+  std::function<void(QOSRequestedIncompatibleQoSInfo &)> incompatible_qos_callback;
+  std::function<void(IncompatibleTypeInfo &)> incompatible_type_callback;
+  std::function<void(QOSMessageLostInfo &)> message_lost_callback;
+  std::function<void(MatchedInfo &)> matched_callback;
 };
 
 // publisher_options.hpp, subscription_options.hpp
@@ -532,6 +583,7 @@ class PublisherOptionsWithAllocator
 {
 public:
   PublisherOptionsWithAllocator();
+  PublisherEventCallbacks event_callbacks;
   CallbackGroup::SharedPtr callback_group;
   std::shared_ptr<AllocatorT> allocator;
 };
@@ -542,6 +594,7 @@ class SubscriptionOptionsWithAllocator
 {
 public:
   SubscriptionOptionsWithAllocator();
+  SubscriptionEventCallbacks event_callbacks;
   CallbackGroup::SharedPtr callback_group;
   bool ignore_local_publications = false;
   std::shared_ptr<AllocatorT> allocator;
@@ -798,6 +851,7 @@ public:
   RCLCPP_SMART_PTR_ALIASES_ONLY(NodeBaseInterface)
   virtual ~NodeBaseInterface();
   virtual const char * get_name() const = 0;
+  virtual std::atomic_bool & get_associated_with_executor_atomic() = 0;
   virtual const char * get_namespace() const = 0;
   virtual const char * get_fully_qualified_name() const = 0;
   virtual Context::SharedPtr get_context() = 0;
@@ -898,6 +952,8 @@ public:
   using PostSetParametersCallbackType =
     PostSetParametersCallbackHandle::PostSetParametersCallbackType;
   virtual ~NodeParametersInterface();
+  virtual const std::map<std::string, rclcpp::ParameterValue> &
+  get_parameter_overrides() const = 0;
   virtual const ParameterValue & declare_parameter(
     const std::string & name, const ParameterValue & default_value,
     const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
@@ -1452,6 +1508,62 @@ bool wait_for_message(
   std::chrono::duration<Rep, Period> time_to_wait =
   std::chrono::duration<Rep, Period>(-1),
   const QoS & qos = SystemDefaultsQoS());
+
+// parameter_client.hpp: clients of another node's parameter services
+class AsyncParametersClient
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(AsyncParametersClient)
+  template<class NodeT>
+  explicit AsyncParametersClient(
+    NodeT node, const std::string & remote_node_name = "",
+    const QoS & qos_profile = ParametersQoS(),
+    CallbackGroup::SharedPtr group = nullptr);
+  bool service_is_ready() const;
+  template<class RepT = int64_t, class RatioT = std::milli>
+  bool wait_for_service(
+    std::chrono::duration<RepT, RatioT> timeout =
+    std::chrono::duration<RepT, RatioT>(-1));
+  template<class... RsiaArgs>
+  std::shared_future<std::vector<rclcpp::Parameter>> get_parameters(
+    const std::vector<std::string> & names, RsiaArgs &&...);
+  template<class... RsiaArgs>
+  std::shared_future<std::vector<rcl_interfaces::msg::SetParametersResult>>
+  set_parameters(const std::vector<rclcpp::Parameter> & parameters,
+    RsiaArgs &&...);
+  template<class... RsiaArgs>
+  std::shared_future<rcl_interfaces::msg::SetParametersResult>
+  set_parameters_atomically(
+    const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
+};
+
+class SyncParametersClient
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(SyncParametersClient)
+  template<class NodeT>
+  explicit SyncParametersClient(
+    NodeT node, const std::string & remote_node_name = "",
+    const QoS & qos_profile = ParametersQoS());
+  template<class ExecutorT, class NodeT>
+  SyncParametersClient(
+    ExecutorT executor, NodeT node, const std::string & remote_node_name = "",
+    const QoS & qos_profile = ParametersQoS());
+  bool service_is_ready() const;
+  template<class RepT = int64_t, class RatioT = std::milli>
+  bool wait_for_service(
+    std::chrono::duration<RepT, RatioT> timeout =
+    std::chrono::duration<RepT, RatioT>(-1));
+  template<class... RsiaArgs>
+  std::vector<rclcpp::Parameter> get_parameters(
+    const std::vector<std::string> & parameter_names, RsiaArgs &&...);
+  template<class T>
+  T get_parameter(const std::string & parameter_name, const T & default_value);
+  bool has_parameter(const std::string & parameter_name);
+  template<class... RsiaArgs>
+  std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+    const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
+};
 
 }  // namespace rclcpp
 

@@ -22,6 +22,16 @@ struct field_target<V, typename V::rsia_model_message_tag> : std::true_type
 {
 };
 
+template <class... RsiaT>
+using void_t = void;
+
+// class-type iterators (std::vector<float>::const_reverse_iterator it =
+// msg.ranges.rbegin()): nothing else converts to them
+template <class V>
+struct field_target<V, void_t<typename V::iterator_category>> : std::true_type
+{
+};
+
 }  // namespace rsia_model
 
 #endif  // RSIA_MODEL_FIELD_TARGET_H

@@ -14,7 +14,11 @@
 #include <cstdint>
 #include <initializer_list>
 #include <iosfwd>
+#include <iterator>
 #include <string>
+#if __cplusplus >= 201703L
+#include <string_view>
+#endif
 #include <type_traits>
 #include <vector>
 
@@ -45,12 +49,60 @@ struct field_target<std::vector<RsiaElement, RsiaAlloc>> : std::true_type
 {
 };
 
+#if __cplusplus >= 201703L
+// `text = msg.name`: with this, std::string's assignment from anything
+// convertible to a string_view takes the field exactly, which settles the
+// tie between assigning a std::string and a char (from the double)
+template <class RsiaChar, class RsiaTraits>
+struct field_target<std::basic_string_view<RsiaChar, RsiaTraits>> : std::true_type
+{
+};
+#endif
+
 template <class RsiaElement, std::size_t RsiaSize>
 struct field_target<std::array<RsiaElement, RsiaSize>> : std::true_type
 {
 };
 
 struct AnyElement;
+
+// What begin() and end() of a field return: iterates over AnyElement (a
+// range-for binds its elements to any reference), and converts to any
+// iterator type (std::vector<float>::const_iterator it = msg.ranges.begin()).
+struct AnyIterator
+{
+  AnyElement& operator*() const;
+  AnyElement* operator->() const;
+  AnyElement& operator[](long) const;
+  AnyIterator& operator++();
+  AnyIterator operator++(int);
+  AnyIterator& operator--();
+  AnyIterator operator--(int);
+  AnyIterator& operator+=(long);
+  AnyIterator& operator-=(long);
+  template <class RsiaIt, class = typename std::iterator_traits<RsiaIt>::iterator_category>
+  operator RsiaIt() const;
+};
+AnyIterator operator+(const AnyIterator&, long);
+AnyIterator operator+(long, const AnyIterator&);
+AnyIterator operator-(const AnyIterator&, long);
+long operator-(const AnyIterator&, const AnyIterator&);
+bool operator==(const AnyIterator&, const AnyIterator&);
+bool operator!=(const AnyIterator&, const AnyIterator&);
+bool operator<(const AnyIterator&, const AnyIterator&);
+// against a real iterator: it != msg.ranges.end()
+#define RSIA_MODEL_ITERATOR_COMPARE_(op)                                  \
+  template <class RsiaIt, class = typename std::iterator_traits<RsiaIt>::iterator_category> \
+  bool operator op(const RsiaIt&, const AnyIterator&);                    \
+  template <class RsiaIt, class = typename std::iterator_traits<RsiaIt>::iterator_category> \
+  bool operator op(const AnyIterator&, const RsiaIt&);
+RSIA_MODEL_ITERATOR_COMPARE_(==)
+RSIA_MODEL_ITERATOR_COMPARE_(!=)
+RSIA_MODEL_ITERATOR_COMPARE_(<)
+RSIA_MODEL_ITERATOR_COMPARE_(>)
+RSIA_MODEL_ITERATOR_COMPARE_(<=)
+RSIA_MODEL_ITERATOR_COMPARE_(>=)
+#undef RSIA_MODEL_ITERATOR_COMPARE_
 
 struct Any
 {
@@ -74,8 +126,8 @@ struct Any
   Any& operator[](const RsiaIndex&) const;
   Any& operator*() const;
   Any* operator->() const;
-  AnyElement* begin() const;
-  AnyElement* end() const;
+  AnyIterator begin() const;
+  AnyIterator end() const;
 
   Any& operator++();
   Any& operator--();
