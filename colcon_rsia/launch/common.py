@@ -31,7 +31,9 @@ MAX_INCLUDES = 2000
 # parameters one YAML value may expand to (YAML aliases can nest a billion)
 MAX_PARAMETERS = 20000
 # nesting of YAML values and of launch elements handled recursively; the
-# Python stack stays well below its limit
+# Python stack stays well below its limit (the nesting of substitutions
+# and of Python launch code have limits of their own:
+# substitutions.MAX_SUBSTITUTION_NESTING, python_launch.MAX_CODE_NESTING)
 MAX_NESTING = 64
 # node name patterns of parameter files longer than this, or with more
 # wildcards, match nothing (their regular expression could backtrack for

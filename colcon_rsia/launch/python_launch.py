@@ -62,7 +62,8 @@ MAX_LOOP = 1000
 MAX_CALL_DEPTH = 16
 # nesting of interpreted statements, expressions and calls together; the
 # Python stack (a few frames per level) stays well below its limit
-MAX_NESTING = 100
+# (elements and YAML: common.MAX_NESTING)
+MAX_CODE_NESTING = 100
 # elements of a list or characters of a string the interpreter builds
 MAX_SIZE = 100000
 
@@ -371,7 +372,7 @@ class _Interpreter:
         if method is None:
             self.note(stmt, f'{kind} statement not interpreted')
             return
-        if self.nesting >= MAX_NESTING:
+        if self.nesting >= MAX_CODE_NESTING:
             self.note(stmt, 'code nested too deeply to interpret')
             return
         self.nesting += 1
@@ -588,7 +589,7 @@ class _Interpreter:
 
     def eval(self, node, env, closure=None, depth=0):
         self.step()
-        if self.nesting >= MAX_NESTING:
+        if self.nesting >= MAX_CODE_NESTING:
             return self.unknown(node, 'code nested too deeply to interpret')
         method = getattr(self, 'ex_' + type(node).__name__, None)
         if method is None:
@@ -1335,7 +1336,7 @@ def _entities(interp, value, node, active=None):
         return []
     if isinstance(value, (list, tuple)):
         active = active if active is not None else set()
-        if id(value) in active or len(active) > MAX_NESTING:
+        if id(value) in active or len(active) > MAX_CODE_NESTING:
             return [UnknownValue(f'{interp.loc(node)}: a list that contains '
                                  'itself')]
         active.add(id(value))

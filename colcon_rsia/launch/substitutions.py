@@ -21,8 +21,9 @@ __all__ = [
     'Call', 'Concat', 'Resolver', 'Text', 'Unresolved', 'parse',
     'MAX_VALUE_LENGTH']
 
-# substitutions nested deeper than this are not written by people
-MAX_NESTING = 16
+# substitutions nested deeper than this ($(a $(b $(c …)))) are not
+# written by people (elements and YAML: common.MAX_NESTING)
+MAX_SUBSTITUTION_NESTING = 16
 # the longest value a substitution may produce: arguments that double
 # themselves (a=$(arg b)$(arg b)…) must not exhaust memory
 MAX_VALUE_LENGTH = 100000
@@ -102,7 +103,7 @@ class _Parser:
         return parts
 
     def call(self, depth):
-        if depth > MAX_NESTING:
+        if depth > MAX_SUBSTITUTION_NESTING:
             raise Unresolved('substitutions are nested too deeply')
         text = self.text
         start = self.pos
