@@ -980,3 +980,37 @@ def test_parameter_file_patterns_cannot_backtrack(tmp_path):
     started = time.monotonic()
     assert load(path).instances[0].params == {'b': 2}
     assert time.monotonic() - started < 5
+
+
+# one arithmetic: $(eval) and Python launch files compute alike
+
+def test_eval_and_python_launch_arithmetic_agree(tmp_path):
+    expressions = {'big': '2 ** 100', 'ratio': '7 / 2', 'floor': '7 // 2',
+                   'huge': '10 ** 400', 'text': "'ab' * 3"}
+    write(tmp_path, 'a.launch.xml', '<launch>\n  <node pkg="p" exec="e" '
+          'name="n">\n' + ''.join(
+              f'    <param name="{name}" value="$(eval {value})"/>\n'
+              for name, value in expressions.items()) +
+          '  </node>\n</launch>\n')
+    write(tmp_path, 'a.launch.py', """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            return LaunchDescription([Node(
+                package='p', executable='e', name='n', parameters=[{
+    """ + ''.join(f"            '{name}': {value},\n"
+                  for name, value in expressions.items()) + """
+                }])])
+    """)
+    xml = load(tmp_path / 'a.launch.xml').instances[0]
+    python = load(tmp_path / 'a.launch.py').instances[0]
+    # written by hand: what Python computes, and no number beyond 1e308
+    expected = {'big': 2 ** 100, 'ratio': 3.5, 'floor': 3,
+                'text': 'ababab'}
+    assert {k: v for k, v in xml.params.items() if k != 'huge'} == expected
+    assert {k: v for k, v in python.params.items() if k != 'huge'} == \
+        expected
+    assert not isinstance(xml.params.get('huge'), int)
+    assert not isinstance(python.params.get('huge'), int)

@@ -20,6 +20,7 @@ import os
 import re
 import string
 
+from colcon_rsia.launch import safe_eval
 from colcon_rsia.launch.common import location
 from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.ir import Action
@@ -955,6 +956,13 @@ class _Interpreter:
                                 'combines values not known before launch')
         if isinstance(op, ast.Mod) and isinstance(left, str):
             return self.unknown(node, '%-formatting not interpreted')
+        scalars = (str, int, float, bool)
+        if isinstance(left, scalars) and isinstance(right, scalars):
+            # the arithmetic (and limits) of $(eval) and PythonExpression
+            try:
+                return self.limit(safe_eval.binary(op, left, right), node)
+            except Unresolved as e:
+                return self.unknown(node, str(e))
         if isinstance(op, ast.Mult):
             for seq, count in ((left, right), (right, left)):
                 if isinstance(seq, (str, list, tuple)) and isinstance(

@@ -131,22 +131,11 @@ class _Evaluator:
         return self.lookup(node.id)
 
     def _BinOp(self, node, depth):  # noqa: N802
-        op = _BINARY.get(type(node.op))
-        if op is None:
+        if type(node.op) not in _BINARY:
             raise Unresolved('operator not supported in expressions')
         left = self.eval(node.left, depth)
         right = self.eval(node.right, depth)
-        if isinstance(node.op, ast.Mod) and isinstance(left, str):
-            raise Unresolved('string formatting is not supported')
-        if isinstance(node.op, ast.Mult):
-            _check_repeat(left, right)
-            _check_repeat(right, left)
-        if isinstance(node.op, ast.Pow):
-            _check_power(left, right)
-        try:
-            return op(left, right)
-        except (TypeError, ValueError, ArithmeticError) as e:
-            raise Unresolved(f'the expression fails: {e}')
+        return binary(node.op, left, right)
 
     def _UnaryOp(self, node, depth):  # noqa: N802
         value = self.eval(node.operand, depth)
@@ -207,6 +196,32 @@ class _Evaluator:
             return function(*args)
         except (TypeError, ValueError, ArithmeticError) as e:
             raise Unresolved(f'{node.func.id}() fails: {e}')
+
+
+def binary(op, left, right):
+    """``left <op> right`` of two scalars, within the limits above.
+
+    The one arithmetic of launch files: ``$(eval …)``,
+    ``PythonExpression`` and the Python launch interpreter use it.
+
+    :param op: an :mod:`ast` operator (``ast.Add()``…)
+    :raises Unresolved: an operator not supported, a value too large, or
+      an operation that fails
+    """
+    function = _BINARY.get(type(op))
+    if function is None:
+        raise Unresolved('operator not supported in expressions')
+    if isinstance(op, ast.Mod) and isinstance(left, str):
+        raise Unresolved('string formatting is not supported')
+    if isinstance(op, ast.Mult):
+        _check_repeat(left, right)
+        _check_repeat(right, left)
+    if isinstance(op, ast.Pow):
+        _check_power(left, right)
+    try:
+        return _check(function(left, right))
+    except (TypeError, ValueError, ArithmeticError) as e:
+        raise Unresolved(f'the expression fails: {e}')
 
 
 def _check_repeat(text, count):
