@@ -415,10 +415,9 @@ def test_non_utf8_file_names_are_analysed_and_shown_escaped(tmp_path):
 
 
 def test_report_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
-    from colcon_rsia import report
-    from colcon_rsia.report import markdown
+    from colcon_rsia.report import writer
     system = _injected_system()
-    report.write_report(system, str(tmp_path), dot_executable='/nonexistent')
+    writer.write_report(system, str(tmp_path), dot_executable='/nonexistent')
     before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
     assert before['index.html']
     # a report of other changes: each of its files would differ
@@ -426,9 +425,9 @@ def test_report_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
 
     def broken(data):
         raise UnicodeEncodeError('utf-8', 'x', 0, 1, 'surrogates not allowed')
-    monkeypatch.setattr(markdown, 'render_summary', broken)
+    monkeypatch.setattr(writer, 'render_summary', broken)
     with pytest.raises(UnicodeEncodeError):
-        report.write_report(system, str(tmp_path), changed=changed,
+        writer.write_report(system, str(tmp_path), changed=changed,
                             dot_executable='/nonexistent')
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
 
