@@ -14,6 +14,7 @@ file swapped after the check is caught too.
 import os
 import re
 import stat
+import tempfile
 
 from colcon_rsia.environment_variables import \
     ALLOWED_ROOTS_ENVIRONMENT_VARIABLE
@@ -205,6 +206,33 @@ def file_mode():
             os.umask(umask)
         _UMASK.append(umask)
     return 0o666 & ~_UMASK[0]
+
+
+def write_text_atomically(path, text, *, errors='backslashreplace'):
+    """Write a text file whole or not at all: readers see the old or the new.
+
+    A temporary file in the same directory is renamed over the target (a
+    write killed half-way leaves at most a stray temporary file), with the
+    mode of every other build artifact, not mkstemp's 0600.
+
+    :param errors: how characters UTF-8 cannot encode (surrogate escapes
+      of undecodable names) are written
+    """
+    directory = os.path.dirname(path)
+    os.makedirs(directory, exist_ok=True)
+    fd, temporary = tempfile.mkstemp(
+        dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
+    try:
+        os.fchmod(fd, file_mode())
+        with os.fdopen(fd, 'w', encoding='utf-8', errors=errors) as h:
+            h.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        try:
+            os.unlink(temporary)
+        except OSError:
+            pass
+        raise
 
 
 def display(text):

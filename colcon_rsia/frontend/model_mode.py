@@ -31,7 +31,6 @@ serialised by a lock.
 import glob
 import os
 import re
-import tempfile
 import threading
 
 from colcon_rsia import safe_files
@@ -70,7 +69,7 @@ MAX_UP_LEVELS = 8
 _INCLUDE = re.compile(
     r'^[ \t]*#[ \t]*(?:include|include_next|import)[ \t]*([<"])([^>"\n]+)[>"]',
     re.MULTILINE)
-_COMMENT_OR_STRING = re.compile(
+COMMENT_OR_STRING = re.compile(
     r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'',
     re.DOTALL)
 _MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)')
@@ -439,7 +438,7 @@ def _export_macro_defines(codes):
 
 def _code_only(text):
     """The text without comments, literals and include lines."""
-    return _INCLUDE.sub(' ', _COMMENT_OR_STRING.sub(' ', text))
+    return _INCLUDE.sub(' ', COMMENT_OR_STRING.sub(' ', text))
 
 
 def _used_names(codes):
@@ -595,22 +594,11 @@ def _stub_kind(text):
 
 
 def write_atomically(path, content):
-    """Write a text file whole or not at all (readers never see half)."""
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    fd, temporary = tempfile.mkstemp(
-        dir=os.path.dirname(path), prefix='.rsia-', suffix='.tmp')
-    try:
-        os.fchmod(fd, safe_files.file_mode())
-        with os.fdopen(fd, 'w', encoding='utf-8',
-                       errors='surrogateescape') as h:
-            h.write(content)
-        os.replace(temporary, path)
-    except BaseException:
-        try:
-            os.unlink(temporary)
-        except OSError:
-            pass
-        raise
+    """Write a text file whole or not at all (readers never see half).
+
+    Stand-ins keep undecodable names as they were read.
+    """
+    safe_files.write_text_atomically(path, content, errors='surrogateescape')
 
 
 def _merge_fields(stub_dir, members, constants):

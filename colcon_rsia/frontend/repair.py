@@ -27,6 +27,7 @@ import os
 import re
 import threading
 
+from colcon_rsia.frontend.model_mode import COMMENT_OR_STRING
 from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.model_mode import write_atomically
 
@@ -306,16 +307,12 @@ _DECLARATION = re.compile(
     r'^\s*#\s*define\s+(\w+)', re.MULTILINE)
 
 
-_COMMENT_OR_STRING = re.compile(
-    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.DOTALL)
-
-
 def declared_names(texts):
     """Names that classes, namespaces, aliases and macros of texts declare."""
     names = set()
     for text in texts:
         # `class X  // : public Base` then `{` on the next line
-        code = _COMMENT_OR_STRING.sub(' ', text)
+        code = COMMENT_OR_STRING.sub(' ', text)
         for match in _DECLARATION.finditer(code):
             names.update(g for g in match.groups() if g)
     return names

@@ -30,8 +30,6 @@ from colcon_rsia.package.assembly import executable_nodes
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
-from colcon_rsia.package.call_sites import PUBLISHER
-from colcon_rsia.package.call_sites import SUBSCRIBER
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
@@ -130,9 +128,6 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
 
 def _coverage(path, units, nodes):
     """The C++ part of a package's coverage (see coverage.py)."""
-    unit_lines = coverage.endpoint_lines(
-        [(PUBLISHER, u.publishers) for u in units.values()] +
-        [(SUBSCRIBER, u.subscribers) for u in units.values()])
     return model.Coverage(
         units=[model.UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
@@ -141,8 +136,7 @@ def _coverage(path, units, nodes):
             for file, unit in sorted(units.items())],
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=False),
-            coverage.node_endpoint_lines(nodes), unit_lines,
-            read={f for unit in units.values() for f in unit.files}))
+            nodes=nodes, units=list(units.values())))
 
 
 def synthesized_entries(path, *, workspace_package_dirs=(),

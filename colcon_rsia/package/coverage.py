@@ -31,22 +31,21 @@ NOT_RECORDED = 'none'
 IN_UNREAD_FILE = 'unread'
 
 
-def endpoint_lines(fact_lists):
-    """{(file, role): [lines]} of (role, facts with a 'file:line' location)."""
+def _endpoint_lines(holders):
+    """{(file, role): [lines]} of the endpoints of nodes or of units.
+
+    Both hold ``publishers`` and ``subscribers`` facts located at
+    ``file:line``.
+    """
     lines = collections.defaultdict(list)
-    for role, facts in fact_lists:
-        for fact in facts:
-            file, _, line = fact.location.rpartition(':')
-            if line.isdigit():
-                lines[(file, role)].append(int(line))
+    for holder in holders:
+        for role, facts in ((PUBLISHER, holder.publishers),
+                            (SUBSCRIBER, holder.subscribers)):
+            for fact in facts:
+                file, _, line = fact.location.rpartition(':')
+                if line.isdigit():
+                    lines[(file, role)].append(int(line))
     return lines
-
-
-def node_endpoint_lines(nodes):
-    """:func:`endpoint_lines` of the publishers and subscribers of nodes."""
-    return endpoint_lines(
-        [(PUBLISHER, n.publishers) for n in nodes] +
-        [(SUBSCRIBER, n.subscribers) for n in nodes])
 
 
 def match_sites(sites, lines):
@@ -75,21 +74,22 @@ def match_sites(sites, lines):
     return matched
 
 
-def call_site_coverage(sites, node_lines, unit_lines=None, read=None):
+def call_site_coverage(sites, *, nodes, units):
     """[model.CallSiteCoverage] of these sites against recorded facts.
 
-    :param read: the files some unit read, when known: a site elsewhere is
-      in code the build never compiles
+    :param nodes: the package's nodes (model.Node)
+    :param units: the facts of the units parsed (model.TuFacts); a site in
+      a file none of them read is in code the build never compiles
     """
-    in_nodes = match_sites(sites, node_lines)
+    in_nodes = match_sites(sites, _endpoint_lines(nodes))
     rest = [s for s in sites if s not in in_nodes]
-    in_units = match_sites(rest, unit_lines) if unit_lines else set()
+    in_units = match_sites(rest, _endpoint_lines(units))
+    read = {file for unit in units for file in unit.files}
     result = []
     for site in sites:
         recorded = RECORDED_IN_NODE if site in in_nodes else \
             RECORDED_IN_UNIT if site in in_units else \
-            IN_UNREAD_FILE if read is not None and site.file not in read \
-            else NOT_RECORDED
+            IN_UNREAD_FILE if site.file not in read else NOT_RECORDED
         result.append(model.CallSiteCoverage(
             file=site.file, line=site.line, role=site.role, api=site.api,
             recorded=recorded))

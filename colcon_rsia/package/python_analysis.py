@@ -29,8 +29,6 @@ from colcon_rsia.frontend.python import MODULE_FUNCTION
 from colcon_rsia.package import coverage
 from colcon_rsia.package import store
 from colcon_rsia.package.assembly import build_node
-from colcon_rsia.package.call_sites import PUBLISHER
-from colcon_rsia.package.call_sites import SUBSCRIBER
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.python_nodes import find_python_nodes
 
@@ -90,16 +88,12 @@ def build_python_summary(*, name, path):
             line += '; not analysed: ' + ', '.join(
                 f"node '{e}'" for e in executables)
         summary.diagnostics.append(line)
-    unit_lines = coverage.endpoint_lines(
-        [(PUBLISHER, u.publishers) for u in units.values()] +
-        [(SUBSCRIBER, u.subscribers) for u in units.values()])
+    # a module no node loads (a plugin of rqt, a library of another
+    # package's scripts) is not this package's nodes' code
     summary.coverage = model.Coverage(
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=True),
-            coverage.node_endpoint_lines(summary.nodes), unit_lines,
-            # a module no node loads (a plugin of rqt, a library of
-            # another package's scripts) is not this package's nodes' code
-            read={f for unit in units.values() for f in unit.files}))
+            nodes=summary.nodes, units=list(units.values())))
     return summary
 
 

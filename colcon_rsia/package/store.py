@@ -4,11 +4,10 @@
 
 import json
 import os
-import tempfile
 
+from colcon_rsia import safe_files
 from colcon_rsia.model import PackageSummary
 from colcon_rsia.safe_files import display
-from colcon_rsia.safe_files import file_mode
 from colcon_rsia.safe_files import max_file_bytes
 from colcon_rsia.safe_files import read_bytes
 
@@ -61,23 +60,7 @@ def write_text_atomically(path, text):
     Undecodable names (surrogate escapes) are written as ``\\udce9``
     rather than failing the write.
     """
-    directory = os.path.dirname(path)
-    os.makedirs(directory, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(
-        dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
-    try:
-        # like every other build artifact, not mkstemp's 0600
-        os.fchmod(fd, file_mode())
-        with os.fdopen(fd, 'w', encoding='utf-8',
-                       errors='backslashreplace') as h:
-            h.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    safe_files.write_text_atomically(path, text, errors='backslashreplace')
 
 
 def write_summary(package_build_base, summary):
