@@ -374,3 +374,16 @@ def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
     assert report['in_unread_files'] == [{
         'file': 'include/acme_vision/unused.hpp', 'line': 4,
         'role': 'publisher', 'api': 'create_publisher'}]
+
+
+@pytest.mark.parametrize('line,expected', [
+    # a template argument is a type, a value in an expression an enumerator
+    ('std::unique_ptr<bond::Bond> bond_;', ('type', 'bond::Bond')),
+    ('label->setAlignment(Qt::AlignCenter);', ('constant', 'Qt::AlignCenter')),
+])
+def test_camel_case_names_in_a_namespace_by_their_use(line, expected):
+    namespace = expected[1].split('::')[0]
+    found = repair.repairs_from_diagnostics(
+        [(f"use of undeclared identifier '{namespace}'", 'a.cpp', 1,
+          line.index(namespace) + 1)], _lines(line), texts=[line])
+    assert found == {('namespace', namespace), expected}

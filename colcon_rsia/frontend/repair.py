@@ -482,14 +482,15 @@ def _by_use(name, after, *, unqualified):
         return TEMPLATE, name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
-    if re.match(r'(?:[&*]\s*)?[A-Za-z_]', after) or \
-            (_CAMEL.match(name) and (unqualified or not after or
-                                     after.startswith(('{', '*', '&')))):
-        # a name followed by a name (`ns::archive ar(...)`), or CamelCase
-        return TYPE, name
-    if _CAMEL.match(name):
-        # a CamelCase value: an enumerator (Qt::AlignCenter)
+    if _CAMEL.match(name) and not unqualified and \
+            re.match(r'(?:\)|;|\||\+|-|=|\?|\]|\}|!|:(?!:))', after):
+        # a CamelCase value, where a value ends or an operator follows: an
+        # enumerator (Qt::AlignCenter)
         return CONSTANT, name
+    if _CAMEL.match(name) or re.match(r'(?:[&*]\s*)?[A-Za-z_]', after):
+        # CamelCase elsewhere (`std::unique_ptr<bond::Bond>`), or a name
+        # followed by a name (`ns::archive ar(...)`)
+        return TYPE, name
     return OBJECT, name
 
 
