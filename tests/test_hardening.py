@@ -11,7 +11,9 @@ import json
 import os
 from pathlib import Path
 import resource
+import signal
 import subprocess
+import time
 
 from conftest import colcon_executable
 import pytest
@@ -582,3 +584,82 @@ def test_launch_argument_messages(system_workspace, tmp_path, words, message):
     _no_traceback(result)
     assert message in result.stderr
     assert 'unknown package' not in result.stderr
+
+
+# Ctrl-C during `colcon build --event-handlers rsia+`: one package whose
+# analysis takes many parses (units only the compile database names: the
+# build compiles none of them) and one whose build waits long
+MANY_UNITS = 60
+HEAVY_UNIT = """#include <iostream>
+#include <map>
+#include <regex>
+#include <string>
+int unit_{n}() {{ std::map<std::string, std::regex> m; return m.size(); }}
+"""
+
+
+def _interrupt_workspace(root, *, with_long_build):
+    parses = root / 'src' / 'many_parses'
+    (parses / 'src').mkdir(parents=True)
+    (parses / 'src' / 'main.cpp').write_text('int main() { return 0; }\n')
+    for n in range(MANY_UNITS):
+        (parses / 'src' / f'unit_{n}.cpp').write_text(HEAVY_UNIT.format(n=n))
+    (parses / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.10)\nproject(many_parses CXX)\n'
+        'add_executable(many_parses_node src/main.cpp)\n'
+        'file(GLOB units src/unit_*.cpp)\n'
+        'add_library(units EXCLUDE_FROM_ALL ${units})\n')
+    if not with_long_build:
+        return
+    waiting = root / 'src' / 'long_build'
+    waiting.mkdir(parents=True)
+    (waiting / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.10)\nproject(long_build NONE)\n'
+        'add_custom_target(wait ALL COMMAND sleep 120)\n')
+
+
+# while another package builds (colcon's executor stops its jobs), and
+# after the last build job, while colcon waits for the analysis to end
+@pytest.mark.parametrize('with_long_build', [True, False])
+def test_ctrl_c_stops_the_build_and_the_analysis_promptly(
+        tmp_path, with_long_build):
+    _interrupt_workspace(tmp_path, with_long_build=with_long_build)
+    environment = dict(os.environ)
+    environment['COLCON_HOME'] = str(tmp_path / '.colcon_home')
+    build = subprocess.Popen(
+        [colcon_executable(), 'build', '--event-handlers', 'rsia+',
+         'console_cohesion-', '--cmake-args',
+         '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'],
+        cwd=str(tmp_path), env=environment, stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    lines = []
+    try:
+        for line in build.stdout:
+            lines.append(line)
+            if line.startswith('Finished <<< many_parses'):
+                break
+        # the analysis of many_parses has begun (60 parses, many seconds);
+        # long_build, if there, is still building: Ctrl-C reaches the whole
+        # process group, as from a terminal
+        time.sleep(1.0)
+        os.killpg(build.pid, signal.SIGINT)
+        interrupted = time.monotonic()
+        lines += build.stdout.readlines()
+        build.wait(timeout=HANG_TIMEOUT_S)
+        stopped_after = time.monotonic() - interrupted
+    finally:
+        if build.poll() is None:
+            os.killpg(build.pid, signal.SIGKILL)
+            build.wait()
+    output = ''.join(lines)
+    assert 'Finished <<< many_parses' in output, output
+    assert 'rsia: interrupted' in output, output
+    assert 'Traceback' not in output, output
+    # colcon's own jobs stop within a second or two; the analysis adds at
+    # most the parse under way (before: it went on through all 60 units)
+    assert stopped_after < 8.0, (stopped_after, output)
+    # nothing half written: the interrupted analysis wrote no summary, the
+    # package whose build was interrupted was not analysed
+    rsia = tmp_path / 'build' / 'many_parses' / 'rsia'
+    assert not (rsia / 'summary.json').exists(), output
+    assert not (tmp_path / 'build' / 'long_build' / 'rsia').exists()

@@ -387,3 +387,78 @@ def test_camel_case_names_in_a_namespace_by_their_use(line, expected):
         [(f"use of undeclared identifier '{namespace}'", 'a.cpp', 1,
           line.index(namespace) + 1)], _lines(line), texts=[line])
     assert found == {('namespace', namespace), expected}
+
+
+# A controller-style ROS 1 node that compiles against the real headers: a
+# handle from an unknown library assigned from a call on another unknown
+# object, a command handed over through realtime_tools::RealtimeBuffer, a
+# vector built from a message field's iterators.
+HANDLES_AND_BUFFERS = r"""
+#include <ros/ros.h>
+#include <sensor_msgs/Imu.h>
+#include <hardware_interface/joint_command_interface.h>
+#include <realtime_tools/realtime_buffer.h>
+#include <string>
+#include <vector>
+
+struct Command { double position; };
+
+class ArmController
+{
+public:
+  bool init(hardware_interface::EffortJointInterface* hw, ros::NodeHandle& nh)
+  {
+    joint_ = hw->getHandle(std::string("elbow"));
+    state_pub_ = nh.advertise<sensor_msgs::Imu>("state", 1);
+    command_sub_ = nh.subscribe("command", 1, &ArmController::onCommand, this);
+    return true;
+  }
+
+  void update()
+  {
+    Command command = *(buffer_.readFromRT());
+    joint_.setCommand(command.position);
+  }
+
+private:
+  void onCommand(const sensor_msgs::Imu::ConstPtr& msg)
+  {
+    std::vector<double> covariance(msg->orientation_covariance.begin(),
+                                   msg->orientation_covariance.end());
+    Command command;
+    command.position = covariance.empty() ? 0.0 : covariance[0];
+    buffer_.writeFromNonRT(command);
+    state_pub_.publish(*msg);
+  }
+
+  hardware_interface::JointHandle joint_;
+  realtime_tools::RealtimeBuffer<Command> buffer_;
+  ros::Publisher state_pub_;
+  ros::Subscriber command_sub_;
+};
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "arm_controller");
+  ros::NodeHandle nh;
+  ArmController controller;
+  ros::spin();
+}
+"""
+
+
+def test_no_model_error_on_handles_buffers_and_field_iterators(tmp_path):
+    package = tmp_path / 'arm'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'arm.cpp').write_text(HANDLES_AND_BUFFERS)
+    summary = analysis.analyze_package(
+        name='arm', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    # before: `joint_ = hw->getHandle(...)` was an ambiguous operator=
+    # between the stand-in's implicit copy and move assignments, and
+    # RealtimeBuffer and the iterator pair were errors of the model
+    assert unit.errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['state']
+    assert [s.topic for s in node.subscribers] == ['command']

@@ -11,6 +11,7 @@ from colcon_core.event.timer import TimerEvent
 from colcon_core.event_handler import EventHandlerExtensionPoint
 from colcon_core.event_reactor import EventReactorShutdown
 from colcon_core.plugin_system import satisfies_version
+from colcon_core.subprocess import SIGINT_RESULT
 
 
 class RsiaEventHandler(EventHandlerExtensionPoint):
@@ -47,6 +48,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._outcomes = []
         self._started = None
         self._package_dirs = None
+        self._interrupted = False
 
     def __call__(self, event):  # noqa: D102
         data = event[0]
@@ -55,7 +57,10 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             return
         if isinstance(data, JobEnded):
             job = event[1]
-            if str(data.rc) == '0' and job is not None:
+            if _is_interrupt(data.rc):
+                self._interrupt()
+            elif str(data.rc) == '0' and job is not None and \
+                    not self._interrupted:
                 self._submit(job)
         elif isinstance(data, TimerEvent):
             self._report_finished()
@@ -68,6 +73,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         pkg = job.task_context.pkg
         args = job.task_context.args
         if self._pool is None:
+            _stop_before_exit()
             self._pool = ThreadPoolExecutor(
                 max_workers=self.PACKAGE_WORKERS,
                 thread_name_prefix='rsia', initializer=self._lower_priority)
@@ -77,6 +83,16 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             path=str(pkg.path), build_base=args.build_base,
             cmake_args=getattr(args, 'cmake_args', None),
             workspace_package_dirs=self._workspace_package_dirs(pkg)))
+
+    def _interrupt(self):
+        # Ctrl-C: colcon stops its jobs; analyse nothing more, and let the
+        # analysis under way end at its next parse without writing, so that
+        # colcon exits as soon as its own jobs have stopped
+        from colcon_rsia.package.analysis import request_stop
+        self._interrupted = True
+        request_stop()
+        for future in self._pending:
+            future.cancel()  # those not started yet
 
     def _workspace_package_dirs(self, pkg):
         # discovered once, on the first package analysed, with the build's
@@ -115,6 +131,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
 
     def _report(self, future):
         from colcon_rsia.package.runner import Outcome
+        if future.cancelled():
+            return
         try:
             outcome = future.result()
         except Exception as e:  # noqa: B902
@@ -124,6 +142,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             print(outcome.line(), flush=True)
 
     def _shutdown(self):
+        from colcon_rsia.package.analysis import stop_requested
         if self._pool is None:
             return
         for future in self._pending:
@@ -134,6 +153,12 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         analysed = [o for o in self._outcomes if o.summary is not None]
         considered = [o for o in self._outcomes if not o.skipped]
         nodes = sum(len(o.summary.nodes) for o in analysed)
+        if self._interrupted or stop_requested():
+            print(
+                f'rsia: interrupted; analysed {len(analysed)} packages '
+                f'({nodes} nodes) before that, the others not: build again '
+                "or run 'colcon rsia analyze'", flush=True)
+            return
         print(
             f'rsia: analysed {len(analysed)} of {len(considered)} '
             f'packages ({nodes} nodes) in '
@@ -147,3 +172,24 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             [o.summary for o in analysed],
             {o.package: o.error for o in self._outcomes
              if o.error is not None})), flush=True)
+
+
+def _is_interrupt(rc):
+    # what colcon's executors give the jobs they stop on Ctrl-C (not the
+    # number 2: make returns 2 for a failed build)
+    return rc == SIGINT_RESULT
+
+
+def _stop_before_exit():
+    # Ctrl-C while colcon waits for the analysis at the end of the build:
+    # colcon returns, and the interpreter joins our threads before it exits.
+    # The functions threading runs just before that join end the analysis
+    # at its next parse. (A private hook, the one concurrent.futures uses;
+    # where it is missing, the analysis under way runs to its end.)
+    from colcon_rsia.package.analysis import request_stop
+    register = getattr(threading, '_register_atexit', None)
+    if register is not None:
+        try:
+            register(request_stop)
+        except RuntimeError:
+            pass  # the interpreter is already exiting

@@ -766,7 +766,8 @@ def _merge_unknown(stub_dir, namespace, names):
                   f'#if !defined({name}) && '
                   f'!defined(RSIA_REPAIRED__{namespace}__{name})',
                   f'struct {name} : ::rsia_model::Unknown', '{',
-                  '  using ::rsia_model::Unknown::Unknown;']
+                  '  using ::rsia_model::Unknown::Unknown;',
+                  '  using ::rsia_model::Unknown::operator=;']
         for member in members:
             lines += [f'#ifndef {member}',
                       f'  static ::rsia_model::Any {member};', '#endif']

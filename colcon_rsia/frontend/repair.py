@@ -532,7 +532,8 @@ def _render(repairs, source):
                 f' static ::rsia_model::Any {m};'
                 for m in sorted(members.get(name, ())))
             body = (f'{head}struct {short} : ::rsia_model::Unknown '
-                    f'{{ using ::rsia_model::Unknown::Unknown;{body} }};')
+                    f'{{ using ::rsia_model::Unknown::Unknown; '
+                    f'using ::rsia_model::Unknown::operator=;{body} }};')
         elif kind == FUNCTION:
             body = (f'template <class... RsiaArgs> ::rsia_model::Any& '
                     f'{short}(RsiaArgs&&...);')

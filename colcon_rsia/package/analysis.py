@@ -40,6 +40,35 @@ class AnalysisError(RuntimeError):
     """An expected failure of one package's analysis (one clear sentence)."""
 
 
+class Interrupted(Exception):
+    """The build was interrupted: the analysis ends and writes nothing."""
+
+
+# set by request_stop() when the build is interrupted (Ctrl-C)
+_stop_requested = threading.Event()
+
+
+def request_stop():
+    """Make every running analysis end before its next parse.
+
+    A parse under way cannot be cut short (libclang has no way to), so an
+    analysis ends within one translation unit's parse, and writes no
+    summary: the summaries already written stay whole.
+    """
+    _stop_requested.set()
+
+
+def stop_requested():
+    """Whether :func:`request_stop` was called."""
+    return _stop_requested.is_set()
+
+
+def check_stop():
+    """Raise :class:`Interrupted` if the analysis should end now."""
+    if _stop_requested.is_set():
+        raise Interrupted()
+
+
 def default_jobs():
     """Threads for parsing: libclang releases the GIL while it parses."""
     return max(1, os.cpu_count() or 1)
@@ -122,6 +151,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     summary.header_mode = header_mode
     summary.diagnostics = diagnostics + summary.diagnostics
     summary.seconds = round(time.monotonic() - started, 3)
+    check_stop()
     store.write_summary(build_base, summary)
     return summary
 
@@ -223,8 +253,11 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs):
 
     def work(entry):
         try:
+            check_stop()
             return _unit_facts(
                 entry, package_path, resource_dir, cache, hidden)
+        except Interrupted:
+            raise
         except Exception as e:  # noqa: B902
             # a bug of ours in one unit loses that unit, not the package
             relative = os.path.relpath(entry.file, package_path)
@@ -374,6 +407,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     best = (len(errors), 0, tu, _read_text(header))
     rounds = 0
     while errors and rounds < repair.MAX_REPAIR_ROUNDS:
+        check_stop()  # each round is one more parse
         own_files = {entry.file} | {
             i.include.name for i in tu.get_includes()
             if i.include is not None and _user_file(i.include.name)}

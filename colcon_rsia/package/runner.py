@@ -21,6 +21,8 @@ from colcon_rsia.model import PackageSummary
 from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
+from colcon_rsia.package.analysis import check_stop
+from colcon_rsia.package.analysis import Interrupted
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.safe_files import display
 
@@ -52,6 +54,8 @@ class Outcome:
     # a package of a kind this version does not analyse (nothing to say
     # during a build)
     skipped: bool = False
+    # the build was interrupted before the analysis ended (then skipped too)
+    interrupted: bool = False
 
     def line(self):
         """One line for the console (undecodable names escaped)."""
@@ -158,6 +162,9 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
             header_mode=header_mode,
             workspace_package_dirs=workspace_package_dirs,
             without_build=without_build)
+    except Interrupted:
+        # nothing to say, nothing written: the build says it was interrupted
+        return Outcome(display(name), skipped=True, interrupted=True)
     except AnalysisError as e:
         outcome = Outcome(name, error=str(e))
     except Exception as e:  # noqa: B902
@@ -217,5 +224,6 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         summary.coverage.call_sites += python.coverage.call_sites
         summary.seconds = round(
             summary.seconds + time.monotonic() - started, 3)
+        check_stop()
         store.write_summary(build_base, summary)
     return Outcome(name, summary=summary)

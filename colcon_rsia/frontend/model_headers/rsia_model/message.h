@@ -71,6 +71,14 @@ struct AnyElement;
 // iterator type (std::vector<float>::const_iterator it = msg.ranges.begin()).
 struct AnyIterator
 {
+  // the traits of a random-access iterator, so that range constructors and
+  // algorithms take a pair of them: std::vector<double> v(f.begin(), f.end())
+  using iterator_category = std::random_access_iterator_tag;
+  using value_type = AnyElement;
+  using difference_type = long;
+  using pointer = AnyElement*;
+  using reference = AnyElement&;
+
   AnyElement& operator*() const;
   AnyElement* operator->() const;
   AnyElement& operator[](long) const;
@@ -253,6 +261,12 @@ struct Unknown : Fields
   explicit operator bool() const;
   template <class... RsiaArgs>
   Any& operator()(RsiaArgs&&...) const;
+  // assignment from anything in one exact step: otherwise `handle =
+  // hw->getHandle(name)` (an Any) ties between the implicit copy and move
+  // assignments, both reached through the constructor above. The declared
+  // classes bring it in with `using ::rsia_model::Unknown::operator=`.
+  template <class RsiaV>
+  Unknown& operator=(RsiaV&&);
 };
 
 // the value of a function-like macro the model lacks (see repair.py)
