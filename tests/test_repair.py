@@ -153,6 +153,16 @@ def _lines(text):
      'void f() override;', 10, {('no-override', 'override')}),
     ('expected namespace name', 'namespace bacc = boost::accumulators;', 18,
      {('namespace', 'boost::accumulators')}),
+    # templates whose use shows value arguments get value parameters
+    ("no template named 'Matrix' in namespace 'Eigen'",
+     'Eigen::Matrix<double, 3, 1> v;', 8, {('template:tvv', 'Eigen::Matrix')}),
+    ("unknown template name 'Filter'", 'Filter<Eigen::Vector3d, N + 1> f;', 1,
+     {('template:tv', 'Filter')}),
+    ("unknown template name 'Buffer'",
+     'Buffer<std::vector<int>, T> b;', 1, {('template', 'Buffer')}),
+    ("no member named 'Identity' in 'Eigen::Matrix<double, 3, 3>'",
+     'auto m = Eigen::Matrix<double, 3, 3>::Identity();', 39,
+     {('member', 'Eigen::Matrix::Identity')}),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
@@ -462,3 +472,139 @@ def test_no_model_error_on_handles_buffers_and_field_iterators(tmp_path):
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['state']
     assert [s.topic for s in node.subscribers] == ['command']
+
+
+# a library's class templates with value parameters (Eigen, Ceres): the
+# repair declares them with the parameter kinds their uses show
+EIGEN_AND_CERES = r"""
+#include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <std_msgs/String.h>
+#include <Eigen/Core>
+#include <ceres/ceres.h>
+#include <string>
+
+struct Residual
+{
+  template <class T>
+  bool operator()(const T* x, T* r) const { r[0] = x[0]; return true; }
+};
+
+ros::Publisher pub;
+
+void onValue(const std_msgs::Float64::ConstPtr& msg)
+{
+  Eigen::Matrix<double, 3, 3> rotation = Eigen::Matrix<double, 3, 3>::Identity();
+  auto* cost = new ceres::AutoDiffCostFunction<Residual, 1, 1>(new Residual);
+  pub.publish(*msg);
+}
+
+void onCommand(const std_msgs::String::ConstPtr& msg)
+{
+  // a field to a number: std::string only, not also std::wstring
+  int index = std::stoi(msg->data);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "estimator");
+  ros::NodeHandle nh;
+  pub = nh.advertise<std_msgs::Float64>("estimate", 1);
+  ros::Subscriber sub = nh.subscribe("value", 1, onValue);
+  ros::Subscriber commands = nh.subscribe("command", 1, onCommand);
+  ros::spin();
+}
+"""
+
+
+def test_templates_with_value_parameters_are_repaired(tmp_path):
+    package = tmp_path / 'estimator'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'estimator.cpp').write_text(EIGEN_AND_CERES)
+    summary = analysis.analyze_package(
+        name='estimator', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    # before: `template <class...>` took no 3, and a member of a
+    # specialisation ('Eigen::Matrix<double, 3, 3>') was not declared
+    assert unit.errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    [publisher] = node.publishers
+    assert (publisher.topic, publisher.label) == ('estimate', 'dependent')
+
+
+# what real ROS 2 nodes use of parameters, tf2 and pluginlib beyond the
+# basics: all of it is in the model, so no repair is needed
+PARAMETERS_TF2_PLUGINS = r"""
+#include <memory>
+#include <string>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/pose_stamped.hpp>
+#include <pluginlib/class_loader.hpp>
+#include <tf2/LinearMath/Quaternion.hpp>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.hpp>
+
+namespace planning { class Smoother { public: virtual ~Smoother() = default; }; }
+
+class Planner : public rclcpp::Node
+{
+public:
+  Planner()
+  : Node("planner"), loader_("planning", "planning::Smoother")
+  {
+    smoother_ = loader_.createSharedInstance("planning/Spline");
+    pub_ = create_publisher<geometry_msgs::msg::PoseStamped>("goal", 10);
+    params_ = get_node_parameters_interface();
+    params_->set_parameters({rclcpp::Parameter("active", true)});
+    client_ = std::make_shared<rclcpp::AsyncParametersClient>(this);
+    events_ = client_->on_parameter_event(
+      [this](std::shared_ptr<const rcl_interfaces::msg::ParameterEvent> event) {
+        for (const auto & changed : event->changed_parameters) {
+          gain_ = rclcpp::Parameter::from_parameter_msg(changed).as_double();
+        }
+      });
+  }
+
+  void turn(const geometry_msgs::msg::PoseStamped & pose)
+  {
+    tf2::Quaternion heading;
+    tf2::fromMsg(pose.pose.orientation, heading);
+    tf2::Quaternion quarter;
+    quarter.setRPY(0.0, 0.0, tf2::getYaw(pose.pose.orientation) * gain_);
+    heading *= quarter;
+    geometry_msgs::msg::PoseStamped out = pose;
+    out.pose.orientation = tf2::toMsg(heading);
+    pub_->publish(out);
+  }
+
+private:
+  pluginlib::ClassLoader<planning::Smoother> loader_;
+  std::shared_ptr<planning::Smoother> smoother_;
+  rclcpp::node_interfaces::NodeParametersInterface::SharedPtr params_;
+  rclcpp::AsyncParametersClient::SharedPtr client_;
+  rclcpp::Subscription<rcl_interfaces::msg::ParameterEvent>::SharedPtr events_;
+  rclcpp::Publisher<geometry_msgs::msg::PoseStamped>::SharedPtr pub_;
+  double gain_ = 1.0;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Planner>());
+}
+"""
+
+
+def test_the_model_has_parameters_tf2_conversions_and_class_loaders(tmp_path):
+    package = tmp_path / 'planner'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'planner.cpp').write_text(PARAMETERS_TF2_PLUGINS)
+    summary = analysis.analyze_package(
+        name='planner', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['goal']

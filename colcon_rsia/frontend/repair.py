@@ -46,7 +46,8 @@ _IN_NAMESPACE = re.compile(
 _NOT_NAMESPACE = re.compile(
     r"^use of undeclared identifier '(\w+)'|^expected namespace name")
 _IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
-_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)'$")
+# (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
+_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(?:<.*>)?'$")
 _INCOMPLETE = re.compile(
     r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
     r'^(?:member access into|variable has|field has) incomplete type '
@@ -262,6 +263,12 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
             not any(part in _KEYWORDS for part in r[1].split('::')))})
 
 
+def _rank(kind):
+    # a template with values in its shape beats one without: its first
+    # declaration may have come from a use the line did not show whole
+    return (_PRIORITY.index(_base_kind(kind)), ':' not in kind)
+
+
 def _one_kind_each(repairs):
     """Keep one kind per name (a name both a type and an object is not).
 
@@ -270,15 +277,14 @@ def _one_kind_each(repairs):
     """
     chosen = {}
     for kind, name in sorted(repairs):
-        if kind not in _PRIORITY:
+        if _base_kind(kind) not in _PRIORITY:
             chosen[(kind, name)] = (kind, name)
             continue
         current = chosen.get(name)
-        if current is None or \
-                _PRIORITY.index(kind) < _PRIORITY.index(current[0]):
+        if current is None or _rank(kind) < _rank(current[0]):
             chosen[name] = (kind, name)
     classes = {name for kind, name in chosen.values()
-               if kind in (TYPE, TEMPLATE)}
+               if _base_kind(kind) in (TYPE, TEMPLATE)}
     result = set()
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
@@ -339,7 +345,7 @@ def _uses_of_namespace(namespace, texts):
     """(kind, name) of what the texts use after ``namespace::``."""
     pattern = re.compile(
         r'(?<![\w:])' + re.escape(namespace).replace('::', r'\s*::\s*') +
-        r'\s*::\s*(\w+)(?:\s*::\s*(\w+))?(.{0,3})')
+        r'\s*::\s*(\w+)(?:\s*::\s*(\w+))?(?=([^\n]{0,200}))')
     found = set()
     for text in texts:
         for match in pattern.finditer(text):
@@ -381,12 +387,13 @@ def _repairs(diagnostics, read_line):
                 repairs.add((MACRO_VOID if after.startswith('(')
                              else MACRO_EMPTY, name))
             else:
-                repairs.add((TEMPLATE if after.startswith('<') else TYPE,
-                             name))
+                repairs.add((_template_kind(after) if after.startswith('<')
+                             else TYPE, name))
             continue
         match = _UNKNOWN_TEMPLATE.match(message)
         if match:
-            repairs.add((TEMPLATE, _qualified(match.group(1), text, column)))
+            repairs.add((_template_kind(after),
+                         _qualified(match.group(1), text, column)))
             continue
         match = _IN_STD.match(message)
         if match:
@@ -409,9 +416,10 @@ def _repairs(diagnostics, read_line):
         if match:
             what, name, namespace = match.groups()
             if what in ('type', 'class'):
-                kind = TEMPLATE if after.startswith('<') else TYPE
+                kind = _template_kind(after) if after.startswith('<') \
+                    else TYPE
             elif what == 'template':
-                kind = TEMPLATE
+                kind = _template_kind(after)
             else:
                 kind = _by_use(name, after, unqualified=False)[0]
             repairs.add((kind, f'{namespace}::{name}'))
@@ -463,6 +471,64 @@ def _after(text, column, message):
     return text[found + len(name):].lstrip()
 
 
+def _template_kind(after):
+    """TEMPLATE, or TEMPLATE:<shape> when arguments of its use are values.
+
+    The shape has a letter per argument of the use the line shows: 't' for
+    a type, 'v' for a value, so that `Eigen::Matrix<double, 3, 1>` is
+    declared with a type and two value parameters ('template:tvv').
+    """
+    arguments = _template_arguments(after)
+    shape = ''.join('v' if _VALUE_ARGUMENT.search(a) else 't'
+                    for a in arguments)
+    return f'{TEMPLATE}:{shape}' if 'v' in shape else TEMPLATE
+
+
+# a template argument that is a value: a number, true/false, sizeof, an
+# ALL_CAPS constant (not T or N alone: those name types as often), or
+# arithmetic on names
+_VALUE_ARGUMENT = re.compile(
+    r"^[-+]?\s*(?:\d[\w.']*|true|false|sizeof\b)|"
+    r'^(?:\w+::)*[A-Z][A-Z0-9_]+$|'
+    r'\w\s*[-+/%]\s*\w')
+
+
+def _template_arguments(after):
+    """The arguments of `<...>` at the start of ``after`` (all on the line)."""
+    if not after.startswith('<'):
+        return []
+    arguments, current, depth = [], [], 0
+    for char in after[1:]:
+        if depth == 0 and char in ',>':
+            arguments.append(''.join(current).strip())
+            current = []
+            if char == '>':
+                return arguments if all(arguments) else []
+            continue
+        if char in '<([{':
+            depth += 1
+        elif char in '>)]}':
+            depth -= 1
+        current.append(char)
+    return []  # the list goes on past the line: shape unknown
+
+
+def _template_head(kind):
+    """`template <...> ` for a TEMPLATE kind, by its shape."""
+    shape = kind.partition(':')[2]
+    if not shape:
+        return 'template <class...> '
+    # long long, not auto (C++17): ROS 1 code is compiled as C++14;
+    # enumerators and bools convert to it
+    parameters = ['class' if c == 't' else 'long long' for c in shape]
+    parameters.append(parameters[-1] + '...')
+    return f"template <{', '.join(parameters)}> "
+
+
+def _base_kind(kind):
+    return kind.partition(':')[0]
+
+
 def _by_use(name, after, *, unqualified):
     """(kind, name) of a name from what follows it."""
     if after.startswith('::'):
@@ -479,7 +545,7 @@ def _by_use(name, after, *, unqualified):
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')):
-        return TEMPLATE, name
+        return _template_kind(after), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
@@ -526,8 +592,8 @@ def _render(repairs, source):
             continue
         if kind == NAMESPACE:
             namespaces, body = namespaces + [short], ''
-        elif kind in (TYPE, TEMPLATE):
-            head = 'template <class...> ' if kind == TEMPLATE else ''
+        elif _base_kind(kind) in (TYPE, TEMPLATE):
+            head = _template_head(kind) if kind != TYPE else ''
             body = ''.join(
                 f' static ::rsia_model::Any {m};'
                 for m in sorted(members.get(name, ())))

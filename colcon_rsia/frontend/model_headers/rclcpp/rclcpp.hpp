@@ -35,8 +35,10 @@
 #include <utility>
 #include <vector>
 
+#include <rcl_interfaces/msg/parameter.hpp>
 #include <rcl_interfaces/msg/parameter_descriptor.hpp>
 #include <rcl_interfaces/msg/parameter_event.hpp>
+#include <rcl_interfaces/msg/parameter_value.hpp>
 #include <rcl_interfaces/msg/set_parameters_result.hpp>
 
 // the smart pointer aliases and factories of rclcpp/macros.hpp
@@ -486,6 +488,9 @@ public:
   const std::vector<double> & as_double_array() const;
   const std::vector<std::string> & as_string_array() const;
   std::string value_to_string() const;
+  static Parameter from_parameter_msg(const rcl_interfaces::msg::Parameter & parameter);
+  rcl_interfaces::msg::Parameter to_parameter_msg() const;
+  rcl_interfaces::msg::ParameterValue get_value_message() const;
 };
 
 // rclcpp/node_options.hpp
@@ -959,8 +964,35 @@ public:
     const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
     rcl_interfaces::msg::ParameterDescriptor(),
     bool ignore_override = false) = 0;
+  virtual const ParameterValue & declare_parameter(
+    const std::string & name, ParameterType type,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false) = 0;
+  virtual void undeclare_parameter(const std::string & name) = 0;
   virtual bool has_parameter(const std::string & name) const = 0;
+  virtual std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
+    const std::vector<Parameter> & parameters) = 0;
+  virtual rcl_interfaces::msg::SetParametersResult set_parameters_atomically(
+    const std::vector<Parameter> & parameters) = 0;
+  virtual std::vector<Parameter> get_parameters(
+    const std::vector<std::string> & names) const = 0;
   virtual Parameter get_parameter(const std::string & name) const = 0;
+  virtual bool get_parameter(const std::string & name, Parameter & parameter) const = 0;
+  virtual bool get_parameters_by_prefix(
+    const std::string & prefix, std::map<std::string, Parameter> & parameters) const = 0;
+  virtual std::vector<rcl_interfaces::msg::ParameterDescriptor> describe_parameters(
+    const std::vector<std::string> & names) const = 0;
+  virtual std::vector<uint8_t> get_parameter_types(
+    const std::vector<std::string> & names) const = 0;
+  virtual OnSetParametersCallbackHandle::SharedPtr add_on_set_parameters_callback(
+    OnSetParametersCallbackType callback) = 0;
+  virtual void remove_on_set_parameters_callback(
+    const OnSetParametersCallbackHandle * const handler) = 0;
+  virtual PreSetParametersCallbackHandle::SharedPtr add_pre_set_parameters_callback(
+    PreSetParametersCallbackType callback) = 0;
+  virtual PostSetParametersCallbackHandle::SharedPtr add_post_set_parameters_callback(
+    PostSetParametersCallbackType callback) = 0;
 };
 
 // get_node_*_interface(node): node, pointer or shared_ptr to a node
@@ -1535,6 +1567,20 @@ public:
   std::shared_future<rcl_interfaces::msg::SetParametersResult>
   set_parameters_atomically(
     const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
+  // the subscription to /parameter_events (rclcpp creates it on the
+  // node the client was made with)
+  template<class CallbackT, class AllocatorT = std::allocator<void>>
+  typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
+  on_parameter_event(
+    CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    SubscriptionOptionsWithAllocator<AllocatorT>());
+  template<class CallbackT, class NodeT, class AllocatorT = std::allocator<void>>
+  static typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
+  on_parameter_event(
+    NodeT && node, CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    SubscriptionOptionsWithAllocator<AllocatorT>());
 };
 
 class SyncParametersClient
@@ -1563,6 +1609,20 @@ public:
   template<class... RsiaArgs>
   std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
     const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
+  // the subscription to /parameter_events (rclcpp creates it on the
+  // node the client was made with)
+  template<class CallbackT, class AllocatorT = std::allocator<void>>
+  typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
+  on_parameter_event(
+    CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    SubscriptionOptionsWithAllocator<AllocatorT>());
+  template<class CallbackT, class NodeT, class AllocatorT = std::allocator<void>>
+  static typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
+  on_parameter_event(
+    NodeT && node, CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    SubscriptionOptionsWithAllocator<AllocatorT>());
 };
 
 }  // namespace rclcpp

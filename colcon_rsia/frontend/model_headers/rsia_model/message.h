@@ -39,8 +39,10 @@
 namespace rsia_model
 {
 
-template <class RsiaChar, class RsiaTraits, class RsiaAlloc>
-struct field_target<std::basic_string<RsiaChar, RsiaTraits, RsiaAlloc>> : std::true_type
+// strings of char only: with wide strings too, std::stoi(msg.name) would
+// tie between its std::string and std::wstring overloads
+template <class RsiaTraits, class RsiaAlloc>
+struct field_target<std::basic_string<char, RsiaTraits, RsiaAlloc>> : std::true_type
 {
 };
 
@@ -53,8 +55,8 @@ struct field_target<std::vector<RsiaElement, RsiaAlloc>> : std::true_type
 // `text = msg.name`: with this, std::string's assignment from anything
 // convertible to a string_view takes the field exactly, which settles the
 // tie between assigning a std::string and a char (from the double)
-template <class RsiaChar, class RsiaTraits>
-struct field_target<std::basic_string_view<RsiaChar, RsiaTraits>> : std::true_type
+template <class RsiaTraits>
+struct field_target<std::basic_string_view<char, RsiaTraits>> : std::true_type
 {
 };
 #endif
