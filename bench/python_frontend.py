@@ -19,6 +19,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from colcon_rsia.frontend import python as front  # noqa: E402,I100
+from colcon_rsia.frontend.python import scopes as front_scopes  # noqa: E402,I100
 from colcon_rsia.package.python_analysis import build_python_summary  # noqa: E402
 from colcon_rsia.package.python_nodes import find_python_nodes  # noqa: E402
 
@@ -34,7 +35,7 @@ def _per_file(package):
             samples = []
             for _ in range(ROUNDS):
                 if clear:
-                    front._MODULE_CACHE.clear()
+                    front_scopes.MODULE_CACHE.clear()
                 started = time.perf_counter()
                 front.extract_python_facts(
                     path, package_path=str(package), module_name=name,
@@ -54,7 +55,7 @@ def main(argv):
         cold, warm = _per_file(package)
         all_cold += [c[0] for c in cold]
         all_warm += [w[0] for w in warm]
-        front._MODULE_CACHE.clear()
+        front_scopes.MODULE_CACHE.clear()
         started = time.perf_counter()
         summary = build_python_summary(name=package.name, path=str(package))
         whole = time.perf_counter() - started
