@@ -33,7 +33,7 @@ MAX_PARAMETERS = 20000
 # nesting of YAML values and of launch elements handled recursively; the
 # Python stack stays well below its limit (the nesting of substitutions
 # and of Python launch code have limits of their own:
-# substitutions.MAX_SUBSTITUTION_NESTING, python_launch.MAX_CODE_NESTING)
+# substitutions.MAX_SUBSTITUTION_NESTING, python_launch_values.MAX_CODE_NESTING)
 MAX_NESTING = 64
 # node name patterns of parameter files longer than this, or with more
 # wildcards, match nothing (their regular expression could backtrack for

@@ -15,7 +15,6 @@ sequence runs its body once and marks what it creates.
 
 import ast
 import builtins
-from dataclasses import dataclass
 import os
 import re
 import string
@@ -24,127 +23,33 @@ from colcon_rsia.launch import safe_eval
 from colcon_rsia.launch.common import location
 from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.ir import Action
-from colcon_rsia.launch.ir import BoolOp
-from colcon_rsia.launch.ir import ComposableNodeAction
-from colcon_rsia.launch.ir import Cond
-from colcon_rsia.launch.ir import DeclareArgument
-from colcon_rsia.launch.ir import EnvVar
 from colcon_rsia.launch.ir import Group
-from colcon_rsia.launch.ir import Ignored
-from colcon_rsia.launch.ir import Include
-from colcon_rsia.launch.ir import LaunchConfig
-from colcon_rsia.launch.ir import LoadComposable
-from colcon_rsia.launch.ir import NodeAction
-from colcon_rsia.launch.ir import Opaque
-from colcon_rsia.launch.ir import PackagePath
-from colcon_rsia.launch.ir import ParamDict
-from colcon_rsia.launch.ir import ParamItem
-from colcon_rsia.launch.ir import PathJoin
-from colcon_rsia.launch.ir import PushNamespace
-from colcon_rsia.launch.ir import PyExpr
-from colcon_rsia.launch.ir import SetConfiguration
-from colcon_rsia.launch.ir import SetEnv
-from colcon_rsia.launch.ir import SetParameter
-from colcon_rsia.launch.ir import SetRemap
-from colcon_rsia.launch.ir import ThisFile
-from colcon_rsia.launch.ir import TypedValue
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.model import LaunchError
+from colcon_rsia.launch.python_launch_api import ArgError
+from colcon_rsia.launch.python_launch_api import Args
+from colcon_rsia.launch.python_launch_api import LAUNCH_API
+from colcon_rsia.launch.python_launch_values import Bound
+from colcon_rsia.launch.python_launch_values import BranchEnd
+from colcon_rsia.launch.python_launch_values import BreakSignal
+from colcon_rsia.launch.python_launch_values import BudgetExceeded
+from colcon_rsia.launch.python_launch_values import ContinueSignal
+from colcon_rsia.launch.python_launch_values import Frame
+from colcon_rsia.launch.python_launch_values import Function
+from colcon_rsia.launch.python_launch_values import HashableValue
+from colcon_rsia.launch.python_launch_values import LAUNCH_MODULES
+from colcon_rsia.launch.python_launch_values import LaunchDescription
+from colcon_rsia.launch.python_launch_values import MAX_CALL_DEPTH
+from colcon_rsia.launch.python_launch_values import MAX_CODE_NESTING
+from colcon_rsia.launch.python_launch_values import MAX_LOOP
+from colcon_rsia.launch.python_launch_values import MAX_SIZE
+from colcon_rsia.launch.python_launch_values import MAX_STEPS
+from colcon_rsia.launch.python_launch_values import MAX_TOTAL_STEPS
+from colcon_rsia.launch.python_launch_values import MISSING
+from colcon_rsia.launch.python_launch_values import Ref
+from colcon_rsia.launch.python_launch_values import ReturnSignal
+from colcon_rsia.launch.python_launch_values import SCALARS
 from colcon_rsia.launch.safe_eval import Unresolved
-
-# AST nodes evaluated for one file: a launch file takes a few thousand;
-# loops and calls must not make the analysis run away
-MAX_STEPS = 200000
-# ... and for all the Python launch files of one load
-MAX_TOTAL_STEPS = 2000000
-# iterations of one interpreted loop (and elements of a range())
-MAX_LOOP = 1000
-# nested calls of module functions (recursion ends here)
-MAX_CALL_DEPTH = 16
-# nesting of interpreted statements, expressions and calls together; the
-# Python stack (a few frames per level) stays well below its limit
-# (elements and YAML: common.MAX_NESTING)
-MAX_CODE_NESTING = 100
-# elements of a list or characters of a string the interpreter builds
-MAX_SIZE = 100000
-
-_MISSING = object()
-_SCALARS = (str, int, float, bool, type(None))
-# modules whose classes and functions are recognised by their last name
-_LAUNCH_MODULES = ('launch', 'launch_ros', 'launch_xml', 'launch_yaml',
-                   'ament_index_python')
-
-
-class _Budget(Exception):
-    pass
-
-
-class _Return(Exception):
-
-    def __init__(self, value):
-        super().__init__()
-        self.value = value
-
-
-class _Break(Exception):
-    pass
-
-
-class _Continue(Exception):
-    pass
-
-
-@dataclass
-class _Ref:
-    """A module or a name imported from one."""
-
-    qualname: str
-
-
-@dataclass
-class _Function:
-    """A function defined in the launch file (or a lambda)."""
-
-    node: object
-    defaults: list
-    kw_defaults: dict
-    closure: list  # the environments it was defined in (innermost first)
-    name: str
-
-
-@dataclass
-class _Bound:
-    """A method of a value, such as ``nodes.append`` or ``ld.add_action``."""
-
-    obj: object
-    name: str
-
-
-@dataclass
-class _LaunchDescription:
-    entities: list
-
-
-@dataclass
-class _Source:
-    path: object
-
-
-@dataclass
-class _EventHandler:
-    actions: list
-    what: str
-
-
-@dataclass
-class _Frame:
-    env: dict
-    conditional_returns: list
-    base: int  # unknown branches entered before the call
-
-
-class _BranchEnd(Exception):
-    """A return inside a branch whose condition is not known."""
 
 
 def read_python_launch(path, text, loader):
@@ -194,7 +99,7 @@ class _Interpreter:
         self.loader.python_steps += 1
         if self.steps > MAX_STEPS or \
                 self.loader.python_steps > MAX_TOTAL_STEPS:
-            raise _Budget()
+            raise BudgetExceeded()
 
     # the module
 
@@ -202,17 +107,17 @@ class _Interpreter:
         try:
             self.module(tree)
             function = self.globals.get('generate_launch_description')
-            if not isinstance(function, _Function):
+            if not isinstance(function, Function):
                 self.loader.note(f'{self.path}: no generate_launch_'
                                  'description() function; nothing launched')
                 return []
             node = function.node
             value = self.call_function(function, [], {}, node)
-        except _Budget:
+        except BudgetExceeded:
             self.loader.note(f'{self.path}: the launch file takes too many '
                              'steps to interpret; the rest is not read')
             return []
-        if isinstance(value, _LaunchDescription):
+        if isinstance(value, LaunchDescription):
             return value.entities
         if isinstance(value, UnknownValue):
             self.loader.note(f'{self.path}: generate_launch_description() '
@@ -230,7 +135,7 @@ class _Interpreter:
             elif isinstance(stmt, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 self.define(stmt, self.globals, [self.globals])
             elif isinstance(stmt, (ast.Assign, ast.AnnAssign)):
-                self.frames.append(_Frame(self.globals, [], 0))
+                self.frames.append(Frame(self.globals, [], 0))
                 try:
                     self.statement(stmt, self.globals)
                 finally:
@@ -255,17 +160,17 @@ class _Interpreter:
         if isinstance(stmt, ast.Import):
             for alias in stmt.names:
                 if alias.asname:
-                    env[alias.asname] = _Ref(alias.name)
+                    env[alias.asname] = Ref(alias.name)
                 else:
                     top = alias.name.split('.')[0]
-                    env[top] = _Ref(top)
+                    env[top] = Ref(top)
             return
         module = '.' * stmt.level + (stmt.module or '')
         for alias in stmt.names:
             if alias.name == '*':
                 self.note(stmt, f'from {module} import * not followed')
                 continue
-            env[alias.asname or alias.name] = _Ref(f'{module}.{alias.name}')
+            env[alias.asname or alias.name] = Ref(f'{module}.{alias.name}')
 
     def define(self, stmt, env, closure):
         args = stmt.args
@@ -274,8 +179,8 @@ class _Interpreter:
         for arg, default in zip(args.kwonlyargs, args.kw_defaults):
             if default is not None:
                 kw_defaults[arg.arg] = self.eval(default, env)
-        env[stmt.name] = _Function(stmt, defaults, kw_defaults,
-                                   list(closure), stmt.name)
+        env[stmt.name] = Function(stmt, defaults, kw_defaults,
+                                  list(closure), stmt.name)
 
     # calls of module functions
 
@@ -290,7 +195,7 @@ class _Interpreter:
         except TypeError as e:
             return self.unknown(call_node, f'call of {function.name}() not '
                                 f'understood ({e})')
-        frame = _Frame(env, [], len(self.uncertain))
+        frame = Frame(env, [], len(self.uncertain))
         self.frames.append(frame)
         closure = function.closure
         try:
@@ -299,9 +204,9 @@ class _Interpreter:
             value = None
             try:
                 self.block(node.body, env, closure)
-            except _Return as r:
+            except ReturnSignal as r:
                 value = r.value
-            except (_Break, _Continue, _BranchEnd):
+            except (BreakSignal, ContinueSignal, BranchEnd):
                 pass
             if frame.conditional_returns:
                 value = self.merge_returns(frame.conditional_returns, value,
@@ -344,7 +249,7 @@ class _Interpreter:
 
     def merge_returns(self, conditional, final, node):
         values = [v for v, _ in conditional] + [final]
-        if not all(isinstance(v, _LaunchDescription) for v in values):
+        if not all(isinstance(v, LaunchDescription) for v in values):
             return self.unknown(node, 'the function returns different '
                                 'values depending on conditions not known '
                                 'statically')
@@ -358,7 +263,7 @@ class _Interpreter:
             actions=final.entities, scoped=False, location=self.loc(node),
             notes=[f'{self.loc(node)}: returned only when an earlier return '
                    f'does not happen ({"; ".join(notes)})']))
-        return _LaunchDescription(entities)
+        return LaunchDescription(entities)
 
     # statements
 
@@ -402,14 +307,14 @@ class _Interpreter:
         frame = self.frames[-1] if self.frames else None
         if frame is not None and len(self.uncertain) > frame.base:
             frame.conditional_returns.append((value, self.uncertain[-1]))
-            raise _BranchEnd()  # ends this branch only
-        raise _Return(value)
+            raise BranchEnd()  # ends this branch only
+        raise ReturnSignal(value)
 
     def stmt_Break(self, stmt, env, closure):  # noqa: N802
-        raise _Break()
+        raise BreakSignal()
 
     def stmt_Continue(self, stmt, env, closure):  # noqa: N802
-        raise _Continue()
+        raise ContinueSignal()
 
     def stmt_Assign(self, stmt, env, closure):  # noqa: N802
         value = self.eval(stmt.value, env, closure)
@@ -458,7 +363,7 @@ class _Interpreter:
             self.uncertain.append(note)
             try:
                 self.block(body, env, closure)
-            except (_Break, _Continue, _BranchEnd):
+            except (BreakSignal, ContinueSignal, BranchEnd):
                 pass
             finally:
                 self.uncertain.pop()
@@ -469,11 +374,11 @@ class _Interpreter:
             names.update(result)
         notes = [note for _, note in alternatives]
         for name in names:
-            values = [r.get(name, before.get(name, _MISSING))
+            values = [r.get(name, before.get(name, MISSING))
                       for r in results]
             first = values[0]
             if all(_same(first, v) for v in values[1:]):
-                if first is not _MISSING:
+                if first is not MISSING:
                     env[name] = first
             else:
                 env[name] = _alternatives(name, values, notes)
@@ -495,9 +400,9 @@ class _Interpreter:
             self.assign(stmt.target, item, env, closure)
             try:
                 self.block(stmt.body, env, closure)
-            except _Continue:
+            except ContinueSignal:
                 continue
-            except _Break:
+            except BreakSignal:
                 return
         self.block(stmt.orelse, env, closure)
 
@@ -585,8 +490,8 @@ class _Interpreter:
         if name in self.globals:
             return self.globals[name]
         if name in _PYTHON_BUILTINS:
-            return _Ref('builtins.' + name)  # few are interpreted
-        return _MISSING
+            return Ref('builtins.' + name)  # few are interpreted
+        return MISSING
 
     def eval(self, node, env, closure=None, depth=0):
         self.step()
@@ -603,28 +508,28 @@ class _Interpreter:
             self.nesting -= 1
 
     def ex_Constant(self, node, env, closure, depth):  # noqa: N802
-        if isinstance(node.value, _SCALARS):
+        if isinstance(node.value, SCALARS):
             return node.value
         return UnknownValue(f'{self.loc(node)}: constant of type '
                             f'{type(node.value).__name__}')
 
     def ex_Name(self, node, env, closure, depth):  # noqa: N802
         value = self.lookup(node.id, env, closure)
-        if value is _MISSING:
+        if value is MISSING:
             return self.unknown(node, f"name '{node.id}' is not defined in "
                                 'the launch file')
         return value
 
     def ex_Attribute(self, node, env, closure, depth):  # noqa: N802
         obj = self.eval(node.value, env, closure, depth)
-        if isinstance(obj, _Ref):
-            return _Ref(f'{obj.qualname}.{node.attr}')
+        if isinstance(obj, Ref):
+            return Ref(f'{obj.qualname}.{node.attr}')
         if isinstance(obj, UnknownValue):
             return obj
         if node.attr.startswith('_'):
             return self.unknown(node, f'attribute {node.attr} not '
                                 'interpreted')
-        return _Bound(obj, node.attr)
+        return Bound(obj, node.attr)
 
     def ex_Call(self, node, env, closure, depth):  # noqa: N802
         func = self.eval(node.func, env, closure, depth)
@@ -737,7 +642,7 @@ class _Interpreter:
                 parts.append(str(value.value))
                 continue
             item = self.eval(value.value, env, closure, depth)
-            if not isinstance(item, _SCALARS):
+            if not isinstance(item, SCALARS):
                 return self.unknown(node, 'f-string of a value not known '
                                     'before launch (use a list of '
                                     'substitutions)')
@@ -792,14 +697,14 @@ class _Interpreter:
                 continue
             k = self.eval(key, env, closure, depth)
             if not _hashable(k):
-                k = _HashableValue(k)
+                k = HashableValue(k)
             out[k] = item
         return out
 
     def ex_Subscript(self, node, env, closure, depth):  # noqa: N802
         container = self.eval(node.value, env, closure, depth)
         key = self.eval(node.slice, env, closure, depth)
-        if isinstance(container, _Ref) and container.qualname == \
+        if isinstance(container, Ref) and container.qualname == \
                 'os.environ':
             return self.environ(key, None, node, required=True)
         if isinstance(container, (list, tuple, str, dict)) and (
@@ -821,8 +726,8 @@ class _Interpreter:
     def ex_Lambda(self, node, env, closure, depth):  # noqa: N802
         defaults = [self.eval(d, env, closure, depth)
                     for d in node.args.defaults]
-        return _Function(node, defaults, {}, [env] + list(closure or []),
-                         'lambda')
+        return Function(node, defaults, {}, [env] + list(closure or []),
+                        'lambda')
 
     def ex_NamedExpr(self, node, env, closure, depth):  # noqa: N802
         value = self.eval(node.value, env, closure, depth)
@@ -844,7 +749,7 @@ class _Interpreter:
 
         def add(e):
             key = self.eval(node.key, e, closure, depth)
-            out[key if _hashable(key) else _HashableValue(key)] = self.eval(
+            out[key if _hashable(key) else HashableValue(key)] = self.eval(
                 node.value, e, closure, depth)
         self.comprehension(node, node.generators, 0, dict(env), closure,
                            depth, add)
@@ -985,18 +890,18 @@ class _Interpreter:
     def call(self, func, args, kwargs, node):
         if isinstance(func, UnknownValue):
             return func
-        if isinstance(func, _Function):
+        if isinstance(func, Function):
             return self.call_function(func, args, kwargs, node)
-        if isinstance(func, _Bound):
+        if isinstance(func, Bound):
             return self.method(func, args, kwargs, node)
-        if isinstance(func, _Ref):
+        if isinstance(func, Ref):
             return self.library(func.qualname, args, kwargs, node)
         return self.unknown(node, f'call of a {type(func).__name__} not '
                             'interpreted')
 
     def method(self, bound, args, kwargs, node):
         obj, name = bound.obj, bound.name
-        if isinstance(obj, _LaunchDescription) and name in (
+        if isinstance(obj, LaunchDescription) and name in (
                 'add_action', 'add_entity') and len(args) == 1:
             obj.entities.extend(self.mark(args))
             return None
@@ -1043,7 +948,7 @@ class _Interpreter:
 
     def str_method(self, text, name, args, kwargs, node):
         if name == 'format':
-            if not all(isinstance(a, _SCALARS) for a in
+            if not all(isinstance(a, SCALARS) for a in
                        list(args) + list(kwargs.values())):
                 return self.unknown(node, 'format() of values not known '
                                     'before launch')
@@ -1097,12 +1002,12 @@ class _Interpreter:
         top = qualname.split('.')[0]
         if qualname.startswith('builtins.'):
             return self.builtin(name, args, kwargs, node)
-        if top in _LAUNCH_MODULES:
-            handler = _LAUNCH_API.get(name)
+        if top in LAUNCH_MODULES:
+            handler = LAUNCH_API.get(name)
             if handler is not None:
                 try:
-                    return handler(self, _Args(args, kwargs), node)
-                except _ArgError as e:
+                    return handler(self, Args(args, kwargs), node)
+                except ArgError as e:
                     return self.unknown(node, f'{name}(): {e}')
             return self.unknown(node, f'{qualname}() not interpreted')
         if qualname in ('os.path.join', 'os.path.dirname',
@@ -1124,7 +1029,7 @@ class _Interpreter:
             if not args:
                 return {'str': '', 'int': 0, 'float': 0.0,
                         'bool': False}[name]
-            if isinstance(args[0], _SCALARS):
+            if isinstance(args[0], SCALARS):
                 try:
                     return self.limit(
                         {'str': str, 'int': int, 'float': float,
@@ -1174,7 +1079,7 @@ def _alternatives(name, values, notes):
     marked with its branch's note. Anything else is unknown.
     """
     def actions(value):
-        if value is None or value is _MISSING:
+        if value is None or value is MISSING:
             return []
         if isinstance(value, Action):
             return [value]
@@ -1223,17 +1128,10 @@ def _hashable(value):
     return isinstance(value, (str, int, float, bool, type(None)))
 
 
-class _HashableValue:
-    """A dictionary key that is not a plain scalar (a substitution)."""
-
-    def __init__(self, value):
-        self.value = value
-
-
 def _same(a, b):
     if a is b:
         return True
-    if isinstance(a, _SCALARS) and isinstance(b, _SCALARS):
+    if isinstance(a, SCALARS) and isinstance(b, SCALARS):
         return type(a) is type(b) and a == b
     return False
 
@@ -1290,503 +1188,3 @@ _STR_METHODS = frozenset((
 
 
 # the launch API
-
-
-class _ArgError(Exception):
-    pass
-
-
-class _Args:
-    """Positional and keyword arguments of a launch API call."""
-
-    def __init__(self, args, kwargs):
-        self.args = list(args)
-        self.kwargs = dict(kwargs)
-
-    def get(self, index, *names, default=None):
-        for name in names:
-            if name in self.kwargs:
-                return self.kwargs[name]
-        if index is not None and index < len(self.args):
-            return self.args[index]
-        return default
-
-    def has(self, index, *names):
-        return any(n in self.kwargs for n in names) or (
-            index is not None and index < len(self.args))
-
-
-def _text_value(value):
-    """A value usable where launch expects text or substitutions."""
-    if isinstance(value, tuple):
-        return list(value)
-    return value
-
-
-def _conditions(interp, args, node):
-    condition = args.get(None, 'condition')
-    if condition is None:
-        return []
-    if isinstance(condition, Cond):
-        return [condition]
-    return [Cond('unknown', [f'{interp.loc(node)}: condition not '
-                             'understood'])]
-
-
-def _common(interp, args, node):
-    notes = list(interp.uncertain)
-    return {'location': interp.loc(node),
-            'conditions': _conditions(interp, args, node), 'notes': notes}
-
-
-def _entities(interp, value, node, active=None):
-    if value is None:
-        return []
-    if isinstance(value, (list, tuple)):
-        active = active if active is not None else set()
-        if id(value) in active or len(active) > MAX_CODE_NESTING:
-            return [UnknownValue(f'{interp.loc(node)}: a list that contains '
-                                 'itself')]
-        active.add(id(value))
-        out = []
-        for item in value:
-            if isinstance(item, (list, tuple)):
-                out.extend(_entities(interp, item, node, active))
-            else:
-                out.append(item)
-        active.discard(id(value))
-        return out
-    if isinstance(value, _LaunchDescription):
-        return list(value.entities)
-    if isinstance(value, UnknownValue):
-        return [value]
-    return [UnknownValue(f'{interp.loc(node)}: actions not known '
-                         'statically')]
-
-
-def _launch_description(interp, args, node):
-    return _LaunchDescription(_entities(
-        interp, args.get(0, 'initial_entities'), node))
-
-
-def _declare(interp, args, node):
-    has_default = args.has(1, 'default_value')
-    return DeclareArgument(name=args.get(0, 'name'),
-                           default=_text_value(args.get(1, 'default_value')),
-                           has_default=has_default,
-                           **_common(interp, args, node))
-
-
-def _set_configuration(interp, args, node):
-    return SetConfiguration(name=args.get(0, 'name'),
-                            value=_text_value(args.get(1, 'value')),
-                            **_common(interp, args, node))
-
-
-def _remappings(interp, value, node):
-    if value is None:
-        return []
-    items = value if isinstance(value, (list, tuple)) else None
-    if items is None:
-        return [UnknownValue(f'{interp.loc(node)}: remappings not known '
-                             'statically')]
-    out = []
-    for item in items:
-        if isinstance(item, (list, tuple)) and len(item) == 2:
-            out.append((_text_value(item[0]), _text_value(item[1])))
-        else:
-            out.append(UnknownValue(f'{interp.loc(node)}: a remapping not '
-                                    'known statically'))
-    return out
-
-
-def _parameters(interp, value, node):
-    if value is None:
-        return []
-    if not isinstance(value, (list, tuple)):
-        return [ParamItem('unknown', value=f'{interp.loc(node)}: parameters '
-                          'not known statically')]
-    out = []
-    for item in value:
-        if isinstance(item, dict):
-            out.append(ParamItem('dict', value=_param_dict(item)))
-        elif isinstance(item, _ParameterFile):
-            out.append(ParamItem('file', value=item.path,
-                                 allow_substs=item.allow_substs))
-        elif isinstance(item, (str, list, PathJoin, LaunchConfig,
-                               PackagePath, EnvVar, PyExpr, ThisFile)):
-            out.append(ParamItem('file', value=_text_value(item)))
-        elif isinstance(item, UnknownValue):
-            out.append(ParamItem('unknown', value=item.reason))
-        else:
-            out.append(ParamItem('unknown', value=f'{interp.loc(node)}: a '
-                                 'parameter entry not understood'))
-    return out
-
-
-def _param_dict(data):
-    pairs = []
-    for key, value in data.items():
-        if isinstance(key, _HashableValue):
-            key = _text_value(key.value)
-        pairs.append((key, _param_dict(value) if isinstance(value, dict)
-                      else value))
-    return ParamDict(pairs)
-
-
-@dataclass
-class _ParameterFile:
-    path: object
-    allow_substs: bool
-
-
-def _node(interp, args, node, kind='node'):
-    def get(*names):
-        return _text_value(args.get(None, *names))
-    action = NodeAction(
-        package=get('package'),
-        executable=get('executable', 'node_executable'),
-        name=get('name', 'node_name'),
-        namespace=get('namespace', 'node_namespace'),
-        remaps=_remappings(interp, args.get(None, 'remappings'), node),
-        params=_parameters(interp, args.get(None, 'parameters'), node),
-        arguments=_list_value(interp, args.get(None, 'arguments'), node),
-        ros_arguments=_list_value(interp, args.get(None, 'ros_arguments'),
-                                  node),
-        kind=kind, **_common(interp, args, node))
-    if kind == 'container':
-        action.composables = _composables(
-            interp, args.get(None, 'composable_node_descriptions'), node)
-    return action
-
-
-def _list_value(interp, value, node):
-    if value is None:
-        return []
-    if isinstance(value, (list, tuple)):
-        return [_text_value(v) for v in value]
-    return UnknownValue(f'{interp.loc(node)}: arguments not known '
-                        'statically')
-
-
-def _container(interp, args, node):
-    return _node(interp, args, node, kind='container')
-
-
-def _composables(interp, value, node):
-    if value is None:
-        return []
-    if not isinstance(value, (list, tuple)):
-        interp.note(node, 'composable node descriptions not known '
-                    'statically')
-        return []
-    out = []
-    for item in value:
-        if isinstance(item, ComposableNodeAction):
-            out.append(item)
-        else:
-            interp.note(node, 'a composable node description not '
-                        'understood')
-    return out
-
-
-def _composable(interp, args, node):
-    def get(*names):
-        return _text_value(args.get(None, *names))
-    return ComposableNodeAction(
-        package=get('package'), plugin=get('plugin'),
-        name=get('name'), namespace=get('namespace'),
-        remaps=_remappings(interp, args.get(None, 'remappings'), node),
-        params=_parameters(interp, args.get(None, 'parameters'), node),
-        **_common(interp, args, node))
-
-
-def _load_composables(interp, args, node):
-    return LoadComposable(composables=_composables(
-        interp, args.get(None, 'composable_node_descriptions'), node),
-        **_common(interp, args, node))
-
-
-def _include(interp, args, node):
-    source = args.get(0, 'launch_description_source')
-    if isinstance(source, _Source):
-        path = source.path
-    elif isinstance(source, (str, list, PathJoin, PackagePath, LaunchConfig,
-                             ThisFile)):
-        path = _text_value(source)
-    else:
-        return interp.unknown(node, 'included launch description not known '
-                              'statically')
-    raw = args.get(1, 'launch_arguments')
-    arguments = []
-    if isinstance(raw, dict):
-        raw = list(raw.items())
-    if raw is not None:
-        if not isinstance(raw, (list, tuple)):
-            interp.note(node, 'include arguments not known statically')
-        else:
-            for pair in raw:
-                if isinstance(pair, (list, tuple)) and len(pair) == 2:
-                    key = pair[0].value if isinstance(
-                        pair[0], _HashableValue) else pair[0]
-                    arguments.append((_text_value(key),
-                                      _text_value(pair[1])))
-                else:
-                    interp.note(node, 'an include argument not understood')
-    return Include(path=path, arguments=arguments,
-                   **_common(interp, args, node))
-
-
-def _source_of(interp, args, node):
-    return _Source(_text_value(args.get(0, 'launch_file_path')))
-
-
-def _group(interp, args, node):
-    configurations = []
-    raw = args.get(None, 'launch_configurations')
-    if isinstance(raw, dict):
-        configurations = [
-            (k.value if isinstance(k, _HashableValue) else k, v)
-            for k, v in raw.items()]
-    scoped = args.get(1, 'scoped', default=True)
-    forwarding = args.get(2, 'forwarding', default=True)
-    return Group(actions=_entities(interp, args.get(0, 'actions'), node),
-                 scoped=scoped if isinstance(scoped, bool) else True,
-                 forwarding=forwarding is not False,
-                 configurations=configurations,
-                 **_common(interp, args, node))
-
-
-def _timer(interp, args, node):
-    return Group(actions=_entities(interp, args.get(1, 'actions'), node),
-                 scoped=False, **_common(interp, args, node))
-
-
-def _push_namespace(interp, args, node):
-    return PushNamespace(namespace=_text_value(args.get(0, 'namespace')),
-                         **_common(interp, args, node))
-
-
-def _set_remap(interp, args, node):
-    return SetRemap(source=_text_value(args.get(0, 'src')),
-                    target=_text_value(args.get(1, 'dst')),
-                    **_common(interp, args, node))
-
-
-def _set_parameter(interp, args, node):
-    return SetParameter(name=_text_value(args.get(0, 'name')),
-                        value=args.get(1, 'value'),
-                        **_common(interp, args, node))
-
-
-def _set_env(interp, args, node):
-    return SetEnv(name=_text_value(args.get(0, 'name')),
-                  value=_text_value(args.get(1, 'value', default='')),
-                  **_common(interp, args, node))
-
-
-def _unset_env(interp, args, node):
-    return SetEnv(name=_text_value(args.get(0, 'name')), value=None,
-                  **_common(interp, args, node))
-
-
-def _opaque(what):
-    def build(interp, args, node):
-        return Opaque(note=f'{what}; not analysed',
-                      **_common(interp, args, node))
-    return build
-
-
-def _ignored(interp, args, node):
-    return Ignored(location=interp.loc(node))
-
-
-def _event_handler(keyword, what):
-    def build(interp, args, node):
-        value = args.get(None, keyword)
-        if isinstance(value, _Function) or value is None:
-            return _EventHandler([UnknownValue(
-                f'{interp.loc(node)}: actions of {what} not known '
-                'statically')], what)
-        return _EventHandler(_entities(interp, value, node), what)
-    return build
-
-
-def _register_event_handler(interp, args, node):
-    handler = args.get(0, 'event_handler')
-    if not isinstance(handler, _EventHandler):
-        return interp.unknown(node, 'event handler not understood')
-    common = _common(interp, args, node)
-    common['notes'] = common['notes'] + [
-        f'{interp.loc(node)}: started by an event handler ({handler.what})']
-    return Group(actions=handler.actions, scoped=False, **common)
-
-
-def _launch_configuration(interp, args, node):
-    return LaunchConfig(_text_value(args.get(0, 'variable_name')),
-                        _text_value(args.get(1, 'default')))
-
-
-def _text_substitution(interp, args, node):
-    text = args.get(0, 'text', default='')
-    return text if isinstance(text, str) else _text_value(text)
-
-
-def _path_join(interp, args, node):
-    parts = args.get(0, 'substitutions')
-    if not isinstance(parts, (list, tuple)):
-        return interp.unknown(node, 'PathJoinSubstitution of a value not '
-                              'known statically')
-    return PathJoin([_text_value(p) for p in parts])
-
-
-def _package_path(kind):
-    def build(interp, args, node):
-        return PackagePath(_text_value(args.get(0, 'package')), kind)
-    return build
-
-
-def _package_directory(kind):
-    def build(interp, args, node):
-        package = args.get(0, 'package_name')
-        if not isinstance(package, str):
-            return interp.unknown(node, 'package name not known statically')
-        try:
-            return interp.loader.find_package(package, kind)
-        except Unresolved as e:
-            return interp.unknown(node, str(e))
-    return build
-
-
-def _environment_variable(interp, args, node):
-    return EnvVar(_text_value(args.get(0, 'name')),
-                  _text_value(args.get(1, 'default_value')))
-
-
-def _python_expression(interp, args, node):
-    value = args.get(0, 'expression')
-    return PyExpr(list(value) if isinstance(value, (list, tuple))
-                  else [value])
-
-
-def _this_file(directory):
-    def build(interp, args, node):
-        return ThisFile(directory)
-    return build
-
-
-def _not_static(what):
-    def build(interp, args, node):
-        return interp.unknown(node, f'{what} is only known at run time')
-    return build
-
-
-def _anon_name(interp, args, node):
-    name = args.get(0, 'name')
-    if not isinstance(name, str):
-        return interp.unknown(node, 'AnonName of a value not known')
-    return UnknownValue(f'{interp.loc(node)}: AnonName({name!r}) is a '
-                        'unique name chosen at run time')
-
-
-def _bool_sub(op):
-    def build(interp, args, node):
-        return BoolOp(op, [_text_value(a) for a in args.args] +
-                      [_text_value(v) for v in args.kwargs.values()])
-    return build
-
-
-def _condition(kind):
-    def build(interp, args, node):
-        return Cond(kind, [_text_value(args.get(0, 'predicate_expression'))])
-    return build
-
-
-def _config_equals(kind):
-    def build(interp, args, node):
-        return Cond(kind, [_text_value(args.get(0, 'launch_configuration_'
-                                                'name')),
-                           _text_value(args.get(1, 'expected_value'))])
-    return build
-
-
-def _parameter_file(interp, args, node):
-    allow = args.get(1, 'allow_substs', default=False)
-    return _ParameterFile(_text_value(args.get(0, 'param_file')),
-                          allow is True)
-
-
-def _parameter_value(interp, args, node):
-    value = args.get(0, 'value')
-    value_type = args.get(None, 'value_type')
-    if isinstance(value_type, _Ref) and value_type.qualname == \
-            'builtins.str':
-        return TypedValue(_text_value(value))
-    return _text_value(value)
-
-
-_LAUNCH_API = {
-    'LaunchDescription': _launch_description,
-    'DeclareLaunchArgument': _declare,
-    'SetLaunchConfiguration': _set_configuration,
-    'Node': _node,
-    'LifecycleNode': _node,
-    'ComposableNodeContainer': _container,
-    'ComposableNode': _composable,
-    'LoadComposableNodes': _load_composables,
-    'IncludeLaunchDescription': _include,
-    'PythonLaunchDescriptionSource': _source_of,
-    'XMLLaunchDescriptionSource': _source_of,
-    'YAMLLaunchDescriptionSource': _source_of,
-    'AnyLaunchDescriptionSource': _source_of,
-    'FrontendLaunchDescriptionSource': _source_of,
-    'GroupAction': _group,
-    'TimerAction': _timer,
-    'PushRosNamespace': _push_namespace,
-    'PushROSNamespace': _push_namespace,
-    'SetRemap': _set_remap,
-    'SetParameter': _set_parameter,
-    'SetEnvironmentVariable': _set_env,
-    'UnsetEnvironmentVariable': _unset_env,
-    'ExecuteProcess': _opaque('ExecuteProcess runs a process that is not a '
-                              'ROS node description'),
-    'OpaqueFunction': _opaque('OpaqueFunction runs Python code at launch '
-                              'time'),
-    'SetParametersFromFile': _opaque('SetParametersFromFile'),
-    'LogInfo': _ignored,
-    'EmitEvent': _ignored,
-    'Shutdown': _ignored,
-    'RegisterEventHandler': _register_event_handler,
-    'OnProcessStart': _event_handler('on_start', 'OnProcessStart'),
-    'OnProcessExit': _event_handler('on_exit', 'OnProcessExit'),
-    'OnExecutionComplete': _event_handler('on_completion',
-                                          'OnExecutionComplete'),
-    'OnShutdown': _event_handler('on_shutdown', 'OnShutdown'),
-    'LaunchConfiguration': _launch_configuration,
-    'TextSubstitution': _text_substitution,
-    'PathJoinSubstitution': _path_join,
-    'FindPackageShare': _package_path('share'),
-    'FindPackagePrefix': _package_path('prefix'),
-    'get_package_share_directory': _package_directory('share'),
-    'get_package_prefix': _package_directory('prefix'),
-    'EnvironmentVariable': _environment_variable,
-    'PythonExpression': _python_expression,
-    'ThisLaunchFileDir': _this_file(True),
-    'ThisLaunchFile': _this_file(False),
-    'Command': _not_static('the output of Command'),
-    'FindExecutable': _not_static('FindExecutable'),
-    'ExecutableInPackage': _not_static('ExecutableInPackage'),
-    'AnonName': _anon_name,
-    'NotSubstitution': _bool_sub('not'),
-    'AndSubstitution': _bool_sub('and'),
-    'OrSubstitution': _bool_sub('or'),
-    'EqualsSubstitution': _bool_sub('equals'),
-    'NotEqualsSubstitution': _bool_sub('not_equals'),
-    'IfElseSubstitution': _bool_sub('if_else'),
-    'IfCondition': _condition('if'),
-    'UnlessCondition': _condition('unless'),
-    'LaunchConfigurationEquals': _config_equals('equals'),
-    'LaunchConfigurationNotEquals': _config_equals('not_equals'),
-    'ParameterFile': _parameter_file,
-    'ParameterValue': _parameter_value,
-}
