@@ -2,6 +2,8 @@
 # Licensed under the Apache License, Version 2.0
 """The command-line options the rsia subverbs share."""
 
+from colcon_core.argument_default import wrap_default_value
+from colcon_core.argument_type import get_cwd_path_resolver
 from colcon_core.package_selection import add_arguments \
     as add_packages_arguments
 from colcon_rsia.system.impact import MODELS
@@ -10,10 +12,13 @@ from colcon_rsia.system.impact import PAPER
 
 def add_workspace_arguments(parser):
     """Add --build-base and colcon's package selection arguments."""
-    # the summaries live in the build directory of each package
+    # the summaries live in the build directory of each package; declared
+    # as colcon build declares it (a relative path is taken from the
+    # current directory, and a defaults.yaml value is told from a given one)
     parser.add_argument(
         '--build-base',
-        default='build',
+        default=wrap_default_value('build'),
+        type=get_cwd_path_resolver(),
         help='The base path for all build directories, where the analysis '
              'summaries are (default: build)')
     add_packages_arguments(parser)
