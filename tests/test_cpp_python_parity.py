@@ -18,7 +18,9 @@ import pytest
 # calls would be a root of its own)
 CPP = """#include <ros/ros.h>
 #include <std_msgs/String.h>
+#include <functional>
 #include <stdexcept>
+#include <thread>
 
 void onIn(const std_msgs::String::ConstPtr&) {{}}
 ros::Publisher pub;
@@ -38,6 +40,9 @@ int main(int argc, char** argv) {{
 """
 
 PY = """#!/usr/bin/env python3
+import functools
+import threading
+
 import rospy
 from std_msgs.msg import String
 
@@ -210,6 +215,32 @@ PATTERNS = {
                 continue
             publish_one()
         rate.sleep()""", INDEPENDENT_RATE_LOOP),
+    'rate_loop_in_a_thread': ("""
+  std::thread worker([&rate]() {
+    while (ros::ok()) {
+      publishOne();
+      rate.sleep();
+    }
+  });
+  ros::spin();
+  worker.join();""", """
+    def loop():
+        while not rospy.is_shutdown():
+            publish_one()
+            rate.sleep()
+
+    worker = threading.Thread(target=loop)
+    worker.start()
+    rospy.spin()
+    worker.join()""", INDEPENDENT_RATE_LOOP),
+    'timer_callback_through_bind': ("""
+  ros::Timer timer = nh.createTimer(ros::Duration(0.1), std::bind(&publishOne));
+  ros::spin();""", """
+    def tick(count, event):
+        publish_one()
+
+    rospy.Timer(rospy.Duration(0.1), functools.partial(tick, 1))
+    rospy.spin()""", INDEPENDENT_TIMER),
     'publish_in_callback': ("""
   ros::Subscriber relay = nh.subscribe<std_msgs::String>(
       "relay_in", 1, [](const std_msgs::String::ConstPtr&) { publishOne(); });
