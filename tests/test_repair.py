@@ -163,6 +163,12 @@ def _lines(text):
     ("no member named 'Identity' in 'Eigen::Matrix<double, 3, 3>'",
      'auto m = Eigen::Matrix<double, 3, 3>::Identity();', 39,
      {('member', 'Eigen::Matrix::Identity')}),
+    ("no type named 'Ptr' in 'pcl::PointCloud<pcl::PointXYZ>'",
+     'pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;', 33,
+     {('member-type', 'pcl::PointCloud::Ptr')}),
+    ("no member named 'Ptr' in 'pcl::PointCloud<pcl::PointXYZ>'",
+     'pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new Cloud);', 33,
+     {('member-type', 'pcl::PointCloud::Ptr')}),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
@@ -608,3 +614,73 @@ def test_the_model_has_parameters_tf2_conversions_and_class_loaders(tmp_path):
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['goal']
+
+
+# a class of an unknown library brought in by a using-declaration, and a
+# nested pointer type of a class template (PCL's PointCloud<P>::Ptr)
+USING_AND_NESTED_TYPES = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <sensor_msgs/msg/point_cloud2.hpp>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <acme_vehicle/vehicle_info_utils.hpp>
+
+namespace braking
+{
+using acme::vehicle::VehicleInfo;
+
+class Braking : public rclcpp::Node
+{
+public:
+  Braking() : Node("braking")
+  {
+    sub_ = create_subscription<sensor_msgs::msg::PointCloud2>(
+      "points", 1, [this](sensor_msgs::msg::PointCloud2::ConstSharedPtr msg) {
+        pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+        pub_->publish(*msg);
+      });
+    pub_ = create_publisher<sensor_msgs::msg::PointCloud2>("obstacles", 1);
+  }
+
+private:
+  VehicleInfo vehicle_info_;
+  rclcpp::Subscription<sensor_msgs::msg::PointCloud2>::SharedPtr sub_;
+  rclcpp::Publisher<sensor_msgs::msg::PointCloud2>::SharedPtr pub_;
+};
+}  // namespace braking
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<braking::Braking>());
+}
+"""
+
+
+def test_using_declared_classes_and_nested_types_are_repaired(tmp_path):
+    package = tmp_path / 'braking'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'braking.cpp').write_text(USING_AND_NESTED_TYPES)
+    summary = analysis.analyze_package(
+        name='braking', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    # before: a global VehicleInfo beside vehicle_info_utils::VehicleInfo
+    # ('must use struct tag'), and Ptr declared as a value
+    assert unit.errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    [publisher] = node.publishers
+    assert (publisher.topic, publisher.label) == ('obstacles', 'dependent')
+
+
+def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):
+    # round 1 saw `VehicleInfo v;` before acme::vehicle existed (a global
+    # class), round 2 the class itself: under `using namespace acme::vehicle`
+    # both would be found and every use ambiguous
+    header = tmp_path / 'unit.h'
+    repair.add_repairs(str(header), 'unit.cpp', {('type', 'VehicleInfo')})
+    repair.add_repairs(str(header), 'unit.cpp', {
+        ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')})
+    assert repair.read_repairs(str(header)) == {
+        ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')}

@@ -48,6 +48,7 @@ _NOT_NAMESPACE = re.compile(
 _IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
 # (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
 _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(?:<.*>)?'$")
+_TYPE_IN_CLASS = re.compile(r"^no type named '(\w+)' in '([\w:]+)(?:<.*>)?'$")
 _INCOMPLETE = re.compile(
     r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
     r'^(?:member access into|variable has|field has) incomplete type '
@@ -87,6 +88,7 @@ MACRO_VOID = 'macro-void'          # FOO(...) at declaration level
 MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
 NO_OVERRIDE = 'no-override'        # `override` made a no-op
 MEMBER = 'member'                  # a static member of a type declared here
+MEMBER_TYPE = 'member-type'        # a nested type of a type declared here
 STD_HEADER = 'std-header'          # a standard header to include
 
 # when one name is asked for as several kinds, the first of these wins
@@ -203,7 +205,7 @@ _shared_lock = threading.Lock()
 def _shareable(repair):
     kind, name = repair
     return kind == STD_HEADER or kind.startswith('macro-') or (
-        '::' in name and kind != MEMBER)
+        '::' in name and kind not in (MEMBER, MEMBER_TYPE))
 
 
 def share_repairs(header, repairs):
@@ -285,15 +287,25 @@ def _one_kind_each(repairs):
             chosen[name] = (kind, name)
     classes = {name for kind, name in chosen.values()
                if _base_kind(kind) in (TYPE, TEMPLATE)}
+    # a class the code also names qualified (`using ns::VehicleInfo;`, or a
+    # `using namespace` seen before the namespace was declared) is that
+    # class: a global one of the same name would make every use ambiguous
+    qualified = {name.rsplit('::', 1)[1] for name in classes if '::' in name}
     result = set()
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
-        if owner in classes and kind not in (MEMBER, STD_HEADER):
-            kind = MEMBER
+        if owner in classes and kind not in (MEMBER, MEMBER_TYPE, STD_HEADER):
+            kind = MEMBER_TYPE if _base_kind(kind) in (TYPE, TEMPLATE) \
+                else MEMBER
         elif any(name.startswith(c + '::') for c in classes if c != owner):
             continue  # deeper inside a class: not declarable from outside
+        elif owner is None and name in qualified and \
+                _base_kind(kind) in (TYPE, TEMPLATE):
+            continue
         result.add((kind, name))
-    return result
+    # a member used as a type is a nested type
+    return {(kind, name) for kind, name in result
+            if kind != MEMBER or (MEMBER_TYPE, name) not in result}
 
 
 def _declared(name, declared):
@@ -352,11 +364,20 @@ def _uses_of_namespace(namespace, texts):
             name, member, after = match.groups()
             if name in _KEYWORDS or name == 'template':
                 continue
-            after = '::' if member else after.lstrip()
-            kind, _ = _by_use(name, after, unqualified=False)
+            rest = after.lstrip()
+            kind, _ = _by_use(name, '::' if member else rest,
+                              unqualified=False)
+            if kind == CONSTANT and _CAMEL.match(name) and \
+                    _USING_DECLARATION.search(
+                        text[max(0, match.start() - 200):match.start()]):
+                kind = TYPE
             found.add((kind, f'{namespace}::{name}'))
             if member and kind == TYPE and member not in _KEYWORDS:
-                found.add((MEMBER, f'{namespace}::{name}::{member}'))
+                # `ns::Grid::Ptr grid` names a nested type
+                nested = _by_use(member, rest, unqualified=False)[0] == TYPE \
+                    and re.match(r'(?:[&*]\s*)?[A-Za-z_]', rest)
+                found.add((MEMBER_TYPE if nested else MEMBER,
+                           f'{namespace}::{name}::{member}'))
     return found
 
 
@@ -409,8 +430,17 @@ def _repairs(diagnostics, read_line):
             continue
         match = _IN_CLASS.match(message)
         if match:
-            # a member of a class we declared (added only if we did)
-            repairs.add((MEMBER, f'{match.group(2)}::{match.group(1)}'))
+            # a member of a class we declared (added only if we did); one
+            # followed by a name declares a variable: a nested type
+            nested = _CAMEL.match(match.group(1)) and \
+                re.match(r'(?:[&*]\s*)?[A-Za-z_]', after)
+            repairs.add((MEMBER_TYPE if nested else MEMBER,
+                         f'{match.group(2)}::{match.group(1)}'))
+            continue
+        match = _TYPE_IN_CLASS.match(message)
+        if match:
+            # pcl::PointCloud<P>::Ptr: a nested type, likewise
+            repairs.add((MEMBER_TYPE, f'{match.group(2)}::{match.group(1)}'))
             continue
         match = _IN_NAMESPACE.match(message)
         if match:
@@ -422,6 +452,9 @@ def _repairs(diagnostics, read_line):
                 kind = _template_kind(after)
             else:
                 kind = _by_use(name, after, unqualified=False)[0]
+                if kind == CONSTANT and _CAMEL.match(name) and \
+                        _USING_DECLARATION.search(text[:max(0, column - 1)]):
+                    kind = TYPE
             repairs.add((kind, f'{namespace}::{name}'))
             continue
         match = _UNDEFINED_MACRO.match(message)
@@ -469,6 +502,11 @@ def _after(text, column, message):
     if found < 0:
         return ''
     return text[found + len(name):].lstrip()
+
+
+# what comes before `Name` in `using ns::Name;`: a CamelCase name a
+# using-declaration brings in is a class far more often than an enumerator
+_USING_DECLARATION = re.compile(r'\busing\s+(?:::\s*)?(?:\w+\s*::\s*)*$')
 
 
 def _template_kind(after):
@@ -569,13 +607,13 @@ def _render(repairs, source):
     constant_values = {}
     members = {}
     for kind, name in repairs:
-        if kind == MEMBER:
+        if kind in (MEMBER, MEMBER_TYPE):
             owner, member = name.rsplit('::', 1)
-            members.setdefault(owner, set()).add(member)
+            members.setdefault(owner, set()).add((kind, member))
     for kind, name in sorted(repairs):
         lines.append(f'// repair {kind} {name}')
         *namespaces, short = name.split('::')
-        if kind == MEMBER:
+        if kind in (MEMBER, MEMBER_TYPE):
             continue  # in its type's declaration
         if kind == STD_HEADER:
             lines.append(f'#include <{name}>')
@@ -595,8 +633,9 @@ def _render(repairs, source):
         elif _base_kind(kind) in (TYPE, TEMPLATE):
             head = _template_head(kind) if kind != TYPE else ''
             body = ''.join(
-                f' static ::rsia_model::Any {m};'
-                for m in sorted(members.get(name, ())))
+                f' static ::rsia_model::Any {m};' if k == MEMBER
+                else f' using {m} = ::rsia_model::Unknown;'
+                for k, m in sorted(members.get(name, ())))
             body = (f'{head}struct {short} : ::rsia_model::Unknown '
                     f'{{ using ::rsia_model::Unknown::Unknown; '
                     f'using ::rsia_model::Unknown::operator=;{body} }};')
