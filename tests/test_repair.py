@@ -684,3 +684,68 @@ def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):
         ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')})
     assert repair.read_repairs(str(header)) == {
         ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')}
+
+
+# the field typedefs of ROS 2 message classes
+FIELD_TYPES = r"""
+#include <map>
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <diagnostic_msgs/msg/diagnostic_array.hpp>
+#include <diagnostic_msgs/msg/diagnostic_status.hpp>
+
+using diagnostic_msgs::msg::DiagnosticArray;
+using diagnostic_msgs::msg::DiagnosticStatus;
+using DiagnosticLevel = DiagnosticStatus::_level_type;
+using ArrayLevel = DiagnosticArray::_status_type::value_type::_level_type;
+
+class Monitor : public rclcpp::Node
+{
+public:
+  Monitor() : Node("monitor")
+  {
+    pub_ = create_publisher<DiagnosticStatus>("worst", 1);
+    sub_ = create_subscription<DiagnosticArray>(
+      "diagnostics", 1, [this](DiagnosticArray::ConstSharedPtr msg) {
+        DiagnosticLevel worst = DiagnosticStatus::OK;
+        for (const auto & status : msg->status) {
+          ArrayLevel level = status.level;
+          if (level > worst) {
+            worst = level;
+          }
+        }
+        names_[worst] = "worst";
+        DiagnosticStatus out;
+        out.level = worst;
+        pub_->publish(out);
+      });
+  }
+
+private:
+  std::map<DiagnosticLevel, std::string> names_;
+  rclcpp::Publisher<DiagnosticStatus>::SharedPtr pub_;
+  rclcpp::Subscription<DiagnosticArray>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+
+def test_message_field_types_are_declared(tmp_path):
+    package = tmp_path / 'monitor'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'monitor.cpp').write_text(FIELD_TYPES)
+    summary = analysis.analyze_package(
+        name='monitor', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [unit] = summary.coverage.units
+    # before: "no type named '_level_type' in DiagnosticStatus_<...>"
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    [node] = summary.nodes
+    [publisher] = node.publishers
+    assert (publisher.topic, publisher.label) == ('worst', 'dependent')

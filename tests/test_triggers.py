@@ -8,6 +8,7 @@ test_workspaces/triggers/src/trig_nodes/src (see the EXPECT comments there).
 
 import json
 
+from colcon_rsia.package import analysis
 from colcon_rsia.package.store import find_summaries
 from colcon_rsia.package.store import read_summary
 from colcon_rsia.subverb.rates import parse_set_rates
@@ -278,3 +279,48 @@ def test_no_summary_triggers_means_every_input(system):
     old = replace(entry['publisher'], triggers=None)
     from colcon_rsia.system.graph import resolve_triggers
     assert resolve_triggers(instance, old) == [('*', None)]
+
+
+# the classic talker: no inputs, a ros::Rate loop of 10 Hz
+TALKER = r"""
+#include "ros/ros.h"
+#include "std_msgs/String.h"
+#include <sstream>
+
+int main(int argc, char **argv)
+{
+  ros::init(argc, argv, "talker");
+  ros::NodeHandle n;
+  ros::Publisher chatter_pub = n.advertise<std_msgs::String>("chatter", 1000);
+  ros::Rate loop_rate(10);
+  int count = 0;
+  while (ros::ok())
+  {
+    std_msgs::String msg;
+    std::stringstream ss;
+    ss << "hello world " << count;
+    msg.data = ss.str();
+    chatter_pub.publish(msg);
+    ros::spinOnce();
+    loop_rate.sleep();
+    ++count;
+  }
+  return 0;
+}
+"""
+
+
+def test_a_talker_without_inputs_has_the_rate_of_its_loop(tmp_path):
+    package = tmp_path / 'talk'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'talker.cpp').write_text(TALKER)
+    summary = analysis.analyze_package(
+        name='talk', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [node] = summary.nodes
+    [publisher] = node.publishers
+    # independent because the node has no inputs; before, rate_hz was null
+    # for every no_subscribers publisher
+    assert (publisher.label, publisher.pattern, publisher.rate_hz) == (
+        'independent', 'no_subscribers', 10.0)
+    assert (publisher.paced_rate_hz, publisher.paced_by) == (10.0, 'rate_loop')

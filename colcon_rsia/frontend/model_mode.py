@@ -74,6 +74,8 @@ COMMENT_OR_STRING = re.compile(
     re.DOTALL)
 _MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)')
 _CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*)\b')
+# the type of a ROS 2 message field: DiagnosticStatus::_level_type
+_FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')
 _ROS2_MSGS_TYPE = re.compile(
     r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*msg\s*::\s*([A-Z][A-Za-z0-9]*)\b')
@@ -442,17 +444,19 @@ def _code_only(text):
 
 
 def _used_names(codes):
-    """(member names, constant names, {pkg: {include}} of *_msgs types).
+    """(members, constants, field types, {pkg: {include}} of *_msgs types).
 
     The include is the message's header: ``std_msgs/Header.h`` (ROS 1) or
     ``std_msgs/msg/header.hpp`` (ROS 2).
     """
     members = set()
     constants = set()
+    field_types = set()
     msgs_types = {}
     for code in codes:
         members.update(m.group(1) for m in _MEMBER.finditer(code))
         constants.update(m.group(1) for m in _CONSTANT.finditer(code))
+        field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):
             name = re.sub(r'(?:ConstPtr|Ptr)$', '', m.group(2))
             if name:
@@ -463,7 +467,7 @@ def _used_names(codes):
                 f'{m.group(1)}/msg/{_snake_case(m.group(2))}.hpp')
     members = {n for n in members if _member_ok(n)}
     constants = {n for n in constants if _member_ok(n)} - members
-    return members, constants, msgs_types
+    return members, constants, field_types - members, msgs_types
 
 
 def _std_defines(codes):
@@ -511,7 +515,7 @@ def _write_stand_ins(scanner, codes, stub_dir):
     :returns: (the extra include dirs, the namespaces of unknown includes
       that the TU declares itself)
     """
-    members, constants, msgs_types = _used_names(codes)
+    members, constants, field_types, msgs_types = _used_names(codes)
     stubs = {}   # include name -> content
     for name, kind in sorted(scanner.missing.items()):
         if kind == 'empty':
@@ -547,7 +551,7 @@ def _write_stand_ins(scanner, codes, stub_dir):
         for namespace, names in unknown.items():
             _merge_unknown(stub_dir, namespace, names)
         _merge_implicit(stub_dir, implicit)
-        _merge_fields(stub_dir, members, constants)
+        _merge_fields(stub_dir, members, constants, field_types)
     return sorted(up_dirs), own
 
 
@@ -601,26 +605,33 @@ def write_atomically(path, content):
     safe_files.write_text_atomically(path, content, errors='surrogateescape')
 
 
-def _merge_fields(stub_dir, members, constants):
-    """Grow rsia_model/fields.h to hold these member and constant names."""
+def _merge_fields(stub_dir, members, constants, field_types=()):
+    """Grow rsia_model/fields.h to hold these member, constant, type names."""
     path = os.path.join(stub_dir, FIELDS_HEADER)
     old = _read_text(path) or ''
     if not old.startswith(_STUB_MARKER):
         old = ''
     old_members = set(re.findall(r'RSIA_MODEL_FIELD\((\w+)\)', old))
     old_constants = set(re.findall(r'RSIA_MODEL_CONSTANT\((\w+),', old))
+    old_types = set(re.findall(r'RSIA_MODEL_FIELD_TYPE\((\w+)\)', old))
     if old and members <= old_members and \
-            constants <= old_constants | old_members:
+            constants <= old_constants | old_members and \
+            set(field_types) <= old_types | old_members:
         return
     all_members = sorted(old_members | members)
     all_constants = sorted((old_constants | constants) - set(all_members))
+    all_types = sorted((old_types | set(field_types)) - set(all_members))
     lines = [
         f'{_STUB_MARKER} kind=fields',
-        '// the member names used after `.` / `->` in the analysed sources and',
-        '// the `Type::CONSTANT` names; included twice by rsia_model/message.h',
-        '// (no include guard), a name that is a macro there is left out']
+        '// the member names used after `.` / `->` in the analysed sources,',
+        '// the `Type::CONSTANT` names and the `Type::_field_type` names;',
+        '// included twice by rsia_model/message.h (no include guard), a name',
+        '// that is a macro there is left out']
     for name in all_members:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD({name})', '#endif']
+    for name in all_types:
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TYPE({name})',
+                  '#endif']
     # distinct values: constants may be `case` labels of one switch
     for i, name in enumerate(all_constants):
         lines += [f'#ifndef {name}', f'RSIA_MODEL_CONSTANT({name}, {i + 1})',

@@ -146,13 +146,15 @@ def label_publishers(facts):
                 'no_subscribers', publisher.location,
                 'the node has no subscriber, service or action server'))
             # its own pacing still sets its rate (`colcon rsia rates`)
-            paced = _label_sites(
+            paced = _paced_rate(sites, *_label_sites(
                 sites, facts, roots, is_paced, unpaced_from_others,
-                bad_parents, from_timers, from_others, callers_of, [])
+                bad_parents, from_timers, from_others, callers_of, []))
+            # the rate is its pacing's (a talker's `ros::Rate loop(10)`)
             labelled.append(model.LabelledPublisher(
                 label=model.INDEPENDENT,
-                pattern=model.PATTERN_NO_SUBSCRIBERS, rate_hz=None,
-                evidence=evidence, **base, **_paced_rate(sites, *paced)))
+                pattern=model.PATTERN_NO_SUBSCRIBERS,
+                rate_hz=paced.get('paced_rate_hz'),
+                evidence=evidence, **base, **paced))
             continue
         if not sites:
             evidence.append(model.Evidence(

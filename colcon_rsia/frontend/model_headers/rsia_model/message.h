@@ -114,6 +114,8 @@ RSIA_MODEL_ITERATOR_COMPARE_(<=)
 RSIA_MODEL_ITERATOR_COMPARE_(>=)
 #undef RSIA_MODEL_ITERATOR_COMPARE_
 
+struct AnyValue;
+
 struct Any
 {
   Any& operator=(const Any&);
@@ -167,9 +169,11 @@ struct Any
 #ifdef RSIA_MODEL_HAVE_FIELDS
 #define RSIA_MODEL_FIELD(name) static Any name;
 #define RSIA_MODEL_CONSTANT(name, value)
+#define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
 #undef RSIA_MODEL_CONSTANT
+#undef RSIA_MODEL_FIELD_TYPE
 #endif
 };
 
@@ -233,6 +237,18 @@ struct AnyElement : Any
   operator RsiaV&() const;
 };
 
+// The type of a field (`DiagnosticStatus::_level_type level = ...`, a
+// ROS 2 message's typedef): a value made from anything, used as a field is;
+// `_status_type::value_type` (an element of a sequence field) is one too.
+struct AnyValue : Any
+{
+  using value_type = AnyValue;
+  AnyValue();
+  template <class RsiaV>
+  AnyValue(const RsiaV&);
+  using Any::operator=;
+};
+
 // `std::cout << msg.x << std::endl`
 Any operator<<(const Any&, std::ostream& (*)(std::ostream&));
 
@@ -243,9 +259,11 @@ struct Fields
 #ifdef RSIA_MODEL_HAVE_FIELDS
 #define RSIA_MODEL_FIELD(name) Any name;
 #define RSIA_MODEL_CONSTANT(name, value) static constexpr int name = value;
+#define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
 #undef RSIA_MODEL_CONSTANT
+#undef RSIA_MODEL_FIELD_TYPE
 #endif
 };
 
