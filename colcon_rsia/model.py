@@ -46,6 +46,12 @@ ROOT_ACTION = 'action'
 ROOT_ENTRY = 'entry'  # a function nobody calls: entered from outside
 
 
+# the mark of a NodeHandle namespace the code builds from a value the
+# analysis does not know (`ros::NodeHandle nh(real_name)`), followed by the
+# expression as written: names relative to it are not resolved
+UNKNOWN_NAMESPACE = '?'
+
+
 @dataclass
 class Function:
     """A function, method, constructor or lambda with a body."""

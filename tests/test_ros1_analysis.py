@@ -5,6 +5,9 @@
 import json
 import re
 
+from colcon_rsia.package.store import read_summary
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.load import load_system
 from conftest import run_colcon
 from conftest import WORKSPACES
 from projection import check_evidence
@@ -88,6 +91,8 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         'rsia_drivers/camera_driver': 'camera_driver',
         'rsia_localization/odom_tf_broadcaster': 'odom_tf_broadcaster',
         'rsia_localization/tf_monitor': 'tf_monitor',
+        'rsia_localization/pose_options_relay': 'pose_options_relay',
+        'rsia_localization/named_handles': 'named_handles',
         'rsia_nodelets/ScanThrottle': None,
         'rsia_perception/scan_relay': 'scan_relay',
         'rsia_perception/image_processor': 'image_processor',
@@ -98,3 +103,21 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         summary = ros1_workspace.summary(_expected(path)['package'])
         names.update({n['id']: n['name'] for n in summary['nodes']})
     assert names == expected
+
+
+def test_namespaces_from_values_resolve_or_stay_unknown(ros1_workspace):
+    # written from src/rsia_localization/src/named_handles.cpp
+    summary = ros1_workspace.summary('rsia_localization')
+    system = graph_to_json(load_system([read_summary(str(
+        ros1_workspace.build_base / 'rsia_localization' / 'rsia' /
+        'summary.json'))]))
+    [node] = [n for n in system['nodes']
+              if n['id'] == 'rsia_localization/named_handles']
+    resolved = {p['topic']: p['resolved'] for p in node['publishers']}
+    resolved.update({s['topic']: s['resolved'] for s in node['subscribers']})
+    # a string variable set once is its literal; a constructor argument
+    # from the command line is not known: not a name in the root namespace
+    assert resolved == {'pose': '/turtle1/pose', 'status': None, 'cmd': None}
+    notes = [d for d in summary['diagnostics'] if 'named_handles.cpp' in d]
+    assert len(notes) == 2 and all(
+        'note:' in n and "'name'" in n for n in notes), notes

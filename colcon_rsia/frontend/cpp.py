@@ -8,6 +8,7 @@ A ROS call is recognised by the qualified name of the declaration it calls,
 looked up in :mod:`colcon_rsia.frontend.ros_api`.
 """
 
+import dataclasses
 import os
 import re
 
@@ -19,6 +20,7 @@ from colcon_rsia.frontend.const_eval import evaluate_number
 from colcon_rsia.frontend.const_eval import is_chrono_duration
 from colcon_rsia.frontend.const_eval import source_tokens
 from colcon_rsia.frontend.every_nth import every_nth
+from colcon_rsia.model import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
 
@@ -237,6 +239,9 @@ def first_handle(cursor):
 
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
 
+# the option objects roscpp's subscribe/advertise also take
+_OPTIONS_TYPES = frozenset({'ros::SubscribeOptions', 'ros::AdvertiseOptions'})
+
 
 def first_function(cursor):
     """The function a callable expression names (``&C::f``, ``f``)."""
@@ -304,8 +309,12 @@ def _explicit_template_type(call):
     candidates = [callee] + _children(callee)
     if callee.kind == CK.UNEXPOSED_EXPR and _children(callee):
         candidates += _children(_children(callee)[0])
+    # not the class of a static member (`ros::SubscribeOptions::create<M>`)
+    owner = call.referenced.semantic_parent \
+        if call.referenced is not None else None
     for child in candidates:
-        if child.kind == CK.TYPE_REF:
+        if child.kind == CK.TYPE_REF and not (
+                owner is not None and same_cursor(child.referenced, owner)):
             return child.type.spelling or child.spelling
     return None
 
@@ -332,6 +341,8 @@ class _Walker:
         self._string_written = set()
         # (service fact, variable its name is read from)
         self._named_by_variable = []
+        # NodeHandles made from a string variable: (fact, its USR)
+        self._namespaced_by_variable = []
         # declarations whose walk failed: one line each, the rest goes on
         self.problems = []
 
@@ -427,6 +438,8 @@ class _Walker:
                 fact.topic_handle = None
         for fact, handle in self._named_by_variable:
             fact.name = value(handle) or fact.name
+        for fact, handle in self._namespaced_by_variable:
+            fact.namespace = value(handle) or fact.namespace
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
@@ -941,6 +954,7 @@ class _Walker:
     def _on_publisher(self, cursor, ctx, stack, api, name, arguments):
         if self._wrapped_publisher(cursor, stack, api, arguments):
             return
+        typed, api, arguments = self._with_options(cursor, api, arguments)
         topic, literal = self._topic(self._argument(arguments, api.name_arg))
         if topic is None and name.endswith('::init'):
             return
@@ -948,7 +962,7 @@ class _Walker:
             return  # a default constructor: the topic comes with init()
         msg_type = self._table_msg_type(api.msg_type) or \
             self._type_name(arguments, api) or \
-            self._template_msg_type(cursor, name)
+            self._template_msg_type(typed, name)
         target = self._target(cursor, stack)
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
@@ -1047,7 +1061,53 @@ class _Walker:
         package, _, name = msg_type.partition('::')
         return f'{package}::msg::{name}'
 
+    def _options_call(self, argument):
+        """The create()/init() call that filled a ros::*Options object.
+
+        ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` take the topic, the
+        message type and the callback from ``ops =
+        ros::SubscribeOptions::create<M>(topic, queue, callback, ...)`` or
+        from ``ops.init<M>(topic, queue, callback)`` in the same function.
+        """
+        if argument is None:
+            return None
+        options = re.sub(r'^const |\s*&$', '',
+                         argument.type.get_canonical().spelling)
+        if options not in _OPTIONS_TYPES:
+            return None
+        handle = first_handle(argument)
+        if handle is None:
+            return None
+        fillers = {f'{options}::create', f'{options}::init'}
+        found = None
+        scopes = [handle] + ([handle.semantic_parent]
+                             if handle.kind == CK.VAR_DECL else [])
+        for scope in scopes:
+            for node in _walk_preorder(scope):
+                if node.kind != CK.CALL_EXPR or node.referenced is None or \
+                        qualified_name(node.referenced) not in fillers:
+                    continue
+                if scope is handle or same_cursor(
+                        first_handle(_call_object(node)), handle):
+                    found = node  # the last one written wins
+            if found is not None:
+                return found
+        return None
+
+    def _with_options(self, cursor, api, arguments):
+        """(call with the endpoint's arguments, api, arguments)."""
+        options = self._options_call(self._argument(arguments, api.name_arg))
+        if options is None:
+            return cursor, api, arguments
+        # create/init(topic, queue_size, callback, ...): a subscription's
+        # callback is the third argument, an advertisement has none
+        return options, dataclasses.replace(
+            api, name_arg=0,
+            callback_arg=2 if api.callback_arg is not None else None), \
+            list(options.get_arguments())
+
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
+        typed, api, arguments = self._with_options(cursor, api, arguments)
         topic, literal = self._topic(self._argument(arguments, api.name_arg))
         if topic is None:
             return  # a default-constructed message_filters::Subscriber
@@ -1059,7 +1119,7 @@ class _Walker:
             msg_type = self._type_name(arguments, api)
         else:
             msg_type = self._table_msg_type(api.msg_type) or \
-                self._template_msg_type(cursor, name) or \
+                self._template_msg_type(typed, name) or \
                 self._argument_msg_type(arguments, api) or \
                 self._callback_msg_type(declaration)
         target = self._target(cursor, stack)
@@ -1296,16 +1356,32 @@ class _Walker:
             return
         namespace = ''
         written = _written(arguments)
-        parent = first_handle(written[0]) if written else None
+        named = written and _is_string(written[0])
+        parent = first_handle(written[0]) if written and not named else None
         if parent is not None:
             namespace = 'ref:' + parent.get_usr()
             if len(written) > 1:
-                sub, _ = self._topic(written[1])
-                namespace += '|' + (sub or '')
-        elif written:
-            # ImageTransport(shared_from_this()): a node, not a namespace
+                # NodeHandle(parent, "arm"); a sub-namespace not known
+                # is marked so
+                sub, literal = self._topic(written[1])
+                namespace += '|' + (
+                    sub if literal else UNKNOWN_NAMESPACE + (sub or '?'))
+        elif named:
+            # ros::NodeHandle nh("arm") / nh(real_name): a string variable
+            # set once is its literal (see _resolve_string_names); a name
+            # not known is marked so, never taken for the node's namespace
             namespace, literal = self._topic(written[0])
-            namespace = namespace if literal else ''
+            if not literal:
+                variable = first_handle(written[0])
+                namespace = UNKNOWN_NAMESPACE + (namespace or '?')
+                if variable is not None:
+                    fact = model.NodeHandleFact(
+                        handle=target.get_usr(), namespace=namespace)
+                    self._namespaced_by_variable.append(
+                        (fact, variable.get_usr()))
+                    self.facts.node_handles.append(fact)
+                    return
+        # (ImageTransport(shared_from_this()): a node, not a namespace)
         self.facts.node_handles.append(model.NodeHandleFact(
             handle=target.get_usr(), namespace=namespace or ''))
 

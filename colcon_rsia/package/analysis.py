@@ -149,11 +149,28 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         name=name, path=path, build_base=build_base, units=units)
     summary.coverage = _coverage(path, units, summary.nodes)
     summary.header_mode = header_mode
-    summary.diagnostics = diagnostics + summary.diagnostics
+    summary.diagnostics = diagnostics + summary.diagnostics + \
+        _unknown_namespace_notes(summary.nodes)
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
     store.write_summary(build_base, summary)
     return summary
+
+
+def _unknown_namespace_notes(nodes):
+    """One note per endpoint named relative to a namespace not known."""
+    notes = []
+    for node in nodes:
+        for endpoint in node.publishers + node.subscribers:
+            namespace = endpoint.namespace or ''
+            if namespace.startswith(model.UNKNOWN_NAMESPACE) and \
+                    not (endpoint.topic or '').startswith(('/', '~')):
+                notes.append(
+                    f'{endpoint.location}: note: {endpoint.topic!r} is '
+                    f'relative to the NodeHandle namespace '
+                    f'{namespace[len(model.UNKNOWN_NAMESPACE):]!r}, whose '
+                    f'value the analysis does not know: not connected')
+    return sorted(set(notes))
 
 
 def _coverage(path, units, nodes):

@@ -145,7 +145,8 @@ def package_report(summary):
         for node in summary.nodes
         for role, endpoints in ((PUBLISHER, node.publishers),
                                 (SUBSCRIBER, node.subscribers))
-        for endpoint in endpoints if not endpoint.topic_is_literal]
+        for endpoint in endpoints if not endpoint.topic_is_literal or
+        (endpoint.namespace or '').startswith(model.UNKNOWN_NAMESPACE)]
     report['unnamed_nodes'] = sorted(
         node.id for node in summary.nodes if not node.name)
     return report

@@ -242,8 +242,10 @@ def resolve_namespace(facts, marker, depth=0):
         base = resolve_namespace(facts, parent, depth + 1)
         if not sub:
             return base
-        if sub.startswith('/') or not base:
+        if sub.startswith(('/', model.UNKNOWN_NAMESPACE)) or not base:
             return sub
+        if base.startswith(model.UNKNOWN_NAMESPACE):
+            return base
         return f'{base}/{sub}'
     if marker in facts.namespaces:
         return resolve_namespace(facts, facts.namespaces[marker], depth + 1)

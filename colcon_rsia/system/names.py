@@ -9,6 +9,8 @@ private to the node, and a remap replaces a resolved name by another; both
 sides of a remap are resolved in the node's namespace.
 """
 
+from colcon_rsia.model import UNKNOWN_NAMESPACE
+
 
 def join(namespace, name):
     """Join a namespace and a relative name into a normalised global name."""
@@ -43,6 +45,9 @@ def resolve(name, *, node_name, namespace='/', handle_namespace='',
     """
     if name is None or name == '':
         return None
+    if (handle_namespace or '').startswith(UNKNOWN_NAMESPACE) and \
+            not name.startswith(('/', '~')):
+        return None  # relative to a namespace the code computes
     namespace = namespace or '/'
     fqn = node_fqn(namespace, node_name)
     base = namespace
