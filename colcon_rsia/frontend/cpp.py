@@ -343,6 +343,8 @@ class _Walker:
         self._named_by_variable = []
         # NodeHandles made from a string variable: (fact, its USR)
         self._namespaced_by_variable = []
+        # endpoint facts whose topic is built by `+`: (fact, parts)
+        self._concatenated = []
         # declarations whose walk failed: one line each, the rest goes on
         self.problems = []
 
@@ -440,6 +442,13 @@ class _Walker:
             fact.name = value(handle) or fact.name
         for fact, handle in self._namespaced_by_variable:
             fact.namespace = value(handle) or fact.namespace
+        for fact, parts in self._concatenated:
+            values = [text if kind == 'literal' else value(text)
+                      for kind, text in parts]
+            if None not in values:
+                fact.topic = ''.join(values)
+                fact.topic_is_literal = True
+                fact.topic_handle = None
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
@@ -969,6 +978,9 @@ class _Walker:
             self.facts.publishers.append(model.PublisherFact(
                 handle_name=target.spelling if target is not None else None,
                 **common))
+        self._note_concatenation(
+            self.facts.publishers[-1:], literal,
+            self._argument(arguments, api.name_arg))
 
     def _wrapped_publisher(self, cursor, stack, api, arguments):
         """``RealtimePublisher<M>(pub)`` publishes through `pub`.
@@ -1129,6 +1141,22 @@ class _Walker:
                                       topic, literal, msg_type, target):
             self.facts.subscribers.append(model.SubscriberFact(
                 callback=callback, **common))
+        self._note_concatenation(
+            self.facts.subscribers[-1:], literal,
+            self._argument(arguments, api.name_arg))
+
+    def _note_concatenation(self, facts, literal, argument):
+        """Resolve later a topic built with `+` from literals and strings.
+
+        ``ns + "/pose"``, ``std::string("~") + name``,
+        ``ros::names::append(ns, "pose")``: when every string variable in
+        it is set only to one literal (see _resolve_string_names).
+        """
+        if literal or not facts or argument is None:
+            return
+        parts = _string_parts(argument)
+        if parts and any(kind == 'variable' for kind, _ in parts):
+            self._concatenated.append((facts[0], parts))
 
     def _topic_handle(self, arguments, api, literal):
         """Where a non-literal topic comes from: a variable, or a parameter.
@@ -1150,6 +1178,10 @@ class _Walker:
                     self._argument(list(current.get_arguments()), 0))
                 if is_literal:
                     return 'param:' + param
+        parts = _string_parts(argument)
+        if parts is not None and len(parts) > 1:
+            # `ns + "/pose"` is not the value of `ns`: see _note_concatenation
+            return None
         handle = first_handle(argument)
         return handle.get_usr() if handle is not None else None
 
@@ -1420,6 +1452,49 @@ class _Context:
 
     def loop_ids(self):
         return [loop_id for loop_id, _, _ in self.loops]
+
+
+# what a string expression may pass through on its way to a literal or a
+# variable: conversions, parentheses, std::string(...) temporaries
+_STRING_WRAPPERS = frozenset({
+    CK.UNEXPOSED_EXPR, CK.PAREN_EXPR, CK.CXX_FUNCTIONAL_CAST_EXPR,
+    CK.CALL_EXPR, CK.CSTYLE_CAST_EXPR})
+_NAMES_APPEND = 'ros::names::append'
+
+
+def _string_parts(expression, depth=0):
+    """[('literal', text) | ('variable', usr)] a string is joined from.
+
+    None when it holds anything else (a call, a parameter read).
+    """
+    if expression is None or depth > 32:
+        return None
+    kind = expression.kind
+    if kind == CK.STRING_LITERAL:
+        return [('literal', _unquote(expression.spelling))]
+    if kind in REF_KINDS and expression.referenced is not None and \
+            expression.referenced.kind in HANDLE_KINDS:
+        return [('variable', expression.referenced.get_usr())] \
+            if _is_string(expression) else None
+    if kind == CK.CALL_EXPR:
+        name = qualified_name(expression.referenced) \
+            if expression.referenced is not None else ''
+        arguments = list(expression.get_arguments())
+        if expression.spelling == 'operator+' and len(arguments) == 2:
+            left, right = (_string_parts(a, depth + 1) for a in arguments)
+            return left + right if left and right else None
+        if name == _NAMES_APPEND and len(arguments) == 2:
+            left, right = (_string_parts(a, depth + 1) for a in arguments)
+            return left + [('literal', '/')] + right \
+                if left and right else None
+        if expression.spelling == 'basic_string' and arguments:
+            # std::string(text): the constructor (its allocator defaulted)
+            return _string_parts(arguments[0], depth + 1)
+    children = [c for c in _children(expression) if c.kind not in (
+        CK.NAMESPACE_REF, CK.TYPE_REF, CK.TEMPLATE_REF)]
+    if kind in _STRING_WRAPPERS and len(children) == 1:
+        return _string_parts(children[0], depth + 1)
+    return None
 
 
 def _unquote(literal):

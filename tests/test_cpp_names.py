@@ -1,0 +1,77 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""C++ topic names built from values: concatenation, ros::names::append.
+
+Expectations written by hand from the code below.
+"""
+
+from colcon_rsia.package import analysis
+import pytest
+
+BUILT_NAMES = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+void onIn(const std_msgs::String::ConstPtr&) {}
+
+void advertiseUnder(ros::NodeHandle& nh, const std::string& prefix,
+                    ros::Publisher& out)
+{
+  std::string robot = "turtle1";
+  // `prefix` is whatever the caller passes: not known
+  out = nh.advertise<std_msgs::String>(robot + "/" + prefix, 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "built_names");
+  ros::NodeHandle nh;
+  std::string ns = "turtle1";
+  std::string name = "color";
+  ros::Publisher pose = nh.advertise<std_msgs::String>(ns + "/pose", 1);
+  ros::Publisher color = nh.advertise<std_msgs::String>(std::string("~") + name, 1);
+  ros::Publisher cmd = nh.advertise<std_msgs::String>(
+      ros::names::append(ns, "cmd_vel"), 1);
+  ros::Subscriber in = nh.subscribe("/" + ns + "/in", 1, onIn);
+  ros::Publisher other;
+  advertiseUnder(nh, argv[0], other);
+  std::string topic;
+  nh.param<std::string>("topic", topic, "scan");
+  // a parameter's value joined to a suffix: neither the default alone nor
+  // a name
+  ros::Publisher filtered = nh.advertise<std_msgs::String>(topic + "_filtered", 1);
+  ros::spin();
+}
+"""
+
+
+@pytest.fixture(scope='module')
+def node(tmp_path_factory):
+    root = tmp_path_factory.mktemp('names')
+    package = root / 'names'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'built_names.cpp').write_text(BUILT_NAMES)
+    summary = analysis.analyze_package(
+        name='names', path=str(package), build_base=str(root / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    [node] = summary.nodes
+    return node
+
+
+def test_names_joined_from_known_strings_are_names(node):
+    topics = {(p.topic, p.topic_is_literal) for p in node.publishers}
+    assert {('turtle1/pose', True), ('~color', True),
+            ('turtle1/cmd_vel', True)} <= topics
+    assert [(s.topic, s.topic_is_literal) for s in node.subscribers] == [
+        ('/turtle1/in', True)]
+
+
+def test_names_joined_with_unknown_values_stay_unresolved(node):
+    # before: the first variable's value stood for the whole name
+    # ('turtle1'), and a parameter's default for `topic + "_filtered"`
+    unknown = sorted(p.topic for p in node.publishers
+                     if not p.topic_is_literal)
+    assert unknown == ['robot+"/"+prefix', 'topic+"_filtered"']
+    assert all(p.topic_param is None for p in node.publishers
+               if not p.topic_is_literal)
