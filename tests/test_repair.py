@@ -691,6 +691,7 @@ FIELD_TYPES = r"""
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <rclcpp/rclcpp.hpp>
 #include <diagnostic_msgs/msg/diagnostic_array.hpp>
 #include <diagnostic_msgs/msg/diagnostic_status.hpp>
@@ -699,6 +700,12 @@ using diagnostic_msgs::msg::DiagnosticArray;
 using diagnostic_msgs::msg::DiagnosticStatus;
 using DiagnosticLevel = DiagnosticStatus::_level_type;
 using ArrayLevel = DiagnosticArray::_status_type::value_type::_level_type;
+
+// a QoS value whose name ends like an export macro (..._LOCAL)
+struct Spec
+{
+  static constexpr auto durability = RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL;
+};
 
 class Monitor : public rclcpp::Node
 {
@@ -716,6 +723,7 @@ public:
           }
         }
         names_[worst] = "worst";
+        counts_[worst] += 1;
         DiagnosticStatus out;
         out.level = worst;
         pub_->publish(out);
@@ -724,6 +732,7 @@ public:
 
 private:
   std::map<DiagnosticLevel, std::string> names_;
+  std::unordered_map<DiagnosticLevel, int> counts_;
   rclcpp::Publisher<DiagnosticStatus>::SharedPtr pub_;
   rclcpp::Subscription<DiagnosticArray>::SharedPtr sub_;
 };

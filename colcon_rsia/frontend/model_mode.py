@@ -423,9 +423,12 @@ def _system_include_dirs():
 
 # visibility and export macros, defined by headers CMake generates into the
 # build tree (or by ones the model lacks): FOO_PUBLIC class Bar
+# at declaration level, before a name (`class FOO_PUBLIC Node`,
+# `FOO_LOCAL void f();`): a value such as RMW_QOS_POLICY_DURABILITY_
+# TRANSIENT_LOCAL (followed by `;`, `,` or `)`) is no export macro
 _EXPORT_MACRO = re.compile(
     r'\b([A-Z][A-Z0-9_]*_(?:EXPORT|PUBLIC|LOCAL|IMPORT|API|PUBLIC_TYPE'
-    r'|DECLSPEC|VISIBILITY))\b(?!\s*\()')
+    r'|DECLSPEC|VISIBILITY))\b(?=\s+[A-Za-z_~])')
 
 
 def _export_macro_defines(codes):

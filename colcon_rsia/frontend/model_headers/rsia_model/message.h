@@ -294,6 +294,16 @@ Any& any_value();
 
 }  // namespace rsia_model
 
+// field values as keys of unordered containers (a DiagnosticLevel key)
+namespace std
+{
+template <>
+struct hash<::rsia_model::AnyValue>
+{
+  size_t operator()(const ::rsia_model::AnyValue&) const;
+};
+}  // namespace std
+
 // messages other headers refer to without including them (see model_mode.py)
 #if defined(__has_include)
 #if __has_include(<rsia_model/implicit_messages.h>)
