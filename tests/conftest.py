@@ -54,6 +54,25 @@ class Workspace:
         return run_colcon(list(args), cwd=self.root, check=check)
 
 
+def analyse_source(root, package, text, *, file=None):
+    """Analyse one C++ file as a package of its own, unbuilt (model mode).
+
+    :param root: a scratch directory
+    :param package: the package name (its directory under ``root``)
+    :param text: the file's content, written to ``src/<package>.cpp``
+      unless ``file`` names another path inside the package
+    :returns: the package summary
+    """
+    from colcon_rsia.package import analysis
+    path = Path(root) / package
+    source = path / (file or f'src/{package}.cpp')
+    source.parent.mkdir(parents=True, exist_ok=True)
+    source.write_text(text)
+    return analysis.analyze_package(
+        name=package, path=str(path), build_base=str(Path(root) / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(path)])
+
+
 def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S):
     env = dict(os.environ)
     # no user mixins or defaults may change what the tests build

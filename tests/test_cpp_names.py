@@ -5,7 +5,7 @@
 Expectations written by hand from the code below.
 """
 
-from colcon_rsia.package import analysis
+from conftest import analyse_source
 import pytest
 
 BUILT_NAMES = r"""
@@ -48,13 +48,8 @@ int main(int argc, char** argv)
 
 @pytest.fixture(scope='module')
 def node(tmp_path_factory):
-    root = tmp_path_factory.mktemp('names')
-    package = root / 'names'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'built_names.cpp').write_text(BUILT_NAMES)
-    summary = analysis.analyze_package(
-        name='names', path=str(package), build_base=str(root / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(
+        tmp_path_factory.mktemp('names'), 'names', BUILT_NAMES)
     [node] = summary.nodes
     return node
 

@@ -5,6 +5,7 @@
 from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend import repair
 from colcon_rsia.package import analysis
+from conftest import analyse_source
 import pytest
 
 # a ROS 2 node written against libraries the model does not have: OpenCV,
@@ -305,12 +306,7 @@ int main(int argc, char ** argv)
 
 
 def test_the_model_has_what_newer_rclcpp_code_uses(tmp_path):
-    package = tmp_path / 'watcher'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'watcher.cpp').write_text(NEWER_RCLCPP)
-    summary = analysis.analyze_package(
-        name='watcher', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'watcher', NEWER_RCLCPP)
     [unit] = summary.coverage.units
     # no repair needed: the model headers declare all of it
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
@@ -352,12 +348,7 @@ int main(int argc, char ** argv)
 
 
 def test_calls_on_a_template_parameter_are_recognised_by_name(tmp_path):
-    package = tmp_path / 'relay'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'relay.cpp').write_text(TEMPLATED_HELPER)
-    summary = analysis.analyze_package(
-        name='relay', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'relay', TEMPLATED_HELPER)
     recorded = sorted((c.role, c.line, c.recorded)
                       for c in summary.coverage.call_sites)
     # both calls have facts (in the unit: the node's main reaches the
@@ -464,12 +455,7 @@ int main(int argc, char** argv)
 
 
 def test_no_model_error_on_handles_buffers_and_field_iterators(tmp_path):
-    package = tmp_path / 'arm'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'arm.cpp').write_text(HANDLES_AND_BUFFERS)
-    summary = analysis.analyze_package(
-        name='arm', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'arm', HANDLES_AND_BUFFERS)
     [unit] = summary.coverage.units
     # before: `joint_ = hw->getHandle(...)` was an ambiguous operator=
     # between the stand-in's implicit copy and move assignments, and
@@ -524,12 +510,7 @@ int main(int argc, char** argv)
 
 
 def test_templates_with_value_parameters_are_repaired(tmp_path):
-    package = tmp_path / 'estimator'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'estimator.cpp').write_text(EIGEN_AND_CERES)
-    summary = analysis.analyze_package(
-        name='estimator', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'estimator', EIGEN_AND_CERES)
     [unit] = summary.coverage.units
     # before: `template <class...>` took no 3, and a member of a
     # specialisation ('Eigen::Matrix<double, 3, 3>') was not declared
@@ -604,12 +585,7 @@ int main(int argc, char ** argv)
 
 
 def test_the_model_has_parameters_tf2_conversions_and_class_loaders(tmp_path):
-    package = tmp_path / 'planner'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'planner.cpp').write_text(PARAMETERS_TF2_PLUGINS)
-    summary = analysis.analyze_package(
-        name='planner', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'planner', PARAMETERS_TF2_PLUGINS)
     [unit] = summary.coverage.units
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
     [node] = summary.nodes
@@ -659,12 +635,7 @@ int main(int argc, char ** argv)
 
 
 def test_using_declared_classes_and_nested_types_are_repaired(tmp_path):
-    package = tmp_path / 'braking'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'braking.cpp').write_text(USING_AND_NESTED_TYPES)
-    summary = analysis.analyze_package(
-        name='braking', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'braking', USING_AND_NESTED_TYPES)
     [unit] = summary.coverage.units
     # before: a global VehicleInfo beside vehicle_info_utils::VehicleInfo
     # ('must use struct tag'), and Ptr declared as a value
@@ -746,12 +717,7 @@ int main(int argc, char ** argv)
 
 
 def test_message_field_types_are_declared(tmp_path):
-    package = tmp_path / 'monitor'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'monitor.cpp').write_text(FIELD_TYPES)
-    summary = analysis.analyze_package(
-        name='monitor', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'monitor', FIELD_TYPES)
     [unit] = summary.coverage.units
     # before: "no type named '_level_type' in DiagnosticStatus_<...>"
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

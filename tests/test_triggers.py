@@ -8,7 +8,6 @@ test_workspaces/triggers/src/trig_nodes/src (see the EXPECT comments there).
 
 import json
 
-from colcon_rsia.package import analysis
 from colcon_rsia.package.store import find_summaries
 from colcon_rsia.package.store import read_summary
 from colcon_rsia.subverb.rates import parse_set_rates
@@ -17,6 +16,7 @@ from colcon_rsia.system.impact import rate_impact
 from colcon_rsia.system.impact import traditional_impact
 from colcon_rsia.system.rates import predict_rates
 from colcon_rsia.system.rates import what_if
+from conftest import analyse_source
 from conftest import build_workspace
 from conftest import WORKSPACES
 import pytest
@@ -311,12 +311,7 @@ int main(int argc, char **argv)
 
 
 def test_a_talker_without_inputs_has_the_rate_of_its_loop(tmp_path):
-    package = tmp_path / 'talk'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'talker.cpp').write_text(TALKER)
-    summary = analysis.analyze_package(
-        name='talk', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    summary = analyse_source(tmp_path, 'talk', TALKER, file='src/talker.cpp')
     [node] = summary.nodes
     [publisher] = node.publishers
     # independent because the node has no inputs; before, rate_hz was null

@@ -1542,6 +1542,22 @@ bool wait_for_message(
   const QoS & qos = SystemDefaultsQoS());
 
 // parameter_client.hpp: clients of another node's parameter services
+// both clients' on_parameter_event: the subscription to /parameter_events
+// (rclcpp creates it on the node the client was made with)
+#define RSIA_MODEL_ON_PARAMETER_EVENT_                                                      \
+  template<class CallbackT, class AllocatorT = std::allocator<void>>                        \
+  typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr         \
+  on_parameter_event(                                                                       \
+    CallbackT && callback, const QoS & qos = ParameterEventsQoS(),                          \
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =                          \
+    SubscriptionOptionsWithAllocator<AllocatorT>());                                        \
+  template<class CallbackT, class NodeT, class AllocatorT = std::allocator<void>>           \
+  static typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr  \
+  on_parameter_event(                                                                       \
+    NodeT && node, CallbackT && callback, const QoS & qos = ParameterEventsQoS(),           \
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =                          \
+    SubscriptionOptionsWithAllocator<AllocatorT>());
+
 class AsyncParametersClient
 {
 public:
@@ -1567,20 +1583,7 @@ public:
   std::shared_future<rcl_interfaces::msg::SetParametersResult>
   set_parameters_atomically(
     const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
-  // the subscription to /parameter_events (rclcpp creates it on the
-  // node the client was made with)
-  template<class CallbackT, class AllocatorT = std::allocator<void>>
-  typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
-  on_parameter_event(
-    CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
-    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
-    SubscriptionOptionsWithAllocator<AllocatorT>());
-  template<class CallbackT, class NodeT, class AllocatorT = std::allocator<void>>
-  static typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
-  on_parameter_event(
-    NodeT && node, CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
-    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
-    SubscriptionOptionsWithAllocator<AllocatorT>());
+  RSIA_MODEL_ON_PARAMETER_EVENT_
 };
 
 class SyncParametersClient
@@ -1609,21 +1612,9 @@ public:
   template<class... RsiaArgs>
   std::vector<rcl_interfaces::msg::SetParametersResult> set_parameters(
     const std::vector<rclcpp::Parameter> & parameters, RsiaArgs &&...);
-  // the subscription to /parameter_events (rclcpp creates it on the
-  // node the client was made with)
-  template<class CallbackT, class AllocatorT = std::allocator<void>>
-  typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
-  on_parameter_event(
-    CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
-    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
-    SubscriptionOptionsWithAllocator<AllocatorT>());
-  template<class CallbackT, class NodeT, class AllocatorT = std::allocator<void>>
-  static typename Subscription<rcl_interfaces::msg::ParameterEvent, AllocatorT>::SharedPtr
-  on_parameter_event(
-    NodeT && node, CallbackT && callback, const QoS & qos = ParameterEventsQoS(),
-    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
-    SubscriptionOptionsWithAllocator<AllocatorT>());
+  RSIA_MODEL_ON_PARAMETER_EVENT_
 };
+#undef RSIA_MODEL_ON_PARAMETER_EVENT_
 
 }  // namespace rclcpp
 
