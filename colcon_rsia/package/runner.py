@@ -54,8 +54,6 @@ class Outcome:
     # a package of a kind this version does not analyse (nothing to say
     # during a build)
     skipped: bool = False
-    # the build was interrupted before the analysis ended (then skipped too)
-    interrupted: bool = False
 
     def line(self):
         """One line for the console (undecodable names escaped)."""
@@ -164,7 +162,7 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
             without_build=without_build)
     except Interrupted:
         # nothing to say, nothing written: the build says it was interrupted
-        return Outcome(display(name), skipped=True, interrupted=True)
+        return Outcome(display(name), skipped=True)
     except AnalysisError as e:
         outcome = Outcome(name, error=str(e))
     except Exception as e:  # noqa: B902
