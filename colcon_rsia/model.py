@@ -35,6 +35,9 @@ PATTERN_TIMER = 'timer'
 PATTERN_RATE_LOOP = 'rate_loop'
 PATTERN_MIXED = 'mixed'
 PATTERN_NONE = 'none'
+# a plugin's publish reached only from a method its host calls from its own
+# fixed-rate loop (a controller's update())
+PATTERN_HOST_PERIODIC = 'host_periodic'
 
 # root kinds
 ROOT_MAIN = 'main'
@@ -44,6 +47,10 @@ ROOT_TIMER = 'timer'
 ROOT_SERVICE = 'service'
 ROOT_ACTION = 'action'
 ROOT_ENTRY = 'entry'  # a function nobody calls: entered from outside
+# a plugin's methods its host calls (colcon_rsia.package.plugin_hosts)
+ROOT_HOST_PERIODIC = 'host_periodic'
+ROOT_HOST_REQUEST = 'host_request'
+ROOT_HOST_SETUP = 'host_setup'
 
 
 # the mark of a NodeHandle namespace the code builds from a value the
@@ -299,6 +306,10 @@ class TuFacts:
     handle_aliases: List[HandleAlias] = field(default_factory=list)
     string_arguments: List[StringArgument] = field(default_factory=list)
     plugin_exports: List[List[str]] = field(default_factory=list)
+    # [class, base] of the package's classes, and [alias, class] of its
+    # type aliases of classes: what a plugin class inherits its methods from
+    class_bases: List[List[str]] = field(default_factory=list)
+    class_aliases: List[List[str]] = field(default_factory=list)
     # the package's own files the unit read (its source and headers)
     files: List[str] = field(default_factory=list)
     diagnostics: List[str] = field(default_factory=list)
@@ -483,7 +494,7 @@ class Node:
     id: str
     package: str
     executable: str
-    kind: str                      # executable | nodelet | component
+    kind: str                      # executable | nodelet | component | plugin
     # the node name and namespace its code gives (ros::init,
     # rclcpp::Node's constructor); a launch file may override both
     name: Optional[str] = None
@@ -499,6 +510,10 @@ class Node:
     actions: List[NodeAction] = field(default_factory=list)
     clients: List[NodeClient] = field(default_factory=list)
     roots: List[Root] = field(default_factory=list)
+    # a plugin: the base class it is exported with, and the host that
+    # loads it (colcon_rsia.package.plugin_hosts) when the base is known
+    base_class: Optional[str] = None
+    host: Optional[str] = None
 
 
 @dataclass
@@ -668,7 +683,8 @@ def _node_from_dict(data):
         services=[NodeService(**s) for s in data.get('services', [])],
         actions=[NodeAction(**a) for a in data.get('actions', [])],
         clients=[NodeClient(**c) for c in data.get('clients', [])],
-        roots=[Root(**r) for r in data.get('roots', [])])
+        roots=[Root(**r) for r in data.get('roots', [])],
+        base_class=data.get('base_class'), host=data.get('host'))
 
 
 # {summary class: {field: declared type}}, for _check_types

@@ -56,6 +56,9 @@ def project_node(node, named=False):
       parameters topic names come from
     """
     view = {'id': node['id'], 'kind': node.get('kind', 'executable')}
+    if view['kind'] == 'plugin':
+        view['base_class'] = node.get('base_class')
+        view['host'] = node.get('host')
     if named:
         for name in NAMED_NODE_FIELDS:
             view[name] = node.get(name)

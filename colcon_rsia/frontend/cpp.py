@@ -51,7 +51,7 @@ STATEMENT_KINDS = frozenset({
 # of top-level cursors (every macro of every header) and so the walk time
 EXPORT_MACRO = re.compile(
     r'\b(?:PLUGINLIB_EXPORT_CLASS|CLASS_LOADER_REGISTER_CLASS)\s*\(\s*'
-    r'([\w:]+)\s*,\s*([\w:]+)\s*\)')
+    r'([\w:]+(?:\s*<[^;()]*?>)?)\s*,\s*([\w:]+(?:\s*<[^;()]*>)?)\s*\)')
 COMPONENT_MACRO = re.compile(
     r'\bRCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)')
 # the base recorded for a registered ROS 2 component
@@ -474,9 +474,14 @@ class _Walker:
         except ValueError:
             return  # a cursor kind this libclang binding does not know
         if kind in SCOPE_KINDS:
+            if kind in CLASS_KINDS:
+                self._class_bases(cursor)
             for child in cursor.get_children():
                 if self.in_package(child):
                     self._declaration(child)
+            return
+        if kind in (CK.TYPEDEF_DECL, CK.TYPE_ALIAS_DECL):
+            self._class_alias(cursor)
             return
         # what invalid code leaves in the AST may surprise any rule below:
         # such a declaration loses its own facts, never the unit's
@@ -505,6 +510,30 @@ class _Walker:
         for match in COMPONENT_MACRO.finditer(text):
             self.facts.plugin_exports.append(
                 [match.group(1).lstrip(':'), COMPONENT_BASE])
+
+    def _class_bases(self, cursor):
+        """Record the bases of a package class (a plugin inherits methods)."""
+        name = qualified_name(cursor)
+        for child in cursor.get_children():
+            if child.kind != CK.CXX_BASE_SPECIFIER:
+                continue
+            base = child.type.get_declaration()
+            if base is not None and base.kind != CK.NO_DECL_FOUND:
+                base_name = qualified_name(base)
+            else:
+                base_name = re.sub(r'<.*', '', child.type.spelling)
+            if base_name and [name, base_name] not in self.facts.class_bases:
+                self.facts.class_bases.append([name, base_name])
+
+    def _class_alias(self, cursor):
+        """``typedef Controller<Iface> JointController;`` names a class."""
+        target = cursor.underlying_typedef_type.get_canonical()
+        declaration = target.get_declaration()
+        if declaration is None or declaration.kind not in CLASS_KINDS:
+            return
+        # a template's specialisation has the template's qualified name
+        self.facts.class_aliases.append(
+            [qualified_name(cursor), qualified_name(declaration)])
 
     def _class_id(self, cursor):
         parent = cursor.semantic_parent

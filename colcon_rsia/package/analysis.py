@@ -24,6 +24,7 @@ from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
 from colcon_rsia.package import coverage
+from colcon_rsia.package import plugin_hosts
 from colcon_rsia.package import store
 from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.assembly import executable_nodes
@@ -34,6 +35,7 @@ from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
+from colcon_rsia.package.nodes import find_plugins
 
 
 class AnalysisError(RuntimeError):
@@ -545,14 +547,80 @@ def build_summary(*, name, path, build_base, units):
     for plugin, class_name, kind in plugins:
         seeds = {f.id for f in merged_library.functions
                  if f.name.startswith(class_name + '::')}
-        sources = sorted({
-            os.path.join(path, f.location.rsplit(':', 1)[0])
-            for f in merged_library.functions if f.id in seeds})
-        short = plugin.split('/')[-1]
         summary.nodes.append(build_node(
-            name, short, kind, sources, path, merged_library, seeds,
-            node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
+            name, plugin.split('/')[-1], kind,
+            _sources_of(path, merged_library, seeds), path, merged_library,
+            seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
+    summary.nodes.extend(_plugin_nodes(name, path, merged_library, exported))
     return summary
+
+
+def _plugin_nodes(package, path, merged, exported):
+    """The package's pluginlib classes that a host loads, as nodes.
+
+    A plugin runs the methods of its class (and of the package classes it
+    derives from) and what they call; its host calls them (see
+    :mod:`colcon_rsia.package.plugin_hosts`). A plugin of a base no host
+    of the table has is kept only when it makes endpoints (a transmission
+    loader is no node).
+    """
+    found = find_plugins(package_path=path, exported_classes=exported)
+    shorts = [class_name.split('::')[-1] for class_name, _ in found.values()]
+    nodes = []
+    for plugin, (class_name, base) in sorted(found.items()):
+        classes = _class_and_bases(class_name, merged)
+        host = plugin_hosts.host_of(base)
+        methods = [f for f in merged.functions
+                   if f.name.rsplit('::', 1)[0] in classes]
+        seeds = {f.id for f in methods}
+        host_roots = {}
+        for function in methods:
+            kind = plugin_hosts.root_kind(host, function.name.split('::')[-1])
+            if kind is not None:
+                host_roots[function.id] = kind
+        short = class_name.split('::')[-1]
+        if '/' not in plugin:
+            plugin = short if shorts.count(short) == 1 else class_name
+        node = build_node(
+            package, plugin.split('/')[-1], 'plugin',
+            _sources_of(path, merged, seeds), path, merged, seeds,
+            node_id=plugin if '/' in plugin else f'{package}/{plugin}',
+            host=host, host_roots=host_roots)
+        node.base_class = base
+        if host is None and not (node.publishers or node.subscribers or
+                                 node.timers or node.services or
+                                 node.actions):
+            continue
+        nodes.append(node)
+    return nodes
+
+
+def _class_and_bases(class_name, merged):
+    """A class's qualified name and its package bases', aliases followed."""
+    aliases = dict(map(tuple, merged.class_aliases))
+    bases = {}
+    for derived, base in merged.class_bases:
+        bases.setdefault(derived, set()).add(base)
+    found = set()
+    todo = [class_name]
+    while todo:
+        current = todo.pop()
+        # an alias of an alias ends; a cycle cannot loop
+        for _ in range(8):
+            if current not in aliases:
+                break
+            current = aliases[current]
+        if current in found:
+            continue
+        found.add(current)
+        todo.extend(bases.get(current, ()))
+    return found
+
+
+def _sources_of(path, merged, seeds):
+    return sorted({
+        os.path.join(path, f.location.rsplit(':', 1)[0])
+        for f in merged.functions if f.id in seeds})
 
 
 def _defines_main(unit):

@@ -82,14 +82,18 @@ def _node_name(facts):
 
 
 def build_node(package, executable, kind, sources, path, merged, seeds,
-               node_id=None):
+               node_id=None, host=None, host_roots=None):
     """The labelled node that runs the functions `seeds` and what they call.
 
     :param sources: the files (absolute) the node is built from
     :param merged: the merged facts of every unit the node may run
     :param node_id: default ``package/executable``
+    :param host: a plugin's :class:`colcon_rsia.package.plugin_hosts.Host`
+    :param host_roots: {function id: root kind} of the methods it calls
     """
     facts = node_facts(merged, select_functions(merged, seeds))
+    facts.host = host
+    facts.host_roots = dict(host_roots or {})
     publishers, roots = label_publishers(facts)
     names = {fid: f.name for fid, f in facts.functions.items()}
     node_name, namespace = _node_name(facts)
@@ -121,7 +125,7 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
         actions=_actions(facts, names),
         clients=[model.NodeClient(name=c.name, api=c.api, location=c.location)
                  for c in facts.clients],
-        roots=roots)
+        roots=roots, host=host.host if host is not None else None)
 
 
 def _actions(facts, names):

@@ -9,6 +9,9 @@ A publisher edge is *independent* of the node's incoming rates when
 2. every call path from a root to each of its publish sites starts at a
    timer callback (``timer``) or passes through a loop paced by the
    ``sleep()`` of a Rate object (``rate_loop``); both kinds: ``mixed``.
+   A plugin's method that its host calls from a fixed-rate loop (a
+   controller's ``update()``) is paced like a timer callback:
+   ``host_periodic``.
 
 Otherwise it is *dependent* (``none``). Enumerating every loop-free path is
 exponential; a path is bad exactly when it starts at a non-timer root and
@@ -31,11 +34,14 @@ def find_roots(facts):
 
     def add(function, kind, location):
         if function and function in facts.functions:
-            # a timer root stays a timer root only if nothing else
-            # (a subscription, a service) also calls it from outside
+            # a paced root stays one only if nothing else (a subscription,
+            # a service) also calls it from outside
             previous = roots.get(function)
-            if previous is None or previous[0] == model.ROOT_TIMER:
+            if previous is None or previous[0] in PACED_ROOTS:
                 roots[function] = (kind, location)
+    for function, kind in sorted(facts.host_roots.items()):
+        if function in facts.functions:
+            add(function, kind, facts.functions[function].location)
     for function in facts.functions.values():
         if function.name == ros_api.MAIN_FUNCTION:
             add(function.id, model.ROOT_MAIN, function.location)
@@ -67,6 +73,10 @@ def find_roots(facts):
     return roots
 
 
+# roots whose calls come at a rate of their own, not with the node's inputs
+PACED_ROOTS = (model.ROOT_TIMER, model.ROOT_HOST_PERIODIC)
+
+
 def _edges(calls, keep=None):
     edges = {}
     for call in calls:
@@ -94,7 +104,8 @@ def _reach(starts, edges, parents=None):
 def has_inputs(facts):
     """Whether anything outside drives the node (pattern 1 fails)."""
     return bool(facts.subscribers or facts.services or any(
-        a.role == 'server' for a in facts.actions))
+        a.role == 'server' for a in facts.actions) or any(
+        kind == model.ROOT_HOST_REQUEST for kind in facts.host_roots.values()))
 
 
 def label_publishers(facts):
@@ -112,13 +123,16 @@ def label_publishers(facts):
     all_edges = _edges(facts.calls)
     timer_roots = [f for f, (k, _) in roots.items()
                    if k == model.ROOT_TIMER]
+    host_roots = [f for f, (k, _) in roots.items()
+                  if k == model.ROOT_HOST_PERIODIC]
     other_roots = [f for f, (k, _) in roots.items()
-                   if k != model.ROOT_TIMER]
+                   if k not in PACED_ROOTS]
     bad_parents = {}
     unpaced_from_others = _reach(
         other_roots, _edges(facts.calls, lambda c: not is_paced(c.loops)),
         bad_parents)
     from_timers = _reach(timer_roots, all_edges)
+    from_host = _HostReach(facts, host_roots, all_edges)
     from_others = _reach(other_roots, all_edges)
     callers_of = {}
     for call in facts.calls:
@@ -148,7 +162,8 @@ def label_publishers(facts):
             # its own pacing still sets its rate (`colcon rsia rates`)
             paced = _paced_rate(sites, *_label_sites(
                 sites, facts, roots, is_paced, unpaced_from_others,
-                bad_parents, from_timers, from_others, callers_of, []))
+                bad_parents, from_timers, from_host, from_others, callers_of,
+                []))
             # the rate is its pacing's (a talker's `ros::Rate loop(10)`)
             labelled.append(model.LabelledPublisher(
                 label=model.INDEPENDENT,
@@ -170,7 +185,7 @@ def label_publishers(facts):
             continue
         label, pattern, rates = _label_sites(
             sites, facts, roots, is_paced, unpaced_from_others, bad_parents,
-            from_timers, from_others, callers_of, evidence)
+            from_timers, from_host, from_others, callers_of, evidence)
         rate_hz = None
         if label == model.INDEPENDENT and len(rates) == 1:
             rate_hz = next(iter(rates))
@@ -185,7 +200,8 @@ def label_publishers(facts):
 
 
 def _label_sites(sites, facts, roots, is_paced, unpaced_from_others,
-                 bad_parents, from_timers, from_others, callers_of, evidence):
+                 bad_parents, from_timers, from_host, from_others, callers_of,
+                 evidence):
     kinds = set()
     rates = set()
     for site in sites:
@@ -201,6 +217,11 @@ def _label_sites(sites, facts, roots, is_paced, unpaced_from_others,
                     rates.add(timer.rate_hz)
                     evidence.append(model.Evidence(
                         'timer', timer.location, _timer_detail(timer, facts)))
+        if site.function in from_host.reached:
+            kinds.add(model.PATTERN_HOST_PERIODIC)
+            # the host's loop rate is its own parameter, not in the code
+            rates.add(None)
+            evidence.append(from_host.evidence(site.function))
         if site.function in from_others or site_loops:
             kinds.add(model.PATTERN_RATE_LOOP)
             loops = site_loops + _paced_calls_into(
@@ -211,13 +232,30 @@ def _label_sites(sites, facts, roots, is_paced, unpaced_from_others,
                 evidence.append(model.Evidence(
                     'rate_loop', loop.location,
                     f'paced by sleep() at {loop.sleep_location}'))
-    if kinds == {model.PATTERN_TIMER}:
-        pattern = model.PATTERN_TIMER
-    elif kinds == {model.PATTERN_RATE_LOOP}:
-        pattern = model.PATTERN_RATE_LOOP
-    else:
-        pattern = model.PATTERN_MIXED
+    pattern = kinds.pop() if len(kinds) == 1 else model.PATTERN_MIXED
     return model.INDEPENDENT, pattern, rates
+
+
+class _HostReach:
+    """What a plugin's periodic host calls reach, and why."""
+
+    def __init__(self, facts, starts, edges):
+        self.facts = facts
+        self.edges = edges
+        self.starts = starts
+        self.reached = _reach(starts, edges)
+
+    def evidence(self, function):
+        """Evidence naming the host call that reaches `function`."""
+        host = self.facts.host
+        for start in sorted(self.starts):
+            if function in _reach([start], self.edges):
+                method = self.facts.functions[start]
+                return model.Evidence(
+                    'host_periodic', method.location,
+                    f'{host.host} calls {method.name} from its fixed-rate '
+                    f'loop ({host.rate_parameter})')
+        return model.Evidence('host_periodic', '?', host.host)
 
 
 def _reaches(start, target, facts):
@@ -297,7 +335,7 @@ class _TriggerWalk:
         callbacks = {i[3] for i in self.inputs if i[3]}
         # timer callbacks are paced roots: they never make a path unpaced
         others = [f for f, (kind, _) in roots.items()
-                  if kind != model.ROOT_TIMER and f not in callbacks]
+                  if kind not in PACED_ROOTS and f not in callbacks]
         self.other_parents = {}
         self.from_others = _reach(others, self.unpaced, self.other_parents)
         self.reached = {}  # callback -> (functions reached, parents)
@@ -375,6 +413,12 @@ def _inputs(facts):
         for callback in action.callbacks:
             inputs.append(('action', action.name, action.location,
                            callback, None, False))
+    # a plugin's host calls these when a request reaches it
+    for function, kind in sorted(facts.host_roots.items()):
+        if kind == model.ROOT_HOST_REQUEST and function in facts.functions:
+            method = facts.functions[function]
+            inputs.append(('host_request', method.name.split('::')[-1],
+                           method.location, function, None, False))
     return inputs
 
 

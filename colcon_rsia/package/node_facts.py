@@ -14,6 +14,7 @@ from dataclasses import field
 from dataclasses import replace
 from typing import Dict
 from typing import List
+from typing import Optional
 
 from colcon_rsia import model
 
@@ -46,6 +47,10 @@ class NodeFacts:
     param_reads: Dict[str, model.ParamRead] = field(default_factory=dict)
     # parameter name -> its default where the node declares/reads it with one
     param_defaults: Dict[str, str] = field(default_factory=dict)
+    # a plugin: its host (colcon_rsia.package.plugin_hosts.Host) and the
+    # root kind the host gives each method it calls, {function id: kind}
+    host: Optional[object] = None
+    host_roots: Dict[str, str] = field(default_factory=dict)
 
 
 def unique(items):

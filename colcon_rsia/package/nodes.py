@@ -165,10 +165,46 @@ def find_nodelets(*, package_path, exported_classes):
 
     :param exported_classes: (class, base class) pairs found in the sources
     """
-    nodelet_classes = {
-        c.lstrip(':') for c, base in exported_classes
-        if base.lstrip(':') == NODELET_BASE_CLASS}
+    return {name: class_name for name, (class_name, _) in _plugins(
+        package_path, exported_classes,
+        lambda base: base == NODELET_BASE_CLASS).items()}
+
+
+def find_plugins(*, package_path, exported_classes):
+    """Return {plugin name: (class name, base class)} of other plugins.
+
+    The pluginlib classes that are neither nodelets nor components: a
+    controller, a planner, a costmap layer... (see
+    :mod:`colcon_rsia.package.plugin_hosts` for their hosts).
+    """
+    return _plugins(
+        package_path, exported_classes,
+        lambda base: base not in (NODELET_BASE_CLASS, COMPONENT_BASE_CLASS))
+
+
+def _plugins(package_path, exported_classes, wanted):
+    """{plugin name: (class, base)} of the wanted bases, XML and code.
+
+    The plugin description XML names a class (``pkg/Name``); a class
+    exported in code but missing from the XML still loads: it is named
+    by its class so that it is not lost.
+    """
     declared = {}
+    for name, class_type, base in _described_classes(package_path):
+        if wanted(base):
+            declared[name] = (class_type, base)
+    known = {class_type for class_type, _ in declared.values()}
+    for class_name, base in sorted(
+            (c.lstrip(':'), b.lstrip(':')) for c, b in exported_classes):
+        if wanted(base) and class_name not in known:
+            declared[class_name] = (class_name, base)
+            known.add(class_name)
+    return declared
+
+
+def _described_classes(package_path):
+    """(name, class, base) of every class in the package's plugin XML."""
+    classes = []
     for xml_path in _plugin_xml_files(package_path):
         try:
             root = ElementTree.fromstring(safe_files.read_bytes(
@@ -178,32 +214,35 @@ def find_nodelets(*, package_path, exported_classes):
         for element in root.iter('class'):
             base = element.get('base_class_type', '').lstrip(':')
             class_type = element.get('type', '').lstrip(':')
-            name = element.get('name') or class_type
-            if base == NODELET_BASE_CLASS and class_type:
-                declared[name] = class_type
-    # a class exported in code but missing from the XML still runs as a
-    # nodelet; name it by its class so it is not lost
-    known = set(declared.values())
-    for class_name in sorted(nodelet_classes - known):
-        declared[class_name] = class_name
-    return declared
+            if class_type:
+                classes.append(
+                    (element.get('name') or class_type, class_type, base))
+    return classes
+
+
+# ROS 2 packages export their plugin XML from CMake, not package.xml
+_EXPORT_DESCRIPTION = re.compile(
+    r'pluginlib_export_plugin_description_file\s*\(\s*\S+\s+"?([^")\s]+)',
+    re.IGNORECASE)
 
 
 def _plugin_xml_files(package_path):
+    files = []
+    for match in _EXPORT_DESCRIPTION.finditer(read_cmakelists(package_path)):
+        files.append(os.path.join(package_path, match.group(1)))
     manifest = os.path.join(package_path, 'package.xml')
     try:
         root = ElementTree.fromstring(safe_files.read_bytes(
             manifest, roots=[package_path]))
     except (OSError, ElementTree.ParseError, ValueError):
-        return []
-    files = []
+        return files
     for export in root.iter('export'):
         for element in export:
             plugin = element.get('plugin')
             if plugin:
                 files.append(os.path.join(
                     package_path, plugin.replace('${prefix}', '').lstrip('/')))
-    return files
+    return sorted(set(files))
 
 
 COMPONENT_BASE_CLASS = 'rclcpp::Node'
