@@ -514,6 +514,7 @@ class Node:
     # loads it (colcon_rsia.package.plugin_hosts) when the base is known
     base_class: Optional[str] = None
     host: Optional[str] = None
+    plugin_class: Optional[str] = None
 
 
 @dataclass
@@ -684,7 +685,8 @@ def _node_from_dict(data):
         actions=[NodeAction(**a) for a in data.get('actions', [])],
         clients=[NodeClient(**c) for c in data.get('clients', [])],
         roots=[Root(**r) for r in data.get('roots', [])],
-        base_class=data.get('base_class'), host=data.get('host'))
+        base_class=data.get('base_class'), host=data.get('host'),
+        plugin_class=data.get('plugin_class'))
 
 
 # {summary class: {field: declared type}}, for _check_types

@@ -86,7 +86,9 @@ def _model_arguments(workspace, package, entry, stub_dir):
     return model_mode.prepare_model_arguments(
         source=entry.file, arguments=entry.arguments,
         package_path=str(workspace.src / package),
-        workspace_package_dirs=[str(workspace.src)], stub_dir=str(stub_dir),
+        workspace_package_dirs=sorted(
+            str(p) for p in workspace.src.iterdir() if p.is_dir()),
+        stub_dir=str(stub_dir),
         directory=entry.directory)
 
 

@@ -143,8 +143,14 @@ def _lines(text):
      {('template', 'controller_interface::Controller')}),
     ("no type named 'Vector3d' in namespace 'Eigen'",
      'Eigen::Vector3d v;', 8, {('type', 'Eigen::Vector3d')}),
+    ("no member named 'LaterInfo' in namespace 'rclcpp'",
+     'rclcpp::LaterInfo info;', 9, {('type', 'rclcpp::LaterInfo')}),
+    # a name the model declares, used before the unit includes the model:
+    # the model header, never a declaration that would clash with it
     ("no member named 'MatchedInfo' in namespace 'rclcpp'",
-     'rclcpp::MatchedInfo info;', 9, {('type', 'rclcpp::MatchedInfo')}),
+     'rclcpp::MatchedInfo info;', 9, {('header', 'rclcpp/rclcpp.hpp')}),
+    ("no type named 'Transform' in namespace 'tf2'", 'tf2::Transform t;', 6,
+     {('header', 'tf2/LinearMath/Transform.h')}),
     ("no member named 'get_value' in namespace 'acme'",
      'acme::get_value(3);', 7, {('function', 'acme::get_value')}),
     ("function-like macro 'RCLCPP_VERSION_GTE' is not defined",
@@ -170,11 +176,36 @@ def _lines(text):
     ("no member named 'Ptr' in 'pcl::PointCloud<pcl::PointXYZ>'",
      'pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new Cloud);', 33,
      {('member-type', 'pcl::PointCloud::Ptr')}),
+    # the namespace of a header generated at build time (a parameter
+    # library's ParamListener), named from the global namespace
+    ("'gen_params' is not a class, namespace, or enumeration",
+     'std::shared_ptr<::gen_params::ParamListener> listener_;', 20,
+     {('namespace', 'gen_params')}),
+    ("no member named 'gen_params' in the global namespace",
+     'std::shared_ptr<::gen_params::ParamListener> listener_;', 20,
+     {('namespace', 'gen_params')}),
+    # a global function is no namespace
+    ("no member named 'helper' in the global namespace", '::helper(3);', 3,
+     set()),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, column)], _lines(line))
     assert found == expected
+
+
+def test_a_message_named_before_its_header_is_included_from_the_stand_ins():
+    diagnostics = [("no type named 'Polygon' in namespace 'geometry_msgs::msg'",
+                    'a.cpp', 1, 20)]
+    line = _lines('geometry_msgs::msg::Polygon footprint;')
+    # the stand-in exists: include it (a declaration would clash with it)
+    assert repair.repairs_from_diagnostics(
+        diagnostics, line, stand_in=lambda header: True) == {
+            ('header', 'geometry_msgs/msg/polygon.hpp')}
+    # no such stand-in: declare the type
+    assert repair.repairs_from_diagnostics(
+        diagnostics, line, stand_in=lambda header: False) == {
+            ('type', 'geometry_msgs::msg::Polygon')}
 
 
 def test_a_new_namespace_gets_what_the_code_uses_of_it():
@@ -196,10 +227,10 @@ def test_names_the_package_declares_are_never_repaired():
     declared = repair.declared_names([header])
     found = repair.repairs_from_diagnostics(
         [("no type named 'Transform' in namespace 'karto'", 'a.cpp', 1, 8),
-         ("no type named 'Transform' in namespace 'tf2'", 'a.cpp', 2, 6)],
-        _lines('karto::Transform a;\ntf2::Transform b;'), declared=declared)
-    # karto is the package's own namespace; tf2's Transform is missing
-    assert found == {('type', 'tf2::Transform')}
+         ("no type named 'Transform' in namespace 'acme'", 'a.cpp', 2, 7)],
+        _lines('karto::Transform a;\nacme::Transform b;'), declared=declared)
+    # karto is the package's own namespace; acme's Transform is missing
+    assert found == {('type', 'acme::Transform')}
 
 
 def test_a_failing_declaration_loses_only_itself(tmp_path, monkeypatch):

@@ -87,6 +87,7 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         'rsia_control/cmd_mux': 'cmd_mux',
         'rsia_control/trajectory_server': 'trajectory_server',
         'rsia_control/mission_client': 'mission_client',
+        'rsia_control/heartbeat_relay': 'heartbeat_relay',
         'rsia_drivers/laser_driver': 'laser_driver',
         'rsia_drivers/camera_driver': 'camera_driver',
         'rsia_localization/odom_tf_broadcaster': 'odom_tf_broadcaster',

@@ -123,3 +123,47 @@ def test_a_node_of_a_multi_node_executable_is_changed_by_its_id(
     assert impact['changed'] == ['/camera']
     # /image from the camera feeds the detector, nothing else
     assert impact['rate_impact'] == ['/detector']
+
+
+def test_plugins_without_a_launch_file_are_nodes_under_their_names(
+        ros2_build_base):
+    endpoints = _endpoints(_graph(ros2_build_base))
+    # a controller's private names resolve under its plugin name
+    assert endpoints['/OdometryController'] == (
+        {'/OdometryController/odom', '/OdometryController/command_echo'},
+        {'/OdometryController/cmd_vel'})
+    assert endpoints['/StraightLinePlanner'] == ({'/plan_preview'}, set())
+
+
+def test_hosts_in_a_launch_file_load_the_plugins_their_parameters_name(
+        ros2_build_base):
+    graph = _graph(ros2_build_base, 'rsia_ros2_plugins', 'control.launch.py')
+    endpoints = _endpoints(graph)
+    # each controller is a node named after its key in controllers.yaml;
+    # the planner runs in the planner server's node
+    assert endpoints['/odometry_controller'] == (
+        {'/odometry_controller/odom', '/odometry_controller/command_echo'},
+        {'/odometry_controller/cmd_vel'})
+    assert endpoints['/state_broadcaster'] == ({'/joint_states'}, set())
+    planner = next(n for n in graph['nodes']
+                   if n['id'] == '/planner_server/Straight')
+    assert planner['name'] == '/planner_server'
+    # the relay's remapped output is the controller's command input
+    assert endpoints['/velocity_relay'][0] == {
+        '/odometry_controller/cmd_vel', '/relay_status', '/debug/relayed'}
+
+
+def test_a_host_periodic_edge_stops_the_rate_impact(ros2_build_base):
+    result = run_colcon(
+        ['rsia', 'impact', '--base-paths', str(WORKSPACES / 'ros2' / 'src'),
+         '--launch', 'rsia_ros2_plugins', 'control.launch.py',
+         '--changed', '/velocity_relay', '--format', 'json'],
+        cwd=ros2_build_base.parent, check=True)
+    impact = json.loads(result.stdout)
+    # the relay's commands drive the odometry controller's command echo
+    # (dependent), so its rate may follow; its odometry is paced by the
+    # controller manager's loop, so the odometry relay reading it is out
+    # of the rate impact, though data flows to it
+    assert impact['rate_impact'] == ['/odometry_controller']
+    assert impact['traditional_impact'] == [
+        '/odometry_controller', '/robot1/odom_relay']

@@ -15,37 +15,35 @@ import re
 import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend import wrappers
 from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.const_eval import evaluate_number
 from colcon_rsia.frontend.const_eval import is_chrono_duration
 from colcon_rsia.frontend.const_eval import source_tokens
+from colcon_rsia.frontend.cursors import call_object
+from colcon_rsia.frontend.cursors import child_cursors
+from colcon_rsia.frontend.cursors import CLASS_KINDS
+from colcon_rsia.frontend.cursors import explicit_template_type
+from colcon_rsia.frontend.cursors import first_function
+from colcon_rsia.frontend.cursors import first_handle
+from colcon_rsia.frontend.cursors import first_template_argument
+from colcon_rsia.frontend.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cursors import HANDLE_KINDS
+from colcon_rsia.frontend.cursors import LOOP_KINDS
+from colcon_rsia.frontend.cursors import normalize_msg_type
+from colcon_rsia.frontend.cursors import qualified_name
+from colcon_rsia.frontend.cursors import REF_KINDS
+from colcon_rsia.frontend.cursors import same_cursor
+from colcon_rsia.frontend.cursors import SCOPE_KINDS
+from colcon_rsia.frontend.cursors import STATEMENT_KINDS
+from colcon_rsia.frontend.cursors import VALUE_FUNCTION_KINDS
+from colcon_rsia.frontend.cursors import walk_preorder
 from colcon_rsia.frontend.every_nth import every_nth
+from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
 from colcon_rsia.model import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
 
-FUNCTION_KINDS = frozenset({
-    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.CONSTRUCTOR, CK.DESTRUCTOR,
-    CK.FUNCTION_TEMPLATE, CK.CONVERSION_FUNCTION,
-})
-CLASS_KINDS = frozenset({
-    CK.CLASS_DECL, CK.STRUCT_DECL, CK.CLASS_TEMPLATE,
-    CK.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION, CK.UNION_DECL,
-})
-SCOPE_KINDS = CLASS_KINDS | {CK.NAMESPACE, CK.LINKAGE_SPEC}
-LOOP_KINDS = frozenset({
-    CK.WHILE_STMT, CK.FOR_STMT, CK.DO_STMT, CK.CXX_FOR_RANGE_STMT})
-HANDLE_KINDS = frozenset({CK.VAR_DECL, CK.FIELD_DECL, CK.PARM_DECL})
-# calls computing a value (constructors and conversions only wrap one)
-VALUE_FUNCTION_KINDS = frozenset({
-    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.FUNCTION_TEMPLATE})
-REF_KINDS = frozenset({CK.DECL_REF_EXPR, CK.MEMBER_REF_EXPR})
-# statements end the search for the variable a call's result is stored in
-STATEMENT_KINDS = frozenset({
-    CK.COMPOUND_STMT, CK.RETURN_STMT, CK.IF_STMT, CK.WHILE_STMT,
-    CK.FOR_STMT, CK.DO_STMT, CK.SWITCH_STMT, CK.LAMBDA_EXPR,
-    CK.CXX_FOR_RANGE_STMT,
-})
 # plugin registrations, read from the source text: a detailed processing
 # record would show them as macro instantiations, but it triples the number
 # of top-level cursors (every macro of every header) and so the walk time
@@ -62,6 +60,9 @@ PARSE_OPTIONS = ci.TranslationUnit.PARSE_INCOMPLETE
 
 # how many parse errors of one TU are kept in the summary
 MAX_DIAGNOSTICS_PER_TU = 5
+
+
+_SMART_POINTER = re.compile(r'^(?:std|boost)::(?:shared_ptr|unique_ptr)<')
 
 
 class _MemberInit:
@@ -128,73 +129,6 @@ def extract_facts(tu, *, package_path, source):
     return walker.facts
 
 
-def same_cursor(a, b):
-    """Whether two cursors are the same; None is no cursor, never equal.
-
-    libclang returns None (or a null cursor) for what invalid code leaves
-    unresolved, and ``Cursor.__eq__`` raises on anything but a cursor.
-    """
-    return a is not None and b is not None and a == b
-
-
-def qualified_name(cursor):
-    """Return ``ns::Class::name`` of a declaration (no template args)."""
-    parts = []
-    while cursor is not None and cursor.kind != CK.TRANSLATION_UNIT:
-        if cursor.spelling:
-            parts.append(cursor.spelling)
-        cursor = cursor.semantic_parent
-    return '::'.join(reversed(parts))
-
-
-_MSG_ALLOCATOR = re.compile(r'(\w+)_<\s*(?:class\s+)?std::allocator<void>\s*>')
-_MSG_WRAPPER = re.compile(
-    r'^(?:(?:boost|std)::(?:shared_ptr|unique_ptr)|ros::MessageEvent)'
-    r'<(.*?)(?:,std::default_delete<.*>)?>$')
-
-
-def normalize_msg_type(spelling):
-    """``const std_msgs::String::ConstPtr &`` -> ``std_msgs::String``."""
-    if not spelling:
-        return None
-    text = _MSG_ALLOCATOR.sub(r'\1', spelling)
-    text = re.sub(r'\b(?:const|volatile|struct|class|typename)\b', '', text)
-    text = text.replace('&', '').replace('*', '').strip()
-    text = re.sub(r'\s+', ' ', text)
-    for _ in range(3):
-        match = _MSG_WRAPPER.match(text.replace(' ', ''))
-        if not match:
-            break
-        text = match.group(1)
-    text = text.replace(' ', '')
-    # ROS 2 pointer aliases too: `M::SharedPtr`, `M::ConstSharedPtr`, ...
-    text = re.sub(
-        r'::(?:ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr|'
-        r'ConstUniquePtr)$', '', text)
-    return text or None
-
-
-_SMART_POINTER = re.compile(r'^(?:std|boost)::(?:shared_ptr|unique_ptr)<')
-
-
-def _first_template_argument(spelling):
-    start = spelling.find('<')
-    if start < 0:
-        return None
-    depth = 0
-    for i in range(start, len(spelling)):
-        ch = spelling[i]
-        if ch == '<':
-            depth += 1
-        elif ch == '>':
-            depth -= 1
-            if depth == 0:
-                return spelling[start + 1:i]
-        elif ch == ',' and depth == 1:
-            return spelling[start + 1:i]
-    return None
-
-
 def _expression_text(cursor):
     """The source text of an expression, tokens joined readably."""
     text = ''
@@ -209,47 +143,10 @@ def _expression_text(cursor):
     return text
 
 
-def _children(cursor):
-    return list(cursor.get_children())
-
-
-def _walk_preorder(cursor, stop=LOOP_KINDS - LOOP_KINDS):
-    """Yield the cursors below `cursor` (not into `stop` kinds)."""
-    todo = _children(cursor)[::-1]
-    while todo:
-        current = todo.pop()
-        yield current
-        if current.kind not in stop:
-            todo.extend(_children(current)[::-1])
-
-
-def first_handle(cursor):
-    """The variable/field/parameter an object expression starts from."""
-    if cursor is None:
-        return None
-    candidates = [cursor] + list(_walk_preorder(
-        cursor, stop=frozenset({CK.LAMBDA_EXPR})))
-    for current in candidates:
-        if current.kind in REF_KINDS:
-            ref = current.referenced
-            if ref is not None and ref.kind in HANDLE_KINDS:
-                return ref
-    return None
-
-
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
 
 # the option objects roscpp's subscribe/advertise also take
 _OPTIONS_TYPES = frozenset({'ros::SubscribeOptions', 'ros::AdvertiseOptions'})
-
-
-def first_function(cursor):
-    """The function a callable expression names (``&C::f``, ``f``)."""
-    for current in [cursor] + list(_walk_preorder(cursor)):
-        if current.kind in REF_KINDS and current.referenced is not None and \
-                current.referenced.kind in FUNCTION_KINDS:
-            return current.referenced
-    return None
 
 
 def _overload_candidate(call):
@@ -259,10 +156,10 @@ def _overload_candidate(call):
     overload set unresolved; when every candidate has the same qualified
     name, the call is still that API.
     """
-    children = _children(call)
+    children = child_cursors(call)
     if not children:
         return None
-    for current in [children[0]] + list(_walk_preorder(children[0])):
+    for current in [children[0]] + list(walk_preorder(children[0])):
         if current.kind != CK.OVERLOADED_DECL_REF:
             continue
         count = ci.conf.lib.clang_getNumOverloadedDecls(current)
@@ -275,20 +172,6 @@ def _overload_candidate(call):
     return None
 
 
-def _call_object(call):
-    """The object expression of a member call, or None."""
-    children = _children(call)
-    if not children:
-        return None
-    callee = children[0]
-    if callee.kind == CK.MEMBER_REF_EXPR:
-        for child in _children(callee):
-            if child.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
-                                  CK.TEMPLATE_REF):
-                return child
-    return None
-
-
 def _made_class(call):
     """The declaration of X in a ``make_shared<X>(...)`` call, or None."""
     made = call.type.get_canonical()
@@ -298,25 +181,6 @@ def _made_class(call):
     if declaration is None or declaration.kind == CK.NO_DECL_FOUND:
         return None
     return declaration
-
-
-def _explicit_template_type(call):
-    """The first explicit template argument written at a call site."""
-    children = _children(call)
-    if not children:
-        return None
-    callee = children[0]
-    candidates = [callee] + _children(callee)
-    if callee.kind == CK.UNEXPOSED_EXPR and _children(callee):
-        candidates += _children(_children(callee)[0])
-    # not the class of a static member (`ros::SubscribeOptions::create<M>`)
-    owner = call.referenced.semantic_parent \
-        if call.referenced is not None else None
-    for child in candidates:
-        if child.kind == CK.TYPE_REF and not (
-                owner is not None and same_cursor(child.referenced, owner)):
-            return child.type.spelling or child.spelling
-    return None
 
 
 class _Walker:
@@ -347,6 +211,8 @@ class _Walker:
         self._concatenated = []
         # declarations whose walk failed: one line each, the rest goes on
         self.problems = []
+        # the workspace's wrapper functions this unit calls
+        self._wrappers = wrappers.Summaries(self)
 
     # --- locations ---------------------------------------------------------
 
@@ -360,6 +226,19 @@ class _Walker:
             cached = os.path.abspath(name).startswith(self.package_path)
             self._in_package_cache[name] = cached
         return cached
+
+    def is_workspace_declaration(self, cursor):
+        """Whether a declaration is in another package of the workspace.
+
+        Its body is the workspace's code: not a system, model or stand-in
+        header.
+        """
+        file = cursor.location.file
+        if file is None:
+            return False
+        name = os.path.abspath(file.name)
+        return not name.startswith(('/usr/', '/opt/', MODEL_HEADERS_DIR)) \
+            and '/rsia/stubs/' not in name and '/rsia_model/' not in name
 
     def relpath(self, cursor):
         name = os.path.abspath(cursor.location.file.name)
@@ -615,7 +494,7 @@ class _Walker:
                 self._lambdas_in_variables.add(self._lambda_id(init))
             elif init is not None and _is_callable(cursor):
                 self._store_callable(cursor, init)
-        children = _children(cursor)
+        children = child_cursors(cursor)
         stack.append(cursor)
         if kind in LOOP_KINDS:
             ctx.loops.append((self.loop_id(cursor), ctx.conditional, cursor))
@@ -719,7 +598,7 @@ class _Walker:
             self._dependent_call(cursor, ctx, stack)
             return
         if cursor.spelling == 'operator=':
-            children = _children(cursor)
+            children = child_cursors(cursor)
             target = first_handle(children[0]) if children else None
             if target is not None and _is_callable(target):
                 self._store_callable(target, children[-1])
@@ -737,6 +616,9 @@ class _Walker:
             self._forwarded_package_constructor(cursor, ctx)
             name, api = self._forwarded_constructor(cursor)
         if api is None:
+            if ref.kind in FUNCTION_KINDS and \
+                    self.is_workspace_declaration(ref):
+                self._wrapper_call(cursor, ctx, stack, ref)
             return
         arguments = list(cursor.get_arguments())
         handler = getattr(self, '_on_' + api.role)
@@ -750,23 +632,93 @@ class _Walker:
         AST does not show: the endpoint-creating methods are recognised by
         their name (see ros_api.DEPENDENT_METHODS).
         """
-        children = _children(cursor)
-        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
-            return
-        # a dependent member has no spelling: the name follows `.`/`->`
-        tokens = [t.spelling for t in source_tokens(children[0])]
-        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
-        if not accesses:
-            return
-        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
-        if not rest:
-            return
-        name = ros_api.dependent_method(rest[0], ros2=self._ros2)
+        name = self.dependent_call_name(cursor)
         if name is None:
             return
         api = ros_api.lookup_call(name)
         handler = getattr(self, '_on_' + api.role)
         handler(cursor, ctx, stack, api, name, list(cursor.get_arguments()))
+
+    def dependent_call_name(self, cursor):
+        """The API a call on a template-dependent object names, or None."""
+        children = child_cursors(cursor)
+        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
+            return None
+        # a dependent member has no spelling: the name follows `.`/`->`
+        tokens = [t.spelling for t in source_tokens(children[0])]
+        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
+        if not accesses:
+            return None
+        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
+        if not rest:
+            return None
+        return ros_api.dependent_method(rest[0], ros2=self._ros2)
+
+    def _wrapper_call(self, cursor, ctx, stack, ref):
+        """A call of a workspace wrapper: the facts its summary gives.
+
+        See :mod:`colcon_rsia.frontend.wrappers`. An endpoint the wrapper
+        keeps in a member of a helper object is the handle
+        ``<object>|<member>``, which the object's publishing methods
+        publish through.
+        """
+        summary = self._wrappers.of(ref)
+        if not summary.endpoints and not summary.publishes_members:
+            return
+        arguments = list(cursor.get_arguments())
+        target = self._target(cursor, stack)
+        obj = first_handle(call_object(cursor))
+        name = qualified_name(ref)
+        written = explicit_template_type(cursor) or \
+            first_template_argument(cursor.type.get_canonical().spelling)
+        location = self.location(cursor)
+
+        def argument(index):
+            return arguments[index] \
+                if index is not None and index < len(arguments) else None
+        for endpoint in summary.endpoints:
+            if endpoint.topic_param is not None:
+                topic, literal = self._topic(argument(endpoint.topic_param))
+            else:
+                topic, literal = endpoint.topic, endpoint.topic_is_literal
+            msg_type = endpoint.msg_type or (
+                normalize_msg_type(written)
+                if endpoint.msg_type_from_call else None)
+            holder = target if ref.kind == CK.CONSTRUCTOR else obj
+            if endpoint.member is not None and holder is not None:
+                handle = f'{holder.get_usr()}|{endpoint.member}'
+            elif target is not None and endpoint.member is None:
+                handle = target.get_usr()
+            else:
+                handle = f'wrapper@{location}'
+            common = dict(
+                function=ctx.function, api=name, topic=topic,
+                topic_is_literal=literal, msg_type=msg_type, handle=handle,
+                location=location)
+            if endpoint.role == wrappers.ROLE_PUBLISHER:
+                self.facts.publishers.append(model.PublisherFact(
+                    handle_name=target.spelling if target is not None
+                    else None, **common))
+            else:
+                callback, declaration = self._resolve_callback(
+                    argument(endpoint.callback_param))
+                # a message type the wrapper deduces from the callback
+                common['msg_type'] = common['msg_type'] or \
+                    self._callback_msg_type(declaration)
+                self.facts.subscribers.append(model.SubscriberFact(
+                    callback=callback, **common))
+            if endpoint.publishes:
+                self._publish_site(ctx, stack, cursor, name, handle)
+        if obj is not None:
+            for member in sorted(summary.publishes_members):
+                self._publish_site(ctx, stack, cursor, name,
+                                   f'{obj.get_usr()}|{member}')
+
+    def _publish_site(self, ctx, stack, cursor, api, handle):
+        self.facts.publish_sites.append(model.PublishSite(
+            function=ctx.function, api=api, handle=handle,
+            location=self.location(cursor), loops=ctx.loop_ids(),
+            every=every_nth(stack + [cursor])))
 
     def _forwarded_package_constructor(self, cursor, ctx):
         """make_shared<C>(args) of a package class calls C's constructor.
@@ -805,7 +757,7 @@ class _Walker:
         if declaration is not None:
             class_name = qualified_name(declaration)
         else:
-            class_name = _explicit_template_type(cursor)
+            class_name = explicit_template_type(cursor)
         if not class_name:
             return None, None
         class_name = re.sub(r'<.*', '', class_name).strip()
@@ -822,7 +774,7 @@ class _Walker:
             return None, False
         literals = []
         has_variable = False
-        for current in [argument] + list(_walk_preorder(argument)):
+        for current in [argument] + list(walk_preorder(argument)):
             if current.kind == CK.STRING_LITERAL:
                 literals.append(current)
             elif current.kind in REF_KINDS and current.referenced is not None \
@@ -873,7 +825,7 @@ class _Walker:
 
     def _bound_arguments(self, argument):
         """Handles bound by boost::bind / std::bind to the callback."""
-        for current in [argument] + list(_walk_preorder(
+        for current in [argument] + list(walk_preorder(
                 argument, stop=frozenset({CK.LAMBDA_EXPR}))):
             if current.kind != CK.CALL_EXPR or current.referenced is None or \
                     qualified_name(current.referenced) not in BIND_FUNCTIONS:
@@ -896,7 +848,7 @@ class _Walker:
         if argument is None:
             return None, None
         self._bound_arguments(argument)
-        for current in [argument] + list(_walk_preorder(
+        for current in [argument] + list(walk_preorder(
                 argument, stop=frozenset({CK.LAMBDA_EXPR}))):
             if current.kind == CK.LAMBDA_EXPR:
                 self._consumed.add(self.key(current))
@@ -959,25 +911,25 @@ class _Walker:
             if kind in STATEMENT_KINDS:
                 return None
             if kind == CK.CALL_EXPR:
-                children = _children(parent)
+                children = child_cursors(parent)
                 if parent.spelling == 'operator=' and children:
                     return first_handle(children[0])
-                obj = _call_object(parent)
+                obj = call_object(parent)
                 if obj is not None and obj.extent.end.offset <= start:
                     # x.reset(new ...), v.push_back(nh.advertise(...))
                     return first_handle(obj)
             if kind == CK.BINARY_OPERATOR:
-                children = _children(parent)
+                children = child_cursors(parent)
                 if children and _binary_operator(parent, children[0]) == '=':
                     return first_handle(children[0])
         return None
 
     def _namespace_of(self, call):
         """The NodeHandle a create call was made on: USR or marker."""
-        obj = _call_object(call)
+        obj = call_object(call)
         if obj is None:
             return None
-        for current in [obj] + list(_walk_preorder(obj)):
+        for current in [obj] + list(walk_preorder(obj)):
             if current.kind == CK.CALL_EXPR and current.referenced is not None:
                 api = ros_api.lookup_call(qualified_name(current.referenced))
                 if api is not None and api.role == ros_api.PRIVATE_HANDLE:
@@ -1051,8 +1003,8 @@ class _Walker:
     def _template_msg_type(self, cursor, name):
         """The message type from ``<M>`` at the call or in the class."""
         return normalize_msg_type(
-            _explicit_template_type(cursor) or
-            _first_template_argument(self._object_type(cursor, name)))
+            explicit_template_type(cursor) or
+            first_template_argument(self._object_type(cursor, name)))
 
     def _endpoints(self, cursor, ctx, api, name, arguments, topic, literal,
                    msg_type, target):
@@ -1083,13 +1035,13 @@ class _Walker:
         if name.split('::')[-1] == name.split('::')[-2]:
             type_ = cursor.type
         else:
-            obj = _call_object(cursor)
+            obj = call_object(cursor)
             if obj is None:
                 return ''
             type_ = obj.type
         spelling = type_.get_canonical().spelling
         if _SMART_POINTER.match(spelling):
-            spelling = _first_template_argument(spelling) or spelling
+            spelling = first_template_argument(spelling) or spelling
         return spelling
 
     def _table_msg_type(self, msg_type):
@@ -1124,12 +1076,12 @@ class _Walker:
         scopes = [handle] + ([handle.semantic_parent]
                              if handle.kind == CK.VAR_DECL else [])
         for scope in scopes:
-            for node in _walk_preorder(scope):
+            for node in walk_preorder(scope):
                 if node.kind != CK.CALL_EXPR or node.referenced is None or \
                         qualified_name(node.referenced) not in fillers:
                     continue
                 if scope is handle or same_cursor(
-                        first_handle(_call_object(node)), handle):
+                        first_handle(call_object(node)), handle):
                     found = node  # the last one written wins
             if found is not None:
                 return found
@@ -1165,7 +1117,7 @@ class _Walker:
                 self._callback_msg_type(declaration)
         target = self._target(cursor, stack)
         if target is None and api.callback_arg is None:
-            target = first_handle(_call_object(cursor))
+            target = first_handle(call_object(cursor))
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
             self.facts.subscribers.append(model.SubscriberFact(
@@ -1198,7 +1150,7 @@ class _Walker:
         argument = self._argument(arguments, api.name_arg)
         if argument is None:
             return None
-        for current in [argument] + list(_walk_preorder(argument)):
+        for current in [argument] + list(walk_preorder(argument)):
             if current.kind != CK.CALL_EXPR or current.referenced is None:
                 continue
             read = ros_api.lookup_call(qualified_name(current.referenced))
@@ -1332,7 +1284,7 @@ class _Walker:
         callbacks = self._callbacks(arguments, api.callback_arg) \
             if api.callback_arg is not None else []
         is_registration = api.name_arg is None
-        target = first_handle(_call_object(cursor)) if is_registration \
+        target = first_handle(call_object(cursor)) if is_registration \
             else self._target(cursor, stack)
         self.facts.actions.append(model.ActionFact(
             function=ctx.function, api=ros_api.api_label(name), role=role,
@@ -1342,12 +1294,9 @@ class _Walker:
             else 'registration:' + self.location(cursor)))
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
-        handle = first_handle(_call_object(cursor))
-        self.facts.publish_sites.append(model.PublishSite(
-            function=ctx.function, api=name,
-            handle=handle.get_usr() if handle is not None else None,
-            location=self.location(cursor), loops=ctx.loop_ids(),
-            every=every_nth(stack + [cursor])))
+        handle = first_handle(call_object(cursor))
+        self._publish_site(ctx, stack, cursor, name,
+                           handle.get_usr() if handle is not None else None)
 
     def _on_rate(self, cursor, ctx, stack, api, name, arguments):
         target = self._target(cursor, stack)
@@ -1368,7 +1317,7 @@ class _Walker:
             location=self.location(cursor)))
 
     def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
-        handle = first_handle(_call_object(cursor))
+        handle = first_handle(call_object(cursor))
         if handle is None or not ctx.loops:
             return
         loop_id, conditional_at_entry, loop = ctx.loops[-1]
@@ -1394,7 +1343,7 @@ class _Walker:
             if handle is not None:
                 inputs.append(handle.get_usr())
         if name.endswith('::connectInput'):
-            target = first_handle(_call_object(cursor))
+            target = first_handle(call_object(cursor))
         else:
             target = self._target(cursor, stack)
         self.facts.syncs.append(model.SyncFact(
@@ -1405,7 +1354,7 @@ class _Walker:
                               arguments):
         callback, _ = self._resolve_callback(
             self._argument(arguments, api.callback_arg))
-        handle = first_handle(_call_object(cursor))
+        handle = first_handle(call_object(cursor))
         self.facts.registrations.append(model.Registration(
             function=ctx.function,
             handle=handle.get_usr() if handle is not None else None,
@@ -1519,7 +1468,7 @@ def _string_parts(expression, depth=0):
         if expression.spelling == 'basic_string' and arguments:
             # std::string(text): the constructor (its allocator defaulted)
             return _string_parts(arguments[0], depth + 1)
-    children = [c for c in _children(expression) if c.kind not in (
+    children = [c for c in child_cursors(expression) if c.kind not in (
         CK.NAMESPACE_REF, CK.TYPE_REF, CK.TEMPLATE_REF)]
     if kind in _STRING_WRAPPERS and len(children) == 1:
         return _string_parts(children[0], depth + 1)
@@ -1602,7 +1551,7 @@ def _continue_before(loop, sleep):
     """Whether a `continue` of this loop comes before the sleep call."""
     file = sleep.extent.start.file
     where = sleep.extent.start.offset
-    todo = _children(loop)
+    todo = child_cursors(loop)
     while todo:
         current = todo.pop()
         if current.kind == CK.CONTINUE_STMT and \
@@ -1612,7 +1561,7 @@ def _continue_before(loop, sleep):
             return True
         if current.kind in LOOP_KINDS or current.kind == CK.LAMBDA_EXPR:
             continue  # an inner loop's continue is its own
-        todo.extend(_children(current))
+        todo.extend(child_cursors(current))
     return False
 
 
@@ -1635,7 +1584,7 @@ def _period_rate_hz(argument):
     seconds = evaluate_duration_seconds(argument)
     if seconds:
         return _round(1.0 / seconds)
-    for current in [argument] + list(_walk_preorder(argument)):
+    for current in [argument] + list(walk_preorder(argument)):
         if current.kind == CK.CALL_EXPR and current.referenced is not None \
                 and qualified_name(current.referenced) == \
                 'rclcpp::Duration::from_seconds':

@@ -193,6 +193,14 @@ def prepare_model_arguments(*, source, arguments, package_path,
             f"the stub directory '{stub_dir}' lies in a package's source "
             'directory; stand-ins are never written among the sources')
     kept, search = _filter_arguments(arguments, roots, directory)
+    # a built workspace's database names the other packages' installed
+    # headers, outside the sources: their sources' include/ stand for them
+    # (a wrapper's body is read there)
+    for package_dir in workspace_package_dirs:
+        include = os.path.join(_real(package_dir), 'include')
+        if os.path.isdir(include) and ('-I', include) not in search:
+            kept += ['-I', include]
+            search.append(('-I', include))
     scanner = _Scanner(roots=roots, search=search, stub_dir=stub_dir)
     scanner.scan(os.path.abspath(source))
     # the sources as code: no comments, literals or include lines

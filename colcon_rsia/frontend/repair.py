@@ -57,6 +57,10 @@ _ARGUMENT_NOT_VALUE = re.compile(
     r"^'\w+' does not refer to a value|"
     r"^expected '\(' for function-style cast")
 _UNDEFINED_MACRO = re.compile(r"^function-like macro '(\w+)' is not defined")
+# `::gen::ParamListener` of a generated header: the scope is unknown
+_NOT_A_SCOPE = re.compile(
+    r"^'(\w+)' is not a class, namespace, or enumeration$|"
+    r"^no (?:member|type|template) named '(\w+)' in the global namespace$")
 _OVERRIDE = re.compile(
     r"only virtual member functions can be marked '(?:override|final)'|"
     r"marked '(?:override|final)' but does not override")
@@ -90,6 +94,9 @@ NO_OVERRIDE = 'no-override'        # `override` made a no-op
 MEMBER = 'member'                  # a static member of a type declared here
 MEMBER_TYPE = 'member-type'        # a nested type of a type declared here
 STD_HEADER = 'std-header'          # a standard header to include
+HEADER = 'header'                  # a model or stand-in header declaring it
+# repairs that include a header rather than declare a name
+INCLUDES = (STD_HEADER, HEADER)
 
 # when one name is asked for as several kinds, the first of these wins
 # (a name used as a type somewhere is a class, even where `Name::` made it
@@ -204,7 +211,7 @@ _shared_lock = threading.Lock()
 
 def _shareable(repair):
     kind, name = repair
-    return kind == STD_HEADER or kind.startswith('macro-') or (
+    return kind in INCLUDES or kind.startswith('macro-') or (
         '::' in name and kind not in (MEMBER, MEMBER_TYPE))
 
 
@@ -228,7 +235,7 @@ def seed_repairs(header, source, declared):
     # another unit lacked: only names declared in neither are seeded
     declared = set(declared) | model_declarations()
     seeds = {r for r in shared
-             if r[0] == STD_HEADER or not _declared(r[1], declared)}
+             if r[0] in INCLUDES or not _declared(r[1], declared)}
     return bool(seeds) and add_repairs(header, source, seeds)
 
 
@@ -242,7 +249,7 @@ def _read_shared(path):
 
 
 def repairs_from_diagnostics(diagnostics, read_line, texts=(),
-                             declared=frozenset()):
+                             declared=frozenset(), stand_in=None):
     """{(kind, qualified name)} that would fix these errors.
 
     :param diagnostics: (message, file, line, column) of each error
@@ -253,16 +260,53 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
     :param declared: names the package's own code declares (see
       :func:`declared_names`): never declared again, their errors come
       from elsewhere
+    :param stand_in: whether the unit's stand-ins hold a header (relative
+      path), so that a message named before its header is included is
+      included, not declared; None: never
     """
     repairs = _repairs(diagnostics, read_line)
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
             repairs |= _uses_of_namespace(name, texts)
-    return _one_kind_each({
+    return {_included(r, stand_in) for r in _one_kind_each({
         r for r in repairs
-        if r[0] == STD_HEADER or (
+        if r[0] in INCLUDES or (
             not _declared(r[1], declared) and
-            not any(part in _KEYWORDS for part in r[1].split('::')))})
+            not any(part in _KEYWORDS for part in r[1].split('::')))})}
+
+
+def _included(repair, stand_in):
+    """A name a model or stand-in header declares: include that header.
+
+    A unit may use ``rclcpp::Duration`` or ``geometry_msgs::msg::Polygon``
+    before it includes their header (through a header of an unknown
+    library); a declaration of our own would then clash with the header's.
+    """
+    kind, name = repair
+    if kind in INCLUDES or kind in (MEMBER, MEMBER_TYPE) or \
+            kind.startswith('macro-') or kind == NO_OVERRIDE:
+        return repair
+    header = model_header_for(name)
+    if header is None and stand_in is not None:
+        header = _interface_header(name)
+        if header is not None and not stand_in(header):
+            header = None
+    return (HEADER, header) if header else repair
+
+
+_INTERFACE = re.compile(r'^(\w+)::(msg|srv|action)::([A-Z]\w*)$')
+
+
+def _interface_header(name):
+    """``pkg/msg/pose_stamped.hpp`` of ``pkg::msg::PoseStamped``."""
+    match = _INTERFACE.match(name)
+    if not match:
+        return None
+    package, kind, type_name = match.groups()
+    # rosidl's file names: GPSFix -> gps_fix, PoseStamped -> pose_stamped
+    snake = re.sub(r'(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])', '_',
+                   type_name).lower()
+    return f'{package}/{kind}/{snake}.hpp'
 
 
 def _rank(kind):
@@ -294,7 +338,7 @@ def _one_kind_each(repairs):
     result = set()
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
-        if owner in classes and kind not in (MEMBER, MEMBER_TYPE, STD_HEADER):
+        if owner in classes and kind not in (MEMBER, MEMBER_TYPE) + INCLUDES:
             kind = MEMBER_TYPE if _base_kind(kind) in (TYPE, TEMPLATE) \
                 else MEMBER
         elif any(name.startswith(c + '::') for c in classes if c != owner):
@@ -351,6 +395,38 @@ def model_declarations():
                         texts.append(h.read())
             _model_declarations.append(declared_names(texts))
         return _model_declarations[0]
+
+
+_model_header_index = []
+_NAMESPACE_OPENED = re.compile(r'\bnamespace\s+(\w+)\s*\{')
+
+
+def model_header_for(name):
+    """The model header (relative path) that declares a qualified name.
+
+    One that opens the name's first namespace and declares its last part;
+    of several, the one in that namespace's directory, then the shortest.
+    """
+    *namespaces, short = name.split('::')
+    if not namespaces:
+        return None
+    with _shared_lock:
+        if not _model_header_index:
+            for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
+                for file in sorted(files):
+                    path = os.path.join(root, file)
+                    with open(path, encoding='utf-8', errors='replace') as h:
+                        text = h.read()
+                    _model_header_index.append((
+                        os.path.relpath(path, MODEL_HEADERS_DIR),
+                        set(_NAMESPACE_OPENED.findall(text)),
+                        declared_names([text])))
+    found = [path for path, opened, names in _model_header_index
+             if namespaces[0] in opened and short in names]
+    if not found:
+        return None
+    return min(found, key=lambda p: (
+        not p.startswith(namespaces[0] + '/'), len(p), p))
 
 
 def _uses_of_namespace(namespace, texts):
@@ -456,6 +532,12 @@ def _repairs(diagnostics, read_line):
                         _USING_DECLARATION.search(text[:max(0, column - 1)]):
                     kind = TYPE
             repairs.add((kind, f'{namespace}::{name}'))
+            continue
+        match = _NOT_A_SCOPE.match(message)
+        if match and (match.group(1) or after.startswith('::')):
+            name = _qualified(match.group(1), text, column) \
+                if match.group(1) else match.group(2)
+            repairs.add((NAMESPACE, name))
             continue
         match = _UNDEFINED_MACRO.match(message)
         if match:
@@ -615,7 +697,7 @@ def _render(repairs, source):
         *namespaces, short = name.split('::')
         if kind in (MEMBER, MEMBER_TYPE):
             continue  # in its type's declaration
-        if kind == STD_HEADER:
+        if kind in INCLUDES:
             lines.append(f'#include <{name}>')
             continue
         if kind == NO_OVERRIDE:

@@ -348,6 +348,8 @@ DEPENDENT_METHODS = {
     'create_publisher': (None, 'rclcpp::Node::create_publisher'),
     'create_subscription': (None, 'rclcpp::Node::create_subscription'),
     'create_wall_timer': (None, 'rclcpp::Node::create_wall_timer'),
+    # a publisher of a template's message type (a wrapper's)
+    'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish'),
 }
 
 

@@ -434,7 +434,9 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
             errors, read_line,
             texts=[text_of(f) for f in sorted({e[1] for e in errors})],
             declared=repair.declared_names(
-                text_of(f) for f in sorted(own_files)))
+                text_of(f) for f in sorted(own_files)),
+            stand_in=lambda relative: os.path.isfile(
+                os.path.join(stub_dir, relative)))
         if not repair.add_repairs(header, relative, repairs):
             break
         rounds += 1
@@ -587,6 +589,7 @@ def _plugin_nodes(package, path, merged, exported):
             node_id=plugin if '/' in plugin else f'{package}/{plugin}',
             host=host, host_roots=host_roots)
         node.base_class = base
+        node.plugin_class = class_name
         if host is None and not (node.publishers or node.subscribers or
                                  node.timers or node.services or
                                  node.actions):

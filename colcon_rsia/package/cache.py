@@ -42,7 +42,8 @@ def _frontend_digest():
         files = [os.path.join(here, relative) for relative in (
             'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
             'frontend/ros_api.py', 'frontend/model_mode.py',
-            'frontend/repair.py', 'frontend/every_nth.py')]
+            'frontend/repair.py', 'frontend/every_nth.py',
+            'frontend/wrappers.py')]
         for root, dirs, names in sorted(os.walk(
                 os.path.join(here, 'frontend', 'model_headers'))):
             dirs.sort()

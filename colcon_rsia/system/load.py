@@ -4,6 +4,7 @@
 
 import os
 
+from colcon_rsia.system import hosts
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.graph import Instance
 from colcon_rsia.system.names import join
@@ -80,6 +81,7 @@ def launch_instances(summaries, result):
     :returns: the instances and notes on what could not be matched
     """
     nodes = {}
+    plugins = [n for s in summaries for n in s.nodes if n.kind == 'plugin']
     for summary in summaries:
         for node in summary.nodes:
             nodes.setdefault((node.package, node.executable), []).append(node)
@@ -103,7 +105,50 @@ def launch_instances(summaries, result):
             for note in launched.unresolved:
                 notes.append(f'{instance.id}: {note}')
             instances.append(instance)
+            instances += _hosted_instances(instance, plugins, notes)
     return instances, notes
+
+
+def _hosted_instances(host, plugins, notes):
+    """The plugins a launched host loads, as the parameters name them.
+
+    A ros2_control controller is a node of its own, named after its key in
+    the controller manager's parameters; a navigation plugin runs in its
+    server's node (its id is the server's name, then the plugin's). Either
+    way the host's remaps apply.
+    """
+    found = hosts.hosted_plugins(
+        host.package, host.executable, host.params)
+    if not found:
+        return []
+    style = hosts.LAUNCHED_HOSTS[(host.package, host.executable)].style
+    hosted = []
+    for name, plugin_type in found:
+        node = _plugin_node(plugins, plugin_type)
+        if node is None:
+            notes.append(f'{host.id}: plugin {name} ({plugin_type}) is no '
+                         'analysed plugin; left out')
+            continue
+        instance = Instance(
+            id='', node=node, package=node.package,
+            executable=node.executable,
+            name=name if style == hosts.OWN_NODE else host.name,
+            namespace=host.namespace, remaps=list(host.remaps),
+            location=host.location)
+        instance.id = instance.fqn if style == hosts.OWN_NODE \
+            else f'{instance.fqn}/{name}'
+        hosted.append(instance)
+    return hosted
+
+
+def _plugin_node(plugins, plugin_type):
+    """The plugin node a host's type name (``pkg/Name``, ``ns::Class``)."""
+    wanted = plugin_type.strip().lstrip(':')
+    as_class = wanted.replace('/', '::')
+    for node in plugins:
+        if node.id == wanted or node.plugin_class == as_class:
+            return node
+    return None
 
 
 def _launched_instance(launched, node, package, executable, several):

@@ -1,0 +1,174 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Questions about libclang cursors that the C++ front end asks.
+
+Names, message types, children, the object of a member call, the handle
+an expression starts from: shared by the walk of a unit
+(:mod:`colcon_rsia.frontend.cpp`) and the summaries of the workspace's
+wrappers (:mod:`colcon_rsia.frontend.wrappers`).
+"""
+
+import re
+
+import clang.cindex as ci
+
+CK = ci.CursorKind
+
+FUNCTION_KINDS = frozenset({
+    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.CONSTRUCTOR, CK.DESTRUCTOR,
+    CK.FUNCTION_TEMPLATE, CK.CONVERSION_FUNCTION,
+})
+CLASS_KINDS = frozenset({
+    CK.CLASS_DECL, CK.STRUCT_DECL, CK.CLASS_TEMPLATE,
+    CK.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION, CK.UNION_DECL,
+})
+SCOPE_KINDS = CLASS_KINDS | {CK.NAMESPACE, CK.LINKAGE_SPEC}
+LOOP_KINDS = frozenset({
+    CK.WHILE_STMT, CK.FOR_STMT, CK.DO_STMT, CK.CXX_FOR_RANGE_STMT})
+HANDLE_KINDS = frozenset({CK.VAR_DECL, CK.FIELD_DECL, CK.PARM_DECL})
+# calls computing a value (constructors and conversions only wrap one)
+VALUE_FUNCTION_KINDS = frozenset({
+    CK.FUNCTION_DECL, CK.CXX_METHOD, CK.FUNCTION_TEMPLATE})
+REF_KINDS = frozenset({CK.DECL_REF_EXPR, CK.MEMBER_REF_EXPR})
+# statements end the search for the variable a call's result is stored in
+STATEMENT_KINDS = frozenset({
+    CK.COMPOUND_STMT, CK.RETURN_STMT, CK.IF_STMT, CK.WHILE_STMT,
+    CK.FOR_STMT, CK.DO_STMT, CK.SWITCH_STMT, CK.LAMBDA_EXPR,
+    CK.CXX_FOR_RANGE_STMT,
+})
+
+
+def same_cursor(a, b):
+    """Whether two cursors are the same; None is no cursor, never equal.
+
+    libclang returns None (or a null cursor) for what invalid code leaves
+    unresolved, and ``Cursor.__eq__`` raises on anything but a cursor.
+    """
+    return a is not None and b is not None and a == b
+
+
+def qualified_name(cursor):
+    """Return ``ns::Class::name`` of a declaration (no template args)."""
+    parts = []
+    while cursor is not None and cursor.kind != CK.TRANSLATION_UNIT:
+        if cursor.spelling:
+            parts.append(cursor.spelling)
+        cursor = cursor.semantic_parent
+    return '::'.join(reversed(parts))
+
+
+_MSG_ALLOCATOR = re.compile(r'(\w+)_<\s*(?:class\s+)?std::allocator<void>\s*>')
+_MSG_WRAPPER = re.compile(
+    r'^(?:(?:boost|std)::(?:shared_ptr|unique_ptr)|ros::MessageEvent)'
+    r'<(.*?)(?:,std::default_delete<.*>)?>$')
+
+
+def normalize_msg_type(spelling):
+    """``const std_msgs::String::ConstPtr &`` -> ``std_msgs::String``."""
+    if not spelling:
+        return None
+    text = _MSG_ALLOCATOR.sub(r'\1', spelling)
+    text = re.sub(r'\b(?:const|volatile|struct|class|typename)\b', '', text)
+    text = text.replace('&', '').replace('*', '').strip()
+    text = re.sub(r'\s+', ' ', text)
+    for _ in range(3):
+        match = _MSG_WRAPPER.match(text.replace(' ', ''))
+        if not match:
+            break
+        text = match.group(1)
+    text = text.replace(' ', '')
+    # ROS 2 pointer aliases too: `M::SharedPtr`, `M::ConstSharedPtr`, ...
+    text = re.sub(
+        r'::(?:ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr|'
+        r'ConstUniquePtr)$', '', text)
+    return text or None
+
+
+def first_template_argument(spelling):
+    """``A`` of a type spelled ``X<A, B>``, or None."""
+    start = spelling.find('<')
+    if start < 0:
+        return None
+    depth = 0
+    for i in range(start, len(spelling)):
+        ch = spelling[i]
+        if ch == '<':
+            depth += 1
+        elif ch == '>':
+            depth -= 1
+            if depth == 0:
+                return spelling[start + 1:i]
+        elif ch == ',' and depth == 1:
+            return spelling[start + 1:i]
+    return None
+
+
+def child_cursors(cursor):
+    """The children of a cursor, as a list."""
+    return list(cursor.get_children())
+
+
+def walk_preorder(cursor, stop=LOOP_KINDS - LOOP_KINDS):
+    """Yield the cursors below `cursor` (not into `stop` kinds)."""
+    todo = child_cursors(cursor)[::-1]
+    while todo:
+        current = todo.pop()
+        yield current
+        if current.kind not in stop:
+            todo.extend(child_cursors(current)[::-1])
+
+
+def first_handle(cursor):
+    """The variable/field/parameter an object expression starts from."""
+    if cursor is None:
+        return None
+    candidates = [cursor] + list(walk_preorder(
+        cursor, stop=frozenset({CK.LAMBDA_EXPR})))
+    for current in candidates:
+        if current.kind in REF_KINDS:
+            ref = current.referenced
+            if ref is not None and ref.kind in HANDLE_KINDS:
+                return ref
+    return None
+
+
+def first_function(cursor):
+    """The function a callable expression names (``&C::f``, ``f``)."""
+    for current in [cursor] + list(walk_preorder(cursor)):
+        if current.kind in REF_KINDS and current.referenced is not None and \
+                current.referenced.kind in FUNCTION_KINDS:
+            return current.referenced
+    return None
+
+
+def call_object(call):
+    """The object expression of a member call, or None."""
+    children = child_cursors(call)
+    if not children:
+        return None
+    callee = children[0]
+    if callee.kind == CK.MEMBER_REF_EXPR:
+        for child in child_cursors(callee):
+            if child.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
+                                  CK.TEMPLATE_REF):
+                return child
+    return None
+
+
+def explicit_template_type(call):
+    """The first explicit template argument written at a call site."""
+    children = child_cursors(call)
+    if not children:
+        return None
+    callee = children[0]
+    candidates = [callee] + child_cursors(callee)
+    if callee.kind == CK.UNEXPOSED_EXPR and child_cursors(callee):
+        candidates += child_cursors(child_cursors(callee)[0])
+    # not the class of a static member (`ros::SubscribeOptions::create<M>`)
+    owner = call.referenced.semantic_parent \
+        if call.referenced is not None else None
+    for child in candidates:
+        if child.kind == CK.TYPE_REF and not (
+                owner is not None and same_cursor(child.referenced, owner)):
+            return child.type.spelling or child.spelling
+    return None

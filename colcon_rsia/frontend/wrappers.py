@@ -1,0 +1,265 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Summaries of the workspace's wrapper functions, across packages.
+
+The paper's per-function summaries, for the functions of other packages:
+a library package of the workspace often makes endpoints for the others:
+``make_publisher<M>(node, topic)``, a helper class whose constructor
+creates a publisher that its methods publish through, a debug publisher
+that creates one on first use. Their bodies are in headers the calling
+unit includes, so the walk of a call site can read them: a wrapper is
+summarised once per unit (which of its parameters is the topic, whether
+its template argument is the message type, which parameter is the
+callback, whether it publishes), and the call site gets the facts with
+its own arguments.
+
+Followed: publishers and subscriptions made from a parameter, a literal
+or an expression; the message type as a concrete type or the wrapper's
+template argument; callbacks passed as a parameter; publish calls in the
+wrapper; endpoints stored in a member of a helper object and published
+through by its other methods; wrappers calling wrappers (a few levels).
+"""
+
+from dataclasses import dataclass
+from typing import Optional
+
+import clang.cindex as ci
+from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.const_eval import source_tokens
+from colcon_rsia.frontend.cursors import call_object
+from colcon_rsia.frontend.cursors import explicit_template_type
+from colcon_rsia.frontend.cursors import first_handle
+from colcon_rsia.frontend.cursors import normalize_msg_type
+from colcon_rsia.frontend.cursors import qualified_name
+from colcon_rsia.frontend.cursors import walk_preorder
+
+CK = ci.CursorKind
+
+# wrappers calling wrappers: deeper chains are not followed
+MAX_DEPTH = 3
+
+ROLE_PUBLISHER = 'publisher'
+ROLE_SUBSCRIBER = 'subscriber'
+
+
+@dataclass
+class Endpoint:
+    """One endpoint a wrapper makes, in terms of its parameters."""
+
+    role: str                        # publisher | subscriber
+    topic_param: Optional[int]       # the parameter that is the topic
+    topic: Optional[str]             # else the topic as written inside
+    topic_is_literal: bool
+    msg_type: Optional[str]          # a concrete message type, or None:
+    msg_type_from_call: bool         # the call's template argument
+    callback_param: Optional[int]    # the parameter that is the callback
+    member: Optional[str]            # the field it is stored in (USR)
+    publishes: bool                  # the wrapper publishes through it
+
+
+@dataclass
+class Summary:
+    """What calling one wrapper does."""
+
+    endpoints: list
+    # fields of the wrapper's class it publishes through (USRs)
+    publishes_members: set
+
+
+EMPTY = Summary([], set())
+
+
+class Summaries:
+    """Wrapper summaries of one unit, computed once per wrapper."""
+
+    def __init__(self, walker):  # noqa: D107
+        self.walker = walker
+        self._done = {}
+
+    def of(self, declaration, depth=0):
+        """The summary of the function a call refers to."""
+        definition = _definition(declaration)
+        if definition is None:
+            return EMPTY
+        key = definition.get_usr() or str(definition.location)
+        if key not in self._done:
+            # a recursive wrapper meets its own (empty) summary
+            self._done[key] = EMPTY
+            if depth <= MAX_DEPTH:
+                self._done[key] = self._summarise(definition, depth)
+        return self._done[key]
+
+    def _summarise(self, definition, depth):
+        params = {p.get_usr(): i for i, p in enumerate(
+            c for c in definition.get_children() if c.kind == CK.PARM_DECL)}
+        type_params = _template_parameters(definition)
+        endpoints = []
+        members = set()
+        # a constructor's member initialisers run too
+        pending = None
+        initialised = {}
+        for child in definition.get_children():
+            if child.kind == CK.MEMBER_REF:
+                pending = child.referenced
+            elif pending is not None:
+                initialised[_key(child)] = pending
+                pending = None
+        # the body and the initialisers alike
+        nodes = [c for c in definition.get_children()
+                 if c.kind not in (CK.PARM_DECL, CK.TYPE_REF,
+                                   CK.NAMESPACE_REF, CK.TEMPLATE_REF)]
+        for node in nodes:
+            for call in [node] + list(walk_preorder(node)):
+                if call.kind != CK.CALL_EXPR:
+                    continue
+                self._call(call, params, type_params, depth, endpoints,
+                           members, initialised)
+        return Summary(endpoints, members)
+
+    def _call(self, call, params, type_params, depth, endpoints, members,
+              initialised):
+        ref = call.referenced
+        name = qualified_name(ref) if ref is not None else None
+        api = ros_api.lookup_call(name) if name else None
+        if api is None and ref is None:
+            name = self.walker.dependent_call_name(call)
+            api = ros_api.lookup_call(name) if name else None
+        arguments = list(call.get_arguments())
+        if api is not None and api.role in (ROLE_PUBLISHER, ROLE_SUBSCRIBER):
+            endpoints.append(self._endpoint(
+                call, api, arguments, params, type_params,
+                _stored_in(call, initialised)))
+            return
+        if api is not None and api.role == 'publish':
+            handle = first_handle(call_object(call))
+            if handle is not None and handle.kind == CK.FIELD_DECL:
+                members.add(handle.get_usr())
+            for endpoint in endpoints:
+                # publishing through what it just made (a map of them too)
+                if endpoint.member is None or handle is None or \
+                        endpoint.member == handle.get_usr():
+                    endpoint.publishes = True
+            return
+        if api is None and ref is not None and \
+                self.walker.is_workspace_declaration(ref):
+            inner = self.of(ref, depth + 1)
+            for endpoint in inner.endpoints:
+                endpoints.append(_through(
+                    endpoint, arguments, params, type_params))
+
+    def _endpoint(self, call, api, arguments, params, type_params, member):
+        topic_argument = self.walker._argument(arguments, api.name_arg)
+        topic_param = _parameter_index(topic_argument, params)
+        topic, literal = (None, False) if topic_param is not None else \
+            self.walker._topic(topic_argument)
+        written = explicit_template_type(call) or \
+            _written_template_argument(call)
+        msg_type = None
+        from_call = False
+        if written and written.split('::')[-1] in type_params:
+            from_call = True
+        elif written:
+            msg_type = normalize_msg_type(written)
+        callback_param = None
+        if api.callback_arg is not None:
+            callback_param = _parameter_index(
+                self.walker._argument(arguments, api.callback_arg), params)
+        return Endpoint(
+            role=api.role, topic_param=topic_param, topic=topic,
+            topic_is_literal=literal, msg_type=msg_type,
+            msg_type_from_call=from_call, callback_param=callback_param,
+            member=member.get_usr() if member is not None else None,
+            publishes=False)
+
+
+def _through(endpoint, arguments, params, type_params):
+    """An inner wrapper's endpoint, as this wrapper's parameters give it."""
+    def mapped(index):
+        if index is None or index >= len(arguments):
+            return None
+        return _parameter_index(arguments[index], params)
+    topic_param = mapped(endpoint.topic_param)
+    return Endpoint(
+        role=endpoint.role, topic_param=topic_param,
+        topic=endpoint.topic if endpoint.topic_param is None else (
+            None if topic_param is not None else '?'),
+        topic_is_literal=endpoint.topic_is_literal,
+        msg_type=endpoint.msg_type,
+        msg_type_from_call=endpoint.msg_type_from_call,
+        callback_param=mapped(endpoint.callback_param),
+        member=None, publishes=endpoint.publishes)
+
+
+def _definition(declaration):
+    """The definition of a function, also of a template's instantiation."""
+    candidates = [declaration]
+    # None for a function that is no template's instantiation
+    template = ci.conf.lib.clang_getSpecializedCursorTemplate(declaration)
+    if template is not None:
+        candidates.append(template)
+    for candidate in candidates:
+        definition = candidate.get_definition()
+        if definition is not None and any(
+                c.kind == CK.COMPOUND_STMT for c in definition.get_children()):
+            return definition
+    return None
+
+
+def _template_parameters(definition):
+    """The names of the template type parameters of a function and class."""
+    names = set()
+    for scope in (definition, definition.semantic_parent):
+        if scope is None:
+            continue
+        for child in scope.get_children():
+            if child.kind == CK.TEMPLATE_TYPE_PARAMETER:
+                names.add(child.spelling)
+    return names
+
+
+def _parameter_index(argument, params):
+    """The wrapper parameter an argument is, as a whole, or None."""
+    if argument is None:
+        return None
+    tokens = [t.spelling for t in source_tokens(argument)]
+    # std::forward<CallbackT>(callback), std::move(topic): the parameter
+    if len(tokens) > 1 and tokens[0] == 'std' and tokens[-1] == ')':
+        tokens = tokens[tokens.index('(') + 1:-1] if '(' in tokens else tokens
+    for current in [argument] + list(walk_preorder(argument)):
+        if current.kind == CK.DECL_REF_EXPR and current.referenced is not None \
+                and current.referenced.get_usr() in params and \
+                tokens == [current.spelling]:
+            return params[current.referenced.get_usr()]
+    return None
+
+
+def _written_template_argument(call):
+    """``T`` of ``node->template create_publisher<T>(...)`` as written."""
+    children = list(call.get_children())
+    if not children:
+        return None
+    tokens = [t.spelling for t in source_tokens(children[0])]
+    if '<' not in tokens:
+        return None
+    depth = 0
+    written = []
+    for token in tokens[tokens.index('<'):]:
+        depth += token.count('<') - token.count('>')
+        if depth <= 0:
+            break
+        written.append(token)
+    return ''.join(written[1:]) or None
+
+
+def _key(cursor):
+    return (cursor.extent.start.offset, cursor.extent.end.offset)
+
+
+def _stored_in(call, initialised):
+    """The member a constructor's initialiser stores the call's result in."""
+    for key, member in initialised.items():
+        start, end = key
+        if start <= call.extent.start.offset and \
+                call.extent.end.offset <= end:
+            return member
+    return None
