@@ -167,3 +167,15 @@ def test_a_host_periodic_edge_stops_the_rate_impact(ros2_build_base):
     assert impact['rate_impact'] == ['/odometry_controller']
     assert impact['traditional_impact'] == [
         '/odometry_controller', '/robot1/odom_relay']
+
+
+def test_a_launched_component_is_the_node_that_runs_its_class(
+        ros2_build_base):
+    graph = _graph(ros2_build_base, 'rsia_ros2_demo', 'composed.launch.py')
+    nodes = {n['id']: n for n in graph['nodes']}
+    # the lidar component is the lidar_node executable's node; the camera
+    # one the component named after its generated executable
+    assert set(nodes) == {'/robot/front_lidar', '/robot/camera'}
+    assert _endpoints(graph) == {
+        '/robot/front_lidar': ({'/robot/scan'}, set()),
+        '/robot/camera': ({'/robot/image'}, set())}

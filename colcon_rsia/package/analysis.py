@@ -32,6 +32,7 @@ from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
 from colcon_rsia.package.node_facts import merge_facts
+from colcon_rsia.package.node_facts import select_functions
 from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
@@ -521,6 +522,11 @@ def build_summary(*, name, path, build_base, units):
                     f"{unknown_executables}: node '{stem}' named after the "
                     'file')
     library = [u for f, u in units.items() if f not in executable_sources]
+    exported = merge_facts(units.values()).plugin_exports
+    components = find_components(package_path=path, exported_classes=exported)
+    # component classes an executable of the package instantiates: the
+    # executable is that node (one node, one id)
+    wrapped = set()
     for executable, sources in sorted(executables.items()):
         own = [units[s] for s in sources if s in units]
         if not own:
@@ -533,26 +539,32 @@ def build_summary(*, name, path, build_base, units):
             continue
         seeds = {f.id for unit in own for f in unit.functions}
         merged = merge_facts(own + library)
-        summary.nodes.extend(executable_nodes(
-            name, executable, sources, path, merged, seeds))
+        nodes = executable_nodes(
+            name, executable, sources, path, merged, seeds)
+        classes = _instantiated(merged, seeds, set(components.values()))
+        if len(classes) == 1 and len(nodes) == 1:
+            nodes[0].plugin_class = classes.pop()
+            wrapped.add(nodes[0].plugin_class)
+        summary.nodes.extend(nodes)
     merged_library = merge_facts(library)
-    exported = merge_facts(units.values()).plugin_exports
     plugins = [
         (plugin, class_name, 'nodelet') for plugin, class_name in sorted(
             find_nodelets(package_path=path,
                           exported_classes=exported).items())]
     plugins += [
         (executable, class_name, 'component')
-        for executable, class_name in sorted(find_components(
-            package_path=path, exported_classes=exported).items())]
+        for executable, class_name in sorted(components.items())
+        if class_name not in wrapped]
     # a nodelet or component runs its class's methods and what they call
     for plugin, class_name, kind in plugins:
         seeds = {f.id for f in merged_library.functions
                  if f.name.startswith(class_name + '::')}
-        summary.nodes.append(build_node(
+        node = build_node(
             name, plugin.split('/')[-1], kind,
             _sources_of(path, merged_library, seeds), path, merged_library,
-            seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}'))
+            seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}')
+        node.plugin_class = class_name
+        summary.nodes.append(node)
     summary.nodes.extend(_plugin_nodes(name, path, merged_library, exported))
     return summary
 
@@ -596,6 +608,18 @@ def _plugin_nodes(package, path, merged, exported):
             continue
         nodes.append(node)
     return nodes
+
+
+def _instantiated(merged, seeds, classes):
+    """The classes of `classes` whose constructor the seeds reach."""
+    reached = select_functions(merged, seeds)
+    found = set()
+    for function in merged.functions:
+        if function.id in reached:
+            owner, _, method = function.name.rpartition('::')
+            if owner in classes and method == owner.split('::')[-1]:
+                found.add(owner)
+    return found
 
 
 def _class_and_bases(class_name, merged):

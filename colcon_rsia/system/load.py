@@ -82,10 +82,16 @@ def launch_instances(summaries, result):
     """
     nodes = {}
     plugins = [n for s in summaries for n in s.nodes if n.kind == 'plugin']
+    # a component is launched by its class: the node that runs it (a
+    # component, or the executable that only instantiates the class)
+    by_class = {}
     for summary in summaries:
         for node in summary.nodes:
             nodes.setdefault((node.package, node.executable), []).append(node)
             nodes.setdefault((node.package, node.id), []).append(node)
+            if node.plugin_class and node.kind != 'plugin':
+                by_class.setdefault(
+                    (node.package, node.plugin_class), []).append(node)
     instances = []
     notes = list(result.unresolved)
     for launched in result.instances:
@@ -93,7 +99,9 @@ def launch_instances(summaries, result):
             continue  # they host nodes; they publish nothing of their own
         package = launched.package or '?'
         executable = launched.executable or '?'
-        matched = nodes.get((package, executable)) or [None]
+        matched = nodes.get((package, executable)) or (
+            by_class.get((package, executable.lstrip(':')))
+            if launched.kind == 'component' else None) or [None]
         for node in matched:
             instance = _launched_instance(
                 launched, node, package, executable, several=len(matched) > 1)
