@@ -755,3 +755,29 @@ def test_message_field_types_are_declared(tmp_path):
     [node] = summary.nodes
     [publisher] = node.publishers
     assert (publisher.topic, publisher.label) == ('worst', 'dependent')
+
+
+def test_the_packages_own_endpoint_functions_are_no_ros_call_sites():
+    from colcon_rsia.package.call_sites import cxx_call_sites
+    from colcon_rsia.package.call_sites import cxx_own_functions
+    code = '\n'.join([
+        'void ns::Filter::subscribe()',                          # 1
+        '{',
+        '  subscribe(name_);',                                    # 3
+        '}',
+        'void ns::Filter::subscribe(const std::string & name)',  # 5
+        '{',
+        '  sub_ = create_subscription<Cloud>(name, 1, cb);',      # 7
+        '  this->subscribe();',                                   # 8
+        '  other_.subscribe(node_);',                             # 9
+        '}',
+        'std::shared_ptr<P> W::create_publisher(const std::string & t)',
+        '{ return node_->create_publisher<M>(t, 1); }',           # 12
+        'auto p = rclcpp::create_publisher<M>(node, "x", 1);',    # 13
+    ])
+    own = cxx_own_functions(code)
+    assert own == {'subscribe', 'create_publisher'}
+    # definitions and the package's own calls of them are not counted; an
+    # object's method may be ROS's (counted: the yardstick errs that way)
+    assert [line for line, _, _ in cxx_call_sites(code, own)] == [
+        7, 9, 12, 13]

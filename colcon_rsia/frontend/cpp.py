@@ -54,6 +54,13 @@ COMPONENT_MACRO = re.compile(
     r'\bRCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)')
 # the base recorded for a registered ROS 2 component
 COMPONENT_BASE = 'rclcpp::Node'
+# behavior-tree nodes a plugin library registers for a BT executor
+# (navigation2's bt_navigator): `BT_REGISTER_NODES(factory) { ...
+# factory.registerNodeType<ns::Class>("Name"); }`
+BT_REGISTRATION = re.compile(r'\bBT_REGISTER_NODES\s*\(\s*(\w+)\s*\)')
+BT_NODE_TYPE = re.compile(r'\bregisterNodeType\s*<\s*([\w:]+)\s*>')
+# the base recorded for them (the table's key: plugin_hosts.py)
+BT_NODE_BASE = 'BT::TreeNode'
 
 # incomplete: we never need the TU's template instantiations at its end
 PARSE_OPTIONS = ci.TranslationUnit.PARSE_INCOMPLETE
@@ -389,6 +396,11 @@ class _Walker:
         for match in COMPONENT_MACRO.finditer(text):
             self.facts.plugin_exports.append(
                 [match.group(1).lstrip(':'), COMPONENT_BASE])
+        registration = BT_REGISTRATION.search(text)
+        if registration is not None:
+            for match in BT_NODE_TYPE.finditer(text, registration.end()):
+                self.facts.plugin_exports.append(
+                    [match.group(1).lstrip(':'), BT_NODE_BASE])
 
     def _class_bases(self, cursor):
         """Record the bases of a package class (a plugin inherits methods)."""

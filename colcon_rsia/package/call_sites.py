@@ -97,30 +97,63 @@ def _blank(match):
     return re.sub(r'[^\n]', ' ', text)
 
 
-def cxx_call_sites(text):
-    """Return [(line, role, name)] of the endpoint calls in C++ text."""
+# the qualification of a name: `A::B::` (template arguments end it)
+_QUALIFIER = re.compile(r'(?:\b\w+\s*::\s*)+$')
+# what leaves the call without an object: not `.`, `->` or `Type::`
+_OBJECT_ACCESS = re.compile(r'(?:\.|->|::)$')
+
+
+def cxx_call_sites(text, own_functions=frozenset()):
+    """Return [(line, role, name)] of the endpoint calls in C++ text.
+
+    :param own_functions: names of the list that the package defines
+      itself: a call of one without an object (``subscribe(name);`` in a
+      method of the class) calls the package's function, not ROS
+    """
+    return _cxx_scan(text, own_functions)[0]
+
+
+def cxx_own_functions(text):
+    """The names of the list that C++ text declares or defines."""
+    return _cxx_scan(text, frozenset())[1]
+
+
+def _cxx_scan(text, own_functions):
     code = _CXX_COMMENT_OR_LITERAL.sub(_blank, text)
     # `#define X nh.advertise<...>`: a macro's body is no call site
     code = _PREPROCESSOR_LINE.sub(_blank, code)
     sites = []
+    declared = set()
     for match in _CXX_CALL.finditer(code):
         start = match.start('name')
+        name = match.group('name')
         before = code[max(0, start - _LOOK_BACK):start]
         stripped = before.rstrip()
+        # a definition `void ns::Class::subscribe(` or
+        # `std::shared_ptr<P> Class::create_publisher(`: a type before the
+        # qualified name
+        unqualified = _QUALIFIER.sub('', stripped).rstrip()
+        qualified = unqualified != stripped
         # (checked here, not in the pattern: a pattern that first skips
         # whitespace is quadratic in the long blank runs left by comments)
         if stripped and '\n' not in before[len(stripped):] and \
-                not _CALL_CONTEXT.search(stripped):
+                not _CALL_CONTEXT.search(stripped) or qualified and (
+                    unqualified[-1:].isalnum() or unqualified[-1:] in '_*&'
+                    or unqualified.endswith('>') and
+                    not unqualified.endswith('->')):
+            declared.add(name)
+            continue
+        if name in own_functions and not _OBJECT_ACCESS.search(stripped) \
+                or stripped.endswith('this->') and name in own_functions:
             continue
         line = code.count('\n', 0, start) + 1
-        name = match.group('name')
         sites.append((line, _CXX_CALLS[name], name))
     for match in _CXX_CONSTRUCTION.finditer(code):
         if _constructed_with_arguments(code, match.end()):
             name = re.sub(r'\s+', '', match.group('name'))
             line = code.count('\n', 0, match.start('name')) + 1
             sites.append((line, _CXX_CONSTRUCTED[name.split('::')[-1]], name))
-    return sorted(sites)
+    return sorted(sites), declared
 
 
 def _constructed_with_arguments(code, position):
@@ -220,24 +253,32 @@ def scan_package(package_path):
 
     :rtype: list of :class:`CallSite`, sorted by file and line
     """
-    sites = []
+    texts = {}
     for path in package_files(package_path):
         if not os.path.isfile(path) or os.path.islink(path):
             continue
-        if path.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS):
-            scan = cxx_call_sites
-        elif _is_python_file(path):
-            scan = python_call_sites
-        else:
+        if not path.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS) \
+                and not _is_python_file(path):
             continue
         try:
             # the analysis's own checks and size limit: a file it did not
             # read is not counted either (it names the file)
-            text = safe_files.read_text(
+            texts[path] = safe_files.read_text(
                 path, roots=[package_path], errors='replace')
         except OSError:
             continue
+    cxx = {p: t for p, t in texts.items()
+           if p.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS)}
+    # the package's own `subscribe()`, `create_publisher()` ...: calls of
+    # them are the package's calls (its ROS calls are counted inside)
+    own = set()
+    for text in cxx.values():
+        own |= cxx_own_functions(text)
+    sites = []
+    for path, text in sorted(texts.items()):
+        found = cxx_call_sites(text, own) if path in cxx \
+            else python_call_sites(text)
         relative = os.path.relpath(path, package_path)
         sites += [CallSite(relative, line, role, api)
-                  for line, role, api in scan(text)]
+                  for line, role, api in found]
     return sorted(sites, key=lambda s: (s.file, s.line, s.role))

@@ -127,8 +127,20 @@ _ROS1_RECOVERY = Host(
     setup=_names('initialize'),
     rate_parameter='')
 
+_BT_NODE = Host(
+    host='bt_navigator',
+    # the navigator ticks the tree every bt_loop_duration while a goal is
+    # active; a node's tick (and the hooks its tick calls) run then
+    periodic=_names('tick onStart onRunning on_tick on_wait_for_result '
+                    'on_success on_aborted on_cancelled'),
+    requests=frozenset(),
+    setup=_names('halt onHalted providedPorts'),
+    rate_parameter='bt_loop_duration (default 10 ms)')
+
 # the base class a plugin is exported with -> its host
 HOSTS = {
+    # any node registered with BT_REGISTER_NODES (see frontend/cpp.py)
+    'BT::TreeNode': _BT_NODE,
     'controller_interface::ControllerInterface': _ROS2_CONTROLLER,
     'controller_interface::ChainableControllerInterface': _ROS2_CONTROLLER,
     'controller_interface::ControllerInterfaceBase': _ROS2_CONTROLLER,

@@ -1,0 +1,6 @@
+// colcon-rsia model of <behaviortree_cpp_v3/condition_node.h> (BehaviorTree.CPP 3):
+// the same declarations as behaviortree_cpp/tree_node.h.
+#ifndef RSIA_MODEL_BEHAVIORTREE_CPP_V3_CONDITION_NODE_H
+#define RSIA_MODEL_BEHAVIORTREE_CPP_V3_CONDITION_NODE_H
+#include <behaviortree_cpp/tree_node.h>
+#endif  // RSIA_MODEL_BEHAVIORTREE_CPP_V3_CONDITION_NODE_H
