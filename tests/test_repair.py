@@ -781,3 +781,149 @@ def test_the_packages_own_endpoint_functions_are_no_ros_call_sites():
     # object's method may be ROS's (counted: the yardstick errs that way)
     assert [line for line, _, _ in cxx_call_sites(code, own)] == [
         7, 9, 12, 13]
+
+
+def test_a_member_used_with_template_arguments_is_a_member_template(
+        tmp_path):
+    header = tmp_path / 'unit.h'
+    repair.ensure_repair_header(str(header), 'src/unit.cpp')
+    line = _lines('auto r = lanelet.regulatoryElementsAs<Light>();')
+    # first use: declared as a member of the unknown class (a value)
+    first = repair.repairs_from_diagnostics(
+        [("unknown type name 'Lanelet'", 'a.cpp', 1, 1),
+         ("no member named 'size' in 'lanelet::Lanelet'", 'a.cpp', 1, 1)],
+        line)
+    assert repair.add_repairs(str(header), 'src/unit.cpp', first | {
+        ('type', 'lanelet::Lanelet')})
+    # clang then says it is no template: it becomes a member template
+    second = repair.repairs_from_diagnostics(
+        [("'size' does not name a template but is followed by template "
+          'arguments', 'a.cpp', 1, 18)], line)
+    assert second == {('template-use', 'size')}
+    assert repair.add_repairs(str(header), 'src/unit.cpp', second)
+    assert ('member-template', 'lanelet::Lanelet::size') in \
+        repair.read_repairs(str(header))
+    # written as a template in a first go when the use shows it
+    assert repair.repairs_from_diagnostics(
+        [("no member named 'regulatoryElementsAs' in 'lanelet::Lanelet'",
+          'a.cpp', 1, 19)], line) == {
+        ('member-template', 'lanelet::Lanelet::regulatoryElementsAs')}
+
+
+UNKNOWN_LIBRARY_TEMPLATES = """
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <acme_map/map.hpp>
+
+class MapRelay : public rclcpp::Node
+{
+public:
+  MapRelay() : Node("map_relay")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("lights", 1);
+    auto lane = map_->laneletLayer.get(3);
+    for (const auto & light : lane.regulatoryElementsAs<acme_map::Light>()) {
+      std_msgs::msg::String text;
+      pub_->publish(text);
+    }
+    auto index = map_->template index<acme_map::Light>();
+  }
+
+private:
+  std::shared_ptr<acme_map::Map> map_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<MapRelay>());
+  return 0;
+}
+"""
+
+
+def test_members_of_unknown_values_called_with_template_arguments(tmp_path):
+    # `lane` holds what an unknown library returns; its members are
+    # only ever called with template arguments: member templates, and
+    # what it returns can be iterated
+    summary = analyse_source(tmp_path, 'relay', UNKNOWN_LIBRARY_TEMPLATES)
+    assert not [d for d in summary.diagnostics if 'parse error' in d], \
+        summary.diagnostics
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['lights']
+
+
+ASSISTANT_HEADER = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Assistant
+{
+public:
+  template <class NodeT>
+  explicit Assistant(NodeT node);
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+"""
+
+ASSISTANT_SOURCE = """
+#include "assistant.hpp"
+
+template <class NodeT>
+Assistant::Assistant(NodeT node)
+{
+  pub_ = node->template create_publisher<std_msgs::msg::String>("graph", 1);
+}
+
+template Assistant::Assistant(rclcpp::Node::SharedPtr);
+"""
+
+MAPPER_MAIN = """
+#include <memory>
+#include "assistant.hpp"
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("mapper");
+  auto assistant = std::make_unique<Assistant>(node);
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_helper_made_through_its_constructor_template_belongs_to_the_node(
+        tmp_path):
+    package = tmp_path / 'mapper'
+    (package / 'include').mkdir(parents=True)
+    (package / 'include' / 'assistant.hpp').write_text(ASSISTANT_HEADER)
+    (package / 'src').mkdir()
+    (package / 'src' / 'assistant.cpp').write_text(ASSISTANT_SOURCE)
+    summary = analyse_source(tmp_path, 'mapper', MAPPER_MAIN)
+    [node] = summary.nodes
+    # the library's constructor runs only through make_unique<Assistant>:
+    # a constructor template
+    assert [p.topic for p in node.publishers] == ['graph']
+
+
+def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
+    from colcon_rsia.frontend import model_mode
+    # a ros2_control checkout: its controller_interface/ headers are real
+    library = tmp_path / 'ws' / 'controller_interface'
+    (library / 'include' / 'controller_interface').mkdir(parents=True)
+    package = tmp_path / 'ws' / 'my_controllers'
+    (package / 'src').mkdir(parents=True)
+    source = package / 'src' / 'c.cpp'
+    source.write_text('#include <controller_interface/helpers.hpp>\n')
+    arguments = model_mode.prepare_model_arguments(
+        source=str(source), arguments=['-I', str(library / 'include')],
+        package_path=str(package),
+        workspace_package_dirs=[str(library), str(package)],
+        stub_dir=str(tmp_path / 'stubs'))
+    model = arguments.index(model_mode.MODEL_HEADERS_DIR)
+    assert arguments.index(str(library / 'include')) < model

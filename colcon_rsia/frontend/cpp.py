@@ -746,7 +746,10 @@ class _Walker:
         arguments = list(cursor.get_arguments())
         candidates = []
         for constructor in declaration.get_children():
-            if constructor.kind != CK.CONSTRUCTOR:
+            # a constructor template (`template <class NodeT> C(NodeT)`)
+            if constructor.kind != CK.CONSTRUCTOR and not (
+                    constructor.kind == CK.FUNCTION_TEMPLATE and
+                    constructor.spelling == declaration.spelling):
                 continue
             extra = sum(1 for p in constructor.get_children()
                         if p.kind == CK.PARM_DECL) - len(arguments)

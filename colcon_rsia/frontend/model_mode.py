@@ -72,7 +72,13 @@ _INCLUDE = re.compile(
 COMMENT_OR_STRING = re.compile(
     r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'',
     re.DOTALL)
-_MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)')
+_MEMBER = re.compile(r'(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)')
+# `.as<T>()`, `->template get<T>(key)`: a member called with template
+# arguments (one level of nesting); `.data` alone: a member used as a value
+_TEMPLATE_MEMBER = re.compile(
+    r'(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*'
+    r'<[^;(){}<>]*(?:<[^;(){}<>]*>[^;(){}<>]*)*>\s*\(')
+_VALUE_MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)\b(?!\s*[(<])')
 _CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*)\b')
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
 _FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
@@ -206,7 +212,15 @@ def prepare_model_arguments(*, source, arguments, package_path,
     # the sources as code: no comments, literals or include lines
     codes = [_code_only(text) for text in scanner.user_texts]
     up_dirs, own = _write_stand_ins(scanner, codes, stub_dir)
-    result = ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
+    # the workspace's own copy of a library the model stands for (a
+    # ros2_control checkout has the real controller_interface/): the real
+    # headers win there, the model everywhere else
+    own_first = []
+    for option, directory in search:
+        if any(os.path.isdir(os.path.join(directory, top))
+               for top in _model_top_dirs()):
+            own_first += [option, directory]
+    result = own_first + ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += _std_defines(codes)
     result += _export_macro_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace}' for namespace in own]
@@ -221,6 +235,19 @@ def prepare_model_arguments(*, source, arguments, package_path,
 
 
 # --- arguments ---------------------------------------------------------------
+
+_model_tops = []
+
+
+def _model_top_dirs():
+    """The libraries the model headers stand for (their directories)."""
+    if not _model_tops:
+        _model_tops.append(sorted(
+            name for name in os.listdir(MODEL_HEADERS_DIR)
+            if os.path.isdir(os.path.join(MODEL_HEADERS_DIR, name)) and
+            name != 'rsia_model'))
+    return _model_tops[0]
+
 
 _INCLUDE_OPTIONS = ('-I', '-isystem', '-iquote', '-idirafter')
 
@@ -464,8 +491,12 @@ def _used_names(codes):
     constants = set()
     field_types = set()
     msgs_types = {}
+    templates = set()
+    values = set()
     for code in codes:
         members.update(m.group(1) for m in _MEMBER.finditer(code))
+        templates.update(m.group(1) for m in _TEMPLATE_MEMBER.finditer(code))
+        values.update(m.group(1) for m in _VALUE_MEMBER.finditer(code))
         constants.update(m.group(1) for m in _CONSTANT.finditer(code))
         field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):
@@ -478,7 +509,10 @@ def _used_names(codes):
                 f'{m.group(1)}/msg/{_snake_case(m.group(2))}.hpp')
     members = {n for n in members if _member_ok(n)}
     constants = {n for n in constants if _member_ok(n)} - members
-    return members, constants, field_types - members, msgs_types
+    # a member function template, unless some use takes it for a value
+    templates = {n for n in templates - values if n in members}
+    return members - templates, constants, field_types - members, \
+        msgs_types, templates
 
 
 def _std_defines(codes):
@@ -526,7 +560,8 @@ def _write_stand_ins(scanner, codes, stub_dir):
     :returns: (the extra include dirs, the namespaces of unknown includes
       that the TU declares itself)
     """
-    members, constants, field_types, msgs_types = _used_names(codes)
+    members, constants, field_types, msgs_types, templates = \
+        _used_names(codes)
     stubs = {}   # include name -> content
     for name, kind in sorted(scanner.missing.items()):
         if kind == 'empty':
@@ -562,7 +597,7 @@ def _write_stand_ins(scanner, codes, stub_dir):
         for namespace, names in unknown.items():
             _merge_unknown(stub_dir, namespace, names)
         _merge_implicit(stub_dir, implicit)
-        _merge_fields(stub_dir, members, constants, field_types)
+        _merge_fields(stub_dir, members, constants, field_types, templates)
     return sorted(up_dirs), own
 
 
@@ -616,8 +651,12 @@ def write_atomically(path, content):
     safe_files.write_text_atomically(path, content, errors='surrogateescape')
 
 
-def _merge_fields(stub_dir, members, constants, field_types=()):
-    """Grow rsia_model/fields.h to hold these member, constant, type names."""
+def _merge_fields(stub_dir, members, constants, field_types=(),
+                  templates=()):
+    """Grow rsia_model/fields.h to hold these member, constant, type names.
+
+    :param templates: members called with template arguments only
+    """
     path = os.path.join(stub_dir, FIELDS_HEADER)
     old = _read_text(path) or ''
     if not old.startswith(_STUB_MARKER):
@@ -625,13 +664,20 @@ def _merge_fields(stub_dir, members, constants, field_types=()):
     old_members = set(re.findall(r'RSIA_MODEL_FIELD\((\w+)\)', old))
     old_constants = set(re.findall(r'RSIA_MODEL_CONSTANT\((\w+),', old))
     old_types = set(re.findall(r'RSIA_MODEL_FIELD_TYPE\((\w+)\)', old))
-    if old and members <= old_members and \
+    old_templates = set(re.findall(
+        r'RSIA_MODEL_FIELD_TEMPLATE\((\w+)\)', old))
+    if old and members <= old_members | old_templates and \
             constants <= old_constants | old_members and \
-            set(field_types) <= old_types | old_members:
+            set(field_types) <= old_types | old_members and \
+            set(templates) <= old_templates | old_members:
         return
-    all_members = sorted(old_members | members)
-    all_constants = sorted((old_constants | constants) - set(all_members))
-    all_types = sorted((old_types | set(field_types)) - set(all_members))
+    # a name keeps the first form it was given (units share the file)
+    all_templates = sorted(
+        (old_templates | set(templates)) - old_members)
+    all_members = sorted((old_members | members) - set(all_templates))
+    taken = set(all_members) | set(all_templates)
+    all_constants = sorted((old_constants | constants) - taken)
+    all_types = sorted((old_types | set(field_types)) - taken)
     lines = [
         f'{_STUB_MARKER} kind=fields',
         '// the member names used after `.` / `->` in the analysed sources,',
@@ -640,6 +686,9 @@ def _merge_fields(stub_dir, members, constants, field_types=()):
         '// that is a macro there is left out']
     for name in all_members:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD({name})', '#endif']
+    for name in all_templates:
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TEMPLATE({name})',
+                  '#endif']
     for name in all_types:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TYPE({name})',
                   '#endif']

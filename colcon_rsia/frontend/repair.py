@@ -57,6 +57,10 @@ _ARGUMENT_NOT_VALUE = re.compile(
     r"^'\w+' does not refer to a value|"
     r"^expected '\(' for function-style cast")
 _UNDEFINED_MACRO = re.compile(r"^function-like macro '(\w+)' is not defined")
+# `lanelet.regulatoryElementsAs<T>()` of a member repaired as a value
+_NOT_A_TEMPLATE = re.compile(
+    r"^'(\w+)' does not name a template but is followed by template "
+    'arguments')
 # `::gen::ParamListener` of a generated header: the scope is unknown
 _NOT_A_SCOPE = re.compile(
     r"^'(\w+)' is not a class, namespace, or enumeration$|"
@@ -93,6 +97,11 @@ MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
 NO_OVERRIDE = 'no-override'        # `override` made a no-op
 MEMBER = 'member'                  # a static member of a type declared here
 MEMBER_TYPE = 'member-type'        # a nested type of a type declared here
+MEMBER_TEMPLATE = 'member-template'  # a member used with template arguments
+MEMBER_KINDS = (MEMBER, MEMBER_TYPE, MEMBER_TEMPLATE)
+# not a declaration: a name used with template arguments that one of the
+# unit's member repairs declared without (see add_repairs)
+TEMPLATE_USE = 'template-use'
 STD_HEADER = 'std-header'          # a standard header to include
 HEADER = 'header'                  # a model or stand-in header declaring it
 # repairs that include a header rather than declare a name
@@ -195,7 +204,13 @@ def read_repairs(path):
 def add_repairs(path, source, repairs):
     """Add declarations to a unit's repair header; return whether it grew."""
     known = read_repairs(path)
-    merged = _one_kind_each(known | repairs)
+    # a member declared as a value and then used as `obj.name<T>()`
+    uses = {name for kind, name in repairs if kind == TEMPLATE_USE}
+    merged = _one_kind_each({
+        (MEMBER_TEMPLATE, name)
+        if kind == MEMBER and name.rsplit('::', 1)[-1] in uses
+        else (kind, name)
+        for kind, name in known | repairs if kind != TEMPLATE_USE})
     if merged == known:
         return False
     write_atomically(path, _render(merged, source))
@@ -212,7 +227,7 @@ _shared_lock = threading.Lock()
 def _shareable(repair):
     kind, name = repair
     return kind in INCLUDES or kind.startswith('macro-') or (
-        '::' in name and kind not in (MEMBER, MEMBER_TYPE))
+        '::' in name and kind not in MEMBER_KINDS)
 
 
 def share_repairs(header, repairs):
@@ -283,7 +298,7 @@ def _included(repair, stand_in):
     library); a declaration of our own would then clash with the header's.
     """
     kind, name = repair
-    if kind in INCLUDES or kind in (MEMBER, MEMBER_TYPE) or \
+    if kind in INCLUDES or kind in MEMBER_KINDS + (TEMPLATE_USE,) or \
             kind.startswith('macro-') or kind == NO_OVERRIDE:
         return repair
     header = model_header_for(name)
@@ -338,7 +353,7 @@ def _one_kind_each(repairs):
     result = set()
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
-        if owner in classes and kind not in (MEMBER, MEMBER_TYPE) + INCLUDES:
+        if owner in classes and kind not in MEMBER_KINDS + INCLUDES:
             kind = MEMBER_TYPE if _base_kind(kind) in (TYPE, TEMPLATE) \
                 else MEMBER
         elif any(name.startswith(c + '::') for c in classes if c != owner):
@@ -404,7 +419,8 @@ _NAMESPACE_OPENED = re.compile(r'\bnamespace\s+(\w+)\s*\{')
 def model_header_for(name):
     """The model header (relative path) that declares a qualified name.
 
-    One that opens the name's first namespace and declares its last part;
+    One that opens the name's first namespace and declares its last part
+    at namespace level (a class member of that name is another name);
     of several, the one in that namespace's directory, then the shortest.
     """
     *namespaces, short = name.split('::')
@@ -417,10 +433,15 @@ def model_header_for(name):
                     path = os.path.join(root, file)
                     with open(path, encoding='utf-8', errors='replace') as h:
                         text = h.read()
+                    # what a namespace declares: the model headers do not
+                    # indent namespace bodies, members are indented
+                    top_level = '\n'.join(
+                        line for line in text.split('\n')
+                        if line[:1] not in (' ', '\t'))
                     _model_header_index.append((
                         os.path.relpath(path, MODEL_HEADERS_DIR),
                         set(_NAMESPACE_OPENED.findall(text)),
-                        declared_names([text])))
+                        declared_names([top_level])))
     found = [path for path, opened, names in _model_header_index
              if namespaces[0] in opened and short in names]
     if not found:
@@ -510,8 +531,9 @@ def _repairs(diagnostics, read_line):
             # followed by a name declares a variable: a nested type
             nested = _CAMEL.match(match.group(1)) and \
                 re.match(r'(?:[&*]\s*)?[A-Za-z_]', after)
-            repairs.add((MEMBER_TYPE if nested else MEMBER,
-                         f'{match.group(2)}::{match.group(1)}'))
+            kind = MEMBER_TYPE if nested else \
+                MEMBER_TEMPLATE if after.startswith('<') else MEMBER
+            repairs.add((kind, f'{match.group(2)}::{match.group(1)}'))
             continue
         match = _TYPE_IN_CLASS.match(message)
         if match:
@@ -532,6 +554,10 @@ def _repairs(diagnostics, read_line):
                         _USING_DECLARATION.search(text[:max(0, column - 1)]):
                     kind = TYPE
             repairs.add((kind, f'{namespace}::{name}'))
+            continue
+        match = _NOT_A_TEMPLATE.match(message)
+        if match:
+            repairs.add((TEMPLATE_USE, match.group(1)))
             continue
         match = _NOT_A_SCOPE.match(message)
         if match and (match.group(1) or after.startswith('::')):
@@ -689,13 +715,13 @@ def _render(repairs, source):
     constant_values = {}
     members = {}
     for kind, name in repairs:
-        if kind in (MEMBER, MEMBER_TYPE):
+        if kind in MEMBER_KINDS:
             owner, member = name.rsplit('::', 1)
             members.setdefault(owner, set()).add((kind, member))
     for kind, name in sorted(repairs):
         lines.append(f'// repair {kind} {name}')
         *namespaces, short = name.split('::')
-        if kind in (MEMBER, MEMBER_TYPE):
+        if kind in MEMBER_KINDS:
             continue  # in its type's declaration
         if kind in INCLUDES:
             lines.append(f'#include <{name}>')
@@ -714,10 +740,12 @@ def _render(repairs, source):
             namespaces, body = namespaces + [short], ''
         elif _base_kind(kind) in (TYPE, TEMPLATE):
             head = _template_head(kind) if kind != TYPE else ''
-            body = ''.join(
-                f' static ::rsia_model::Any {m};' if k == MEMBER
-                else f' using {m} = ::rsia_model::Unknown;'
-                for k, m in sorted(members.get(name, ())))
+            body = ''.join({
+                MEMBER: f' static ::rsia_model::Any {m};',
+                MEMBER_TYPE: f' using {m} = ::rsia_model::Unknown;',
+                MEMBER_TEMPLATE: f' template <class... RsiaT, class... RsiaA>'
+                                 f' static ::rsia_model::Any& {m}(RsiaA&&...);',
+            }[k] for k, m in sorted(members.get(name, ())))
             body = (f'{head}struct {short} : ::rsia_model::Unknown '
                     f'{{ using ::rsia_model::Unknown::Unknown; '
                     f'using ::rsia_model::Unknown::operator=;{body} }};')

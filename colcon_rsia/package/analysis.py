@@ -539,12 +539,19 @@ def build_summary(*, name, path, build_base, units):
             continue
         seeds = {f.id for unit in own for f in unit.functions}
         merged = merge_facts(own + library)
+        classes = _instantiated(merged, seeds, set(components.values()))
+        wraps = classes.pop() if len(classes) == 1 else None
+        if wraps is not None:
+            # the component's methods all run, as they would in a
+            # container: also those only its base calls (virtual ones)
+            hierarchy = _class_and_bases(wraps, merged)
+            seeds |= {f.id for f in merged.functions
+                      if f.name.rsplit('::', 1)[0] in hierarchy}
         nodes = executable_nodes(
             name, executable, sources, path, merged, seeds)
-        classes = _instantiated(merged, seeds, set(components.values()))
-        if len(classes) == 1 and len(nodes) == 1:
-            nodes[0].plugin_class = classes.pop()
-            wrapped.add(nodes[0].plugin_class)
+        if wraps is not None and len(nodes) == 1:
+            nodes[0].plugin_class = wraps
+            wrapped.add(wraps)
         summary.nodes.extend(nodes)
     merged_library = merge_facts(library)
     plugins = [

@@ -168,10 +168,13 @@ struct Any
 
 #ifdef RSIA_MODEL_HAVE_FIELDS
 #define RSIA_MODEL_FIELD(name) static Any name;
+#define RSIA_MODEL_FIELD_TEMPLATE(name) \
+  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_CONSTANT(name, value)
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
+#undef RSIA_MODEL_FIELD_TEMPLATE
 #undef RSIA_MODEL_CONSTANT
 #undef RSIA_MODEL_FIELD_TYPE
 #endif
@@ -258,10 +261,13 @@ struct Fields
   typedef void rsia_model_message_tag;
 #ifdef RSIA_MODEL_HAVE_FIELDS
 #define RSIA_MODEL_FIELD(name) Any name;
+#define RSIA_MODEL_FIELD_TEMPLATE(name) \
+  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_CONSTANT(name, value) static constexpr int name = value;
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
+#undef RSIA_MODEL_FIELD_TEMPLATE
 #undef RSIA_MODEL_CONSTANT
 #undef RSIA_MODEL_FIELD_TYPE
 #endif
@@ -281,6 +287,12 @@ struct Unknown : Fields
   explicit operator bool() const;
   template <class... RsiaArgs>
   Any& operator()(RsiaArgs&&...) const;
+  // a container of the unknown library (lanelet::BasicPolygons2d):
+  // iterated, indexed
+  Any* begin() const;
+  Any* end() const;
+  template <class RsiaI>
+  Any& operator[](RsiaI&&) const;
   // assignment from anything in one exact step: otherwise `handle =
   // hw->getHandle(name)` (an Any) ties between the implicit copy and move
   // assignments, both reached through the constructor above. The declared
