@@ -915,11 +915,14 @@ def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
     from colcon_rsia.frontend import model_mode
     # a ros2_control checkout: its controller_interface/ headers are real
     library = tmp_path / 'ws' / 'controller_interface'
+    header = 'controller_interface/controller_interface.hpp'
     (library / 'include' / 'controller_interface').mkdir(parents=True)
+    (library / 'include' / header).write_text(
+        '#include <acme_rt/handler.hpp>\n')
     package = tmp_path / 'ws' / 'my_controllers'
     (package / 'src').mkdir(parents=True)
     source = package / 'src' / 'c.cpp'
-    source.write_text('#include <controller_interface/helpers.hpp>\n')
+    source.write_text(f'#include <{header}>\n')
     arguments = model_mode.prepare_model_arguments(
         source=str(source), arguments=['-I', str(library / 'include')],
         package_path=str(package),
@@ -927,3 +930,5 @@ def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
         stub_dir=str(tmp_path / 'stubs'))
     model = arguments.index(model_mode.MODEL_HEADERS_DIR)
     assert arguments.index(str(library / 'include')) < model
+    # and its includes are followed there: what they lack is stood in
+    assert (tmp_path / 'stubs' / 'acme_rt' / 'handler.hpp').is_file()

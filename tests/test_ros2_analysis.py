@@ -150,7 +150,8 @@ def test_hosts_in_a_launch_file_load_the_plugins_their_parameters_name(
     assert planner['name'] == '/planner_server'
     # the relay's remapped output is the controller's command input
     assert endpoints['/velocity_relay'][0] == {
-        '/odometry_controller/cmd_vel', '/relay_status', '/debug/relayed'}
+        '/odometry_controller/cmd_vel', '/relay_status', '/debug/relayed',
+        '/relay_mode'}
 
 
 def test_a_host_periodic_edge_stops_the_rate_impact(ros2_build_base):

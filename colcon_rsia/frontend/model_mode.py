@@ -207,20 +207,21 @@ def prepare_model_arguments(*, source, arguments, package_path,
         if os.path.isdir(include) and ('-I', include) not in search:
             kept += ['-I', include]
             search.append(('-I', include))
-    scanner = _Scanner(roots=roots, search=search, stub_dir=stub_dir)
+    # the workspace's own copy of a library the model stands for (a
+    # ros2_control checkout has the real controller_interface/): the real
+    # headers win there, the model everywhere else
+    own_first = [(option, directory) for option, directory in search
+                 if option != '-iquote' and any(
+                     os.path.isdir(os.path.join(directory, top))
+                     for top in _model_top_dirs())]
+    scanner = _Scanner(roots=roots, search=search, stub_dir=stub_dir,
+                       before_model=[d for _, d in own_first])
     scanner.scan(os.path.abspath(source))
     # the sources as code: no comments, literals or include lines
     codes = [_code_only(text) for text in scanner.user_texts]
     up_dirs, own = _write_stand_ins(scanner, codes, stub_dir)
-    # the workspace's own copy of a library the model stands for (a
-    # ros2_control checkout has the real controller_interface/): the real
-    # headers win there, the model everywhere else
-    own_first = []
-    for option, directory in search:
-        if any(os.path.isdir(os.path.join(directory, top))
-               for top in _model_top_dirs()):
-            own_first += [option, directory]
-    result = own_first + ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
+    result = [word for pair in own_first for word in pair] + \
+        ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += _std_defines(codes)
     result += _export_macro_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace}' for namespace in own]
@@ -332,13 +333,15 @@ def _in_source_tree(path, roots):
 class _Scanner:
     """Follows the includes of a source through the files we can read."""
 
-    def __init__(self, *, roots, search, stub_dir):
+    def __init__(self, *, roots, search, stub_dir, before_model=()):
         self.roots = roots
         self.search = search
         self.stub_dir = stub_dir
         self.quote_dirs = [d for kind, d in search if kind == '-iquote']
-        self.angle_dirs = [MODEL_HEADERS_DIR] + [
-            d for kind, d in search if kind != '-iquote']
+        # in the order the parse searches them (see prepare_model_arguments)
+        self.angle_dirs = list(before_model) + [MODEL_HEADERS_DIR] + [
+            d for kind, d in search
+            if kind != '-iquote' and d not in before_model]
         self.visited = set()
         # include name -> 'stub' (a stand-in by its name) | 'empty' (a
         # system header this machine lacks)

@@ -38,8 +38,8 @@ CK = ci.CursorKind
 # wrappers calling wrappers: deeper chains are not followed
 MAX_DEPTH = 3
 
-ROLE_PUBLISHER = 'publisher'
-ROLE_SUBSCRIBER = 'subscriber'
+ROLE_PUBLISHER = ros_api.PUBLISHER
+ROLE_SUBSCRIBER = ros_api.SUBSCRIBER
 
 
 @dataclass
@@ -130,7 +130,7 @@ class Summaries:
                 call, api, arguments, params, type_params,
                 _stored_in(call, initialised)))
             return
-        if api is not None and api.role == 'publish':
+        if api is not None and api.role == ros_api.PUBLISH:
             handle = first_handle(call_object(call))
             if handle is not None and handle.kind == CK.FIELD_DECL:
                 members.add(handle.get_usr())
@@ -144,22 +144,41 @@ class Summaries:
                 self.walker.is_workspace_declaration(ref):
             inner = self.of(ref, depth + 1)
             for endpoint in inner.endpoints:
-                endpoints.append(_through(
-                    endpoint, arguments, params, type_params))
+                endpoints.append(self._through(
+                    endpoint, call, arguments, params, type_params))
+
+    def _through(self, endpoint, call, arguments, params, type_params):
+        """An inner wrapper's endpoint, as this wrapper's call gives it.
+
+        Its topic and callback parameters map to this wrapper's parameters
+        where the call passes them on, else to what the call writes there;
+        its message type comes from the call's template argument.
+        """
+        def argument(index):
+            return arguments[index] \
+                if index is not None and index < len(arguments) else None
+        topic_param = _parameter_index(argument(endpoint.topic_param), params)
+        topic, literal = endpoint.topic, endpoint.topic_is_literal
+        if endpoint.topic_param is not None and topic_param is None:
+            topic, literal = self.walker._topic(
+                argument(endpoint.topic_param))
+        msg_type, from_call = endpoint.msg_type, endpoint.msg_type_from_call
+        if from_call:
+            msg_type, from_call = _message_type(call, type_params)
+        return Endpoint(
+            role=endpoint.role, topic_param=topic_param, topic=topic,
+            topic_is_literal=literal, msg_type=msg_type,
+            msg_type_from_call=from_call,
+            callback_param=_parameter_index(
+                argument(endpoint.callback_param), params),
+            member=None, publishes=endpoint.publishes)
 
     def _endpoint(self, call, api, arguments, params, type_params, member):
         topic_argument = self.walker._argument(arguments, api.name_arg)
         topic_param = _parameter_index(topic_argument, params)
         topic, literal = (None, False) if topic_param is not None else \
             self.walker._topic(topic_argument)
-        written = explicit_template_type(call) or \
-            _written_template_argument(call)
-        msg_type = None
-        from_call = False
-        if written and written.split('::')[-1] in type_params:
-            from_call = True
-        elif written:
-            msg_type = normalize_msg_type(written)
+        msg_type, from_call = _message_type(call, type_params)
         callback_param = None
         if api.callback_arg is not None:
             callback_param = _parameter_index(
@@ -170,24 +189,6 @@ class Summaries:
             msg_type_from_call=from_call, callback_param=callback_param,
             member=member.get_usr() if member is not None else None,
             publishes=False)
-
-
-def _through(endpoint, arguments, params, type_params):
-    """An inner wrapper's endpoint, as this wrapper's parameters give it."""
-    def mapped(index):
-        if index is None or index >= len(arguments):
-            return None
-        return _parameter_index(arguments[index], params)
-    topic_param = mapped(endpoint.topic_param)
-    return Endpoint(
-        role=endpoint.role, topic_param=topic_param,
-        topic=endpoint.topic if endpoint.topic_param is None else (
-            None if topic_param is not None else '?'),
-        topic_is_literal=endpoint.topic_is_literal,
-        msg_type=endpoint.msg_type,
-        msg_type_from_call=endpoint.msg_type_from_call,
-        callback_param=mapped(endpoint.callback_param),
-        member=None, publishes=endpoint.publishes)
 
 
 def _definition(declaration):
@@ -231,6 +232,19 @@ def _parameter_index(argument, params):
                 tokens == [current.spelling]:
             return params[current.referenced.get_usr()]
     return None
+
+
+def _message_type(call, type_params):
+    """(message type, from the wrapper's own template argument) of a call.
+
+    ``create_publisher<T>`` in ``template <class T>``: the wrapper's
+    caller gives it; ``create_publisher<std_msgs::msg::String>``: that.
+    """
+    written = explicit_template_type(call) or \
+        _written_template_argument(call)
+    if written and written.split('::')[-1] in type_params:
+        return None, True
+    return (normalize_msg_type(written) if written else None), False
 
 
 def _written_template_argument(call):

@@ -30,6 +30,7 @@ public:
         ++relayed_;
       });
     timer_ = create_wall_timer(250ms, [this]() {onTimer();});
+    mode_pub_ = rsia_ros2_common::make_mode_publisher(this);
   }
 
 private:
@@ -38,6 +39,9 @@ private:
     std_msgs::msg::Float64 count;
     count.data = relayed_;
     debug_.publish<std_msgs::msg::Float64>("debug/relayed", count);
+    std_msgs::msg::String mode;
+    mode.data = "relay";
+    mode_pub_->publish(mode);
   }
 
   int relayed_ = 0;
@@ -46,6 +50,7 @@ private:
   rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr relay_pub_;
   rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr command_sub_;
   rclcpp::TimerBase::SharedPtr timer_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr mode_pub_;
 };
 
 int main(int argc, char ** argv)

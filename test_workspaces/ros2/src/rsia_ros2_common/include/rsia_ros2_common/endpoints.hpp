@@ -31,6 +31,13 @@ typename rclcpp::Subscription<MessageT>::SharedPtr make_subscription(
     topic, rclcpp::SensorDataQoS(), std::forward<CallbackT>(callback));
 }
 
+// a wrapper of a wrapper: the topic and the message type are written here
+inline rclcpp::Publisher<std_msgs::msg::String>::SharedPtr make_mode_publisher(
+  rclcpp::Node * node)
+{
+  return make_publisher<std_msgs::msg::String>(node, "relay_mode");
+}
+
 // a helper object: the publisher is made by the constructor, published
 // through by report()
 class StatusReporter
