@@ -145,6 +145,10 @@ def test_hosts_in_a_launch_file_load_the_plugins_their_parameters_name(
         {'/odometry_controller/odom', '/odometry_controller/command_echo'},
         {'/odometry_controller/cmd_vel'})
     assert endpoints['/state_broadcaster'] == ({'/joint_states'}, set())
+    # a controller type no analysed package has: an instance all the same
+    outside = next(n for n in graph['nodes']
+                   if n['id'] == '/joint_state_broadcaster')
+    assert (outside['kind'], outside['publishers']) == ('unknown', [])
     planner = next(n for n in graph['nodes']
                    if n['id'] == '/planner_server/Straight')
     assert planner['name'] == '/planner_server'

@@ -133,24 +133,27 @@ def _hosted_instances(host, plugins, notes):
     hosted = []
     for name, plugin_type in found:
         node = _plugin_node(plugins, plugin_type)
-        if node is None:
-            notes.append(f'{host.id}: plugin {name} ({plugin_type}) is no '
-                         'analysed plugin; left out')
-            continue
         instance = Instance(
-            id='', node=node, package=node.package,
-            executable=node.executable,
+            id='', node=node,
+            package=node.package if node is not None else
+            plugin_type.replace('::', '/').split('/')[0],
+            executable=node.executable if node is not None else plugin_type,
             name=name if style == hosts.OWN_NODE else host.name,
             namespace=host.namespace, remaps=list(host.remaps),
             location=host.location)
         instance.id = instance.fqn if style == hosts.OWN_NODE \
             else f'{instance.fqn}/{name}'
+        if node is None:
+            # a plugin of a package outside the workspace, like a launched
+            # executable that was not analysed
+            notes.append(f'{instance.id} (plugin {plugin_type} of '
+                         f'{host.id}): not analysed')
         hosted.append(instance)
     return hosted
 
 
 def _plugin_node(plugins, plugin_type):
-    """The plugin node a host's type name (``pkg/Name``, ``ns::Class``)."""
+    """The plugin node a host's type name names (``pkg/Name``, ``ns::C``)."""
     wanted = plugin_type.strip().lstrip(':')
     as_class = wanted.replace('/', '::')
     for node in plugins:
