@@ -193,3 +193,54 @@ def test_impact_all_agrees_with_one_traversal_per_node():
             assert rows[node_id]['traditional_impact'] == len(traditional)
             assert rows[node_id]['rate_impact'] == \
                 len(rate_impact(system, [node_id]))
+
+
+ROS1_CONTROLLERS_LAUNCH = """<launch>
+  <rosparam ns="arm">
+    velocity_controller:
+      type: acme_controllers/VelocityController
+    state_controller:
+      type: joint_state_controller/JointStateController
+  </rosparam>
+  <group ns="arm">
+    <node name="controller_spawner" pkg="controller_manager" type="spawner"
+          args="--shutdown-timeout=3 velocity_controller state_controller"/>
+  </group>
+</launch>
+"""
+
+
+def test_a_ros1_spawner_loads_the_controllers_its_parameters_type(tmp_path):
+    from colcon_rsia.launch import load_launch
+    from colcon_rsia.system.load import launch_instances
+    path = tmp_path / 'control.launch'
+    path.write_text(ROS1_CONTROLLERS_LAUNCH)
+    # a controller's topics go through the NodeHandle its host gives it,
+    # in the controller's own namespace ('~')
+    plugin = model.Node(
+        id='acme_controllers/VelocityController', package='acme_controllers',
+        executable='VelocityController', kind='plugin',
+        plugin_class='acme_controllers::VelocityController',
+        publishers=[model.LabelledPublisher(
+            topic='state', topic_is_literal=True, msg_type='m', api='a',
+            handle='h', namespace='~', location='f:1',
+            label=model.INDEPENDENT, pattern='host_periodic', rate_hz=None)],
+        subscribers=[model.NodeSubscriber(
+            topic='command', topic_is_literal=True, msg_type='m', api='a',
+            callback='cb', namespace='~', location='f:2')])
+    summary = model.PackageSummary(
+        package='acme_controllers', path='/a', tool_version='0',
+        nodes=[plugin])
+    instances, notes = launch_instances(
+        [summary], load_launch(str(path), package_paths={}))
+    by_id = {i.id: i for i in instances}
+    # each spawned controller is a node named after it, where the spawner
+    # runs; one of a package outside the workspace is not analysed
+    assert set(by_id) == {'/arm/controller_spawner', '/arm/velocity_controller',
+                          '/arm/state_controller'}
+    assert by_id['/arm/velocity_controller'].node is plugin
+    assert by_id['/arm/state_controller'].node is None
+    graph = build_graph([summary], instances=instances, notes=notes)
+    topics = set(graph.topics())
+    assert {'/arm/velocity_controller/state',
+            '/arm/velocity_controller/command'} <= topics

@@ -31,6 +31,9 @@ class NodeInstance:
     kind: str = 'node'
     location: str = ''
     unresolved: List[str] = field(default_factory=list)
+    # the command line's words that are no remap or parameter (a ROS 1
+    # spawner's controller names)
+    args: List[str] = field(default_factory=list)
 
 
 @dataclass
@@ -40,3 +43,5 @@ class LaunchResult:
     instances: List[NodeInstance] = field(default_factory=list)
     unresolved: List[str] = field(default_factory=list)
     files: List[str] = field(default_factory=list)
+    # ROS 1: every parameter the files set, by absolute name
+    global_params: Dict[str, object] = field(default_factory=dict)

@@ -84,6 +84,7 @@ class Ros1Reader:
 
     def finish(self):
         """Give each node the global parameters under its private name."""
+        self.loader.result.global_params.update(self.global_params)
         keys = sorted(self.global_params)
         for instance, own in self.instances:
             name = fqn(instance.namespace, instance.name)
@@ -529,6 +530,7 @@ class Ros1Reader:
                 notes.append(f'{self._loc(scope, child)}: unknown element '
                              f'<{shorten(child.tag, 40)}> in <node> ignored')
         _command_line(arg_tokens, holder)
+        instance.args = [t for t in arg_tokens if ':=' not in t]
         self._dedupe(notes)
         self.loader.result.instances.append(instance)
         self.instances.append((instance, holder.params))

@@ -595,10 +595,15 @@ def _plugin_nodes(package, path, merged, exported):
                    if f.name.rsplit('::', 1)[0] in classes]
         seeds = {f.id for f in methods}
         host_roots = {}
+        private = set()
         for function in methods:
-            kind = plugin_hosts.root_kind(host, function.name.split('::')[-1])
+            method = function.name.split('::')[-1]
+            kind = plugin_hosts.root_kind(host, method)
             if kind is not None:
                 host_roots[function.id] = kind
+            if host is not None and method == host.private_handle_of and \
+                    function.params:
+                private.add(function.params[-1])
         short = class_name.split('::')[-1]
         if '/' not in plugin:
             plugin = short if shorts.count(short) == 1 else class_name
@@ -606,7 +611,7 @@ def _plugin_nodes(package, path, merged, exported):
             package, plugin.split('/')[-1], 'plugin',
             _sources_of(path, merged, seeds), path, merged, seeds,
             node_id=plugin if '/' in plugin else f'{package}/{plugin}',
-            host=host, host_roots=host_roots)
+            host=host, host_roots=host_roots, private_handles=private)
         node.base_class = base
         node.plugin_class = class_name
         if host is None and not (node.publishers or node.subscribers or

@@ -82,7 +82,8 @@ def _node_name(facts):
 
 
 def build_node(package, executable, kind, sources, path, merged, seeds,
-               node_id=None, host=None, host_roots=None):
+               node_id=None, host=None, host_roots=None,
+               private_handles=()):
     """The labelled node that runs the functions `seeds` and what they call.
 
     :param sources: the files (absolute) the node is built from
@@ -90,10 +91,14 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
     :param node_id: default ``package/executable``
     :param host: a plugin's :class:`colcon_rsia.package.plugin_hosts.Host`
     :param host_roots: {function id: root kind} of the methods it calls
+    :param private_handles: NodeHandle parameters the host gives in the
+      plugin's own namespace
     """
     facts = node_facts(merged, select_functions(merged, seeds))
     facts.host = host
     facts.host_roots = dict(host_roots or {})
+    for handle in private_handles:
+        facts.namespaces[handle] = '~'
     publishers, roots = label_publishers(facts)
     names = {fid: f.name for fid, f in facts.functions.items()}
     node_name, namespace = _node_name(facts)

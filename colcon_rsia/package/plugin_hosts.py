@@ -38,6 +38,9 @@ class Host:
     requests: frozenset      # methods called when a request arrives
     setup: frozenset         # lifecycle / configuration methods
     rate_parameter: str      # the host parameter that sets the period
+    # the method whose last parameter is the NodeHandle the host gives the
+    # plugin in its own namespace (a ROS 1 controller's controller_nh)
+    private_handle_of: str = ''
 
 
 def _names(text):
@@ -68,7 +71,8 @@ _ROS1_CONTROLLER = Host(
     periodic=_names('update'),
     requests=frozenset(),
     setup=_names('init initRequest starting stopping waiting aborting'),
-    rate_parameter="the hardware interface node's control loop")
+    rate_parameter="the hardware interface node's control loop",
+    private_handle_of='init')
 _NAV2_CONTROLLER = Host(
     host='controller_server',
     periodic=_names('computeVelocityCommands'),

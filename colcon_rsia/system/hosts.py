@@ -48,6 +48,43 @@ LAUNCHED_HOSTS = {
 }
 
 
+# ROS 1: a spawner asks the robot's controller manager to load the
+# controllers it names; their types are global parameters `<name>/type`
+ROS1_SPAWNERS = {
+    ('controller_manager', 'spawner'): 0,
+    # `controller_manager spawn|load NAME ...`
+    ('controller_manager', 'controller_manager'): 1,
+}
+
+
+def spawned_controllers(package, executable, args, namespace,
+                        global_params):
+    """[(controller name, type)] a launched ROS 1 spawner loads, or None.
+
+    A name whose type no parameter of the launch files gives is left out.
+    """
+    skip = ROS1_SPAWNERS.get((package, executable))
+    if skip is None or (skip and args[:1] not in (['spawn'], ['load'])):
+        return None
+    for word in args:
+        if word.startswith('--namespace='):
+            namespace = _join(namespace, word.split('=', 1)[1])
+    found = []
+    for name in args[skip:]:
+        if name.startswith('-'):
+            continue
+        value = global_params.get(_join(_join(namespace, name), 'type'))
+        if isinstance(value, str):
+            found.append((name, value))
+    return found
+
+
+def _join(namespace, name):
+    if name.startswith('/'):
+        return name
+    return (namespace or '/').rstrip('/') + '/' + name
+
+
 def hosted_plugins(package, executable, params):
     """[(plugin name, plugin type)] a launched host's parameters load.
 

@@ -113,23 +113,31 @@ def launch_instances(summaries, result):
             for note in launched.unresolved:
                 notes.append(f'{instance.id}: {note}')
             instances.append(instance)
-            instances += _hosted_instances(instance, plugins, notes)
+            instances += _hosted_instances(
+                instance, plugins, notes, launched, result.global_params)
     return instances, notes
 
 
-def _hosted_instances(host, plugins, notes):
+def _hosted_instances(host, plugins, notes, launched, global_params):
     """The plugins a launched host loads, as the parameters name them.
 
     A ros2_control controller is a node of its own, named after its key in
     the controller manager's parameters; a navigation plugin runs in its
     server's node (its id is the server's name, then the plugin's). Either
-    way the host's remaps apply.
+    way the host's remaps apply. A ROS 1 spawner's controllers are nodes
+    named after them in the spawner's namespace.
     """
-    found = hosts.hosted_plugins(
-        host.package, host.executable, host.params)
+    found = hosts.spawned_controllers(
+        host.package, host.executable, launched.args, host.namespace,
+        global_params)
+    style = hosts.OWN_NODE
+    if found is None:
+        found = hosts.hosted_plugins(
+            host.package, host.executable, host.params)
+        if found:
+            style = hosts.LAUNCHED_HOSTS[(host.package, host.executable)].style
     if not found:
         return []
-    style = hosts.LAUNCHED_HOSTS[(host.package, host.executable)].style
     hosted = []
     for name, plugin_type in found:
         node = _plugin_node(plugins, plugin_type)
