@@ -70,3 +70,37 @@ def test_names_joined_with_unknown_values_stay_unresolved(node):
     assert unknown == ['robot+"/"+prefix', 'topic+"_filtered"']
     assert all(p.topic_param is None for p in node.publishers
                if not p.topic_is_literal)
+
+
+HANDLE_AS_ARGUMENT = """
+#include <ros/ros.h>
+#include <message_filters/subscriber.h>
+#include <realtime_tools/realtime_publisher.h>
+#include <sensor_msgs/Imu.h>
+#include <std_msgs/Float64.h>
+
+void onImu(const sensor_msgs::Imu::ConstPtr &) {}
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "imu_filter");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  message_filters::Subscriber<sensor_msgs::Imu> imu_sub(pnh, "imu", 5);
+  imu_sub.registerCallback(onImu);
+  realtime_tools::RealtimePublisher<std_msgs::Float64> level_pub(nh, "level", 1);
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_a_nodehandle_given_as_an_argument_sets_the_namespace(tmp_path):
+    summary = analyse_source(tmp_path, 'imu_filter', HANDLE_AS_ARGUMENT)
+    [node] = summary.nodes
+    # message_filters::Subscriber(pnh, ...) subscribes in the private
+    # namespace, RealtimePublisher(nh, ...) in the node's
+    assert [(s.topic, s.namespace) for s in node.subscribers] == [
+        ('imu', '~')]
+    assert [(p.topic, p.namespace) for p in node.publishers] == [
+        ('level', '')]

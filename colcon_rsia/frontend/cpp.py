@@ -939,9 +939,16 @@ class _Walker:
                     return first_handle(children[0])
         return None
 
-    def _namespace_of(self, call):
-        """The NodeHandle a create call was made on: USR or marker."""
+    def _namespace_of(self, call, api=None, arguments=()):
+        """The NodeHandle a create call was made on: USR or marker.
+
+        For an API that takes the NodeHandle as an argument
+        (``message_filters::Subscriber(nh, topic, 1)``), that argument.
+        """
         obj = call_object(call)
+        if api is not None and api.nh_arg is not None and \
+                api.nh_arg < len(arguments):
+            obj = arguments[api.nh_arg]
         if obj is None:
             return None
         for current in [obj] + list(walk_preorder(obj)):
@@ -1039,7 +1046,7 @@ class _Walker:
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
                 location=self.location(cursor),
-                nh=self._namespace_of(cursor))
+                nh=self._namespace_of(cursor, api, arguments))
 
     def _object_type(self, cursor, name):
         """The class type a constructor or method belongs to.

@@ -85,6 +85,9 @@ class Api:
     returns_value: bool = False
     # PARAM_READ: ROS 2 parameters always belong to the node itself
     node_private: bool = False
+    # PUBLISHER/SUBSCRIBER: the argument holding the NodeHandle, for the
+    # APIs that take it as one (else the call's object is the handle)
+    nh_arg: Optional[int] = None
     # PUBLISHER: when this is the only argument, the object wraps the
     # publisher passed there (ROS 2 realtime_tools::RealtimePublisher)
     wraps_arg: Optional[int] = None
@@ -192,9 +195,9 @@ CALLS = {
     'tf2_ros::StaticTransformBroadcaster::sendTransform': Api(PUBLISH),
     # message_filters
     'message_filters::Subscriber::Subscriber': Api(
-        SUBSCRIBER, name_arg=1, label='message_filters::Subscriber'),
+        SUBSCRIBER, name_arg=1, nh_arg=0, label='message_filters::Subscriber'),
     'message_filters::Subscriber::subscribe': Api(
-        SUBSCRIBER, name_arg=1, label='message_filters::Subscriber'),
+        SUBSCRIBER, name_arg=1, nh_arg=0, label='message_filters::Subscriber'),
     'message_filters::Synchronizer::Synchronizer': Api(SYNC),
     'message_filters::TimeSynchronizer::TimeSynchronizer': Api(SYNC),
     'message_filters::Synchronizer::connectInput': Api(SYNC),
@@ -211,10 +214,11 @@ CALLS = {
     # realtime_tools: the constructor (or init) advertises the topic
     # ROS 1: (nh, topic, queue); ROS 2: (publisher), which it wraps
     'realtime_tools::RealtimePublisher::RealtimePublisher': Api(
-        PUBLISHER, name_arg=1, wraps_arg=0,
+        PUBLISHER, name_arg=1, wraps_arg=0, nh_arg=0,
         label='realtime_tools::RealtimePublisher'),
     'realtime_tools::RealtimePublisher::init': Api(
-        PUBLISHER, name_arg=1, label='realtime_tools::RealtimePublisher'),
+        PUBLISHER, name_arg=1, nh_arg=0,
+        label='realtime_tools::RealtimePublisher'),
     'realtime_tools::RealtimePublisher::unlockAndPublish': Api(PUBLISH),
     # realtime_tools (ROS 2, Jazzy+): the publish site without trylock
     'realtime_tools::RealtimePublisher::try_publish': Api(PUBLISH),
