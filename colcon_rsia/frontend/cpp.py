@@ -684,6 +684,8 @@ class _Walker:
         written = explicit_template_type(cursor) or \
             first_template_argument(cursor.type.get_canonical().spelling)
         location = self.location(cursor)
+        # the helper object the wrapper's members belong to
+        holder = target if ref.kind == CK.CONSTRUCTOR else obj
 
         def argument(index):
             return arguments[index] \
@@ -696,7 +698,6 @@ class _Walker:
             msg_type = endpoint.msg_type or (
                 normalize_msg_type(written)
                 if endpoint.msg_type_from_call else None)
-            holder = target if ref.kind == CK.CONSTRUCTOR else obj
             if endpoint.member is not None and holder is not None:
                 handle = f'{holder.get_usr()}|{endpoint.member}'
             elif target is not None and endpoint.member is None:

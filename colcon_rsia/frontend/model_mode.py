@@ -162,6 +162,8 @@ _USING_STD = re.compile(r'\busing\s+namespace\s+std\s*;')
 _MODEL_NAMESPACES = frozenset(
     name for name in os.listdir(MODEL_HEADERS_DIR)
     if os.path.isdir(os.path.join(MODEL_HEADERS_DIR, name))) | {'std'}
+# the libraries the model headers stand for (their include directories)
+_MODEL_LIBRARIES = sorted(_MODEL_NAMESPACES - {'std', 'rsia_model'})
 UNKNOWN_DIR = os.path.join('rsia_model', 'unknown')
 
 _lock = threading.Lock()
@@ -213,7 +215,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
     own_first = [(option, directory) for option, directory in search
                  if option != '-iquote' and any(
                      os.path.isdir(os.path.join(directory, top))
-                     for top in _model_top_dirs())]
+                     for top in _MODEL_LIBRARIES)]
     scanner = _Scanner(roots=roots, search=search, stub_dir=stub_dir,
                        before_model=[d for _, d in own_first])
     scanner.scan(os.path.abspath(source))
@@ -236,18 +238,6 @@ def prepare_model_arguments(*, source, arguments, package_path,
 
 
 # --- arguments ---------------------------------------------------------------
-
-_model_tops = []
-
-
-def _model_top_dirs():
-    """The libraries the model headers stand for (their directories)."""
-    if not _model_tops:
-        _model_tops.append(sorted(
-            name for name in os.listdir(MODEL_HEADERS_DIR)
-            if os.path.isdir(os.path.join(MODEL_HEADERS_DIR, name)) and
-            name != 'rsia_model'))
-    return _model_tops[0]
 
 
 _INCLUDE_OPTIONS = ('-I', '-isystem', '-iquote', '-idirafter')

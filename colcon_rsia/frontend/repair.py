@@ -395,20 +395,36 @@ def declared_names(texts):
     return names
 
 
+_model_texts = []
+
+
+def _model_header_texts():
+    """[(relative path, text)] of every model header (read once).
+
+    Both indexes below are made from them.
+    """
+    with _shared_lock:
+        if not _model_texts:
+            for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
+                for file in sorted(files):
+                    path = os.path.join(root, file)
+                    with open(path, encoding='utf-8', errors='replace') as h:
+                        _model_texts.append(
+                            (os.path.relpath(path, MODEL_HEADERS_DIR),
+                             h.read()))
+        return _model_texts
+
+
 _model_declarations = []
 
 
 def model_declarations():
     """The names the model headers declare (read once)."""
+    texts = _model_header_texts()
     with _shared_lock:
         if not _model_declarations:
-            texts = []
-            for root, _, files in os.walk(MODEL_HEADERS_DIR):
-                for name in files:
-                    with open(os.path.join(root, name), encoding='utf-8',
-                              errors='replace') as h:
-                        texts.append(h.read())
-            _model_declarations.append(declared_names(texts))
+            _model_declarations.append(declared_names(
+                text for _, text in texts))
         return _model_declarations[0]
 
 
@@ -426,22 +442,18 @@ def model_header_for(name):
     *namespaces, short = name.split('::')
     if not namespaces:
         return None
+    texts = _model_header_texts()
     with _shared_lock:
         if not _model_header_index:
-            for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
-                for file in sorted(files):
-                    path = os.path.join(root, file)
-                    with open(path, encoding='utf-8', errors='replace') as h:
-                        text = h.read()
-                    # what a namespace declares: the model headers do not
-                    # indent namespace bodies, members are indented
-                    top_level = '\n'.join(
-                        line for line in text.split('\n')
-                        if line[:1] not in (' ', '\t'))
-                    _model_header_index.append((
-                        os.path.relpath(path, MODEL_HEADERS_DIR),
-                        set(_NAMESPACE_OPENED.findall(text)),
-                        declared_names([top_level])))
+            for path, text in texts:
+                # what a namespace declares: the model headers do not
+                # indent namespace bodies, members are indented
+                top_level = '\n'.join(
+                    line for line in text.split('\n')
+                    if line[:1] not in (' ', '\t'))
+                _model_header_index.append((
+                    path, set(_NAMESPACE_OPENED.findall(text)),
+                    declared_names([top_level])))
     found = [path for path, opened, names in _model_header_index
              if namespaces[0] in opened and short in names]
     if not found:

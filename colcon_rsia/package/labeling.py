@@ -241,21 +241,24 @@ class _HostReach:
 
     def __init__(self, facts, starts, edges):
         self.facts = facts
-        self.edges = edges
-        self.starts = starts
-        self.reached = _reach(starts, edges)
+        # each periodic method's reach, walked once
+        self.by_start = {start: _reach([start], edges)
+                         for start in sorted(starts)}
+        self.reached = set().union(*self.by_start.values())
 
     def evidence(self, function):
-        """Evidence naming the host call that reaches `function`."""
+        """Evidence naming the host call that reaches `function`.
+
+        :param function: one of ``self.reached``
+        """
         host = self.facts.host
-        for start in sorted(self.starts):
-            if function in _reach([start], self.edges):
-                method = self.facts.functions[start]
-                return model.Evidence(
-                    'host_periodic', method.location,
-                    f'{host.host} calls {method.name} from its fixed-rate '
-                    f'loop ({host.rate_parameter})')
-        return model.Evidence('host_periodic', '?', host.host)
+        start = next(s for s, reached in self.by_start.items()
+                     if function in reached)
+        method = self.facts.functions[start]
+        return model.Evidence(
+            'host_periodic', method.location,
+            f'{host.host} calls {method.name} from its fixed-rate loop '
+            f'({host.rate_parameter})')
 
 
 def _reaches(start, target, facts):

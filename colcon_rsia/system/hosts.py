@@ -11,6 +11,8 @@ node of its own or inside the host's node.
 
 from dataclasses import dataclass
 
+from colcon_rsia.system.names import join
+
 
 @dataclass(frozen=True)
 class LaunchedHost:
@@ -68,21 +70,17 @@ def spawned_controllers(package, executable, args, namespace,
         return None
     for word in args:
         if word.startswith('--namespace='):
-            namespace = _join(namespace, word.split('=', 1)[1])
+            value = word.split('=', 1)[1]
+            namespace = value if value.startswith('/') \
+                else join(namespace or '/', value)
     found = []
     for name in args[skip:]:
         if name.startswith('-'):
             continue
-        value = global_params.get(_join(_join(namespace, name), 'type'))
+        value = global_params.get(join(namespace or '/', f'{name}/type'))
         if isinstance(value, str):
             found.append((name, value))
     return found
-
-
-def _join(namespace, name):
-    if name.startswith('/'):
-        return name
-    return (namespace or '/').rstrip('/') + '/' + name
 
 
 def hosted_plugins(package, executable, params):
