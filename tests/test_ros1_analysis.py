@@ -83,6 +83,9 @@ def test_node_names_come_from_ros_init(ros1_workspace):
     # written from the ros::init(argc, argv, "...") of each main; a nodelet
     # is named by the launch file that loads it, never by its code
     expected = {
+        'rsia_clocks/qt_ticker': 'qt_ticker',
+        'rsia_clocks/asio_beacon': 'asio_beacon',
+        'rsia_clocks/steady_loop': 'steady_loop',
         'rsia_control/joint_controller': 'joint_controller',
         'rsia_control/cmd_mux': 'cmd_mux',
         'rsia_control/trajectory_server': 'trajectory_server',

@@ -88,7 +88,7 @@ def test_names_without_a_launch_file_come_from_the_code(ros2_build_base):
         {'/scan_filtered', '/scan_filter/status'}, {'/scan'})
     # named through its classes: the base's ~/status follows the name
     assert endpoints['/front_sonar'] == (
-        {'/range', '/front_sonar/status'}, {'/sonar_enable'})
+        {'/range', '/front_sonar/status', '/ping'}, {'/sonar_enable'})
     # one executable, two nodes, each under its own name
     assert nodes['rsia_ros2_core/multi_node/detector']['name'] == '/detector'
     assert '/detector/rate' in endpoints['/detector'][0]

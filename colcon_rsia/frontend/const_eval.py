@@ -14,8 +14,10 @@ from colcon_rsia import safe_files
 
 CK = ci.CursorKind
 
-# how deep constants may refer to other constants
-MAX_DEPTH = 8
+# how deep an evaluation may go: each implicit conversion, parenthesis and
+# constant referring to another is a level, and the real standard library
+# wraps a std::chrono constant passed as another duration type in ~10
+MAX_DEPTH = 24
 
 _WRAPPERS = frozenset({
     CK.UNEXPOSED_EXPR, CK.PAREN_EXPR, CK.CSTYLE_CAST_EXPR,
@@ -263,9 +265,12 @@ _RATIO = re.compile(r'std::(?:__1::)?ratio<\s*(\d+)[lLuU]*\s*(?:,\s*(\d+)[lLuU]*
 
 def is_chrono_duration(type_):
     """Whether a libclang type is a ``std::chrono::duration``."""
-    canonical = type_.get_canonical().spelling
-    return 'std::chrono::duration<' in canonical or \
-        'std::__1::chrono::duration<' in canonical
+    # the type itself, not one naming a duration among its arguments (a
+    # std::chrono::time_point)
+    canonical = re.sub(r'^(?:(?:const|volatile)\s+)*', '',
+                       type_.get_canonical().spelling)
+    return canonical.startswith(
+        ('std::chrono::duration<', 'std::__1::chrono::duration<'))
 
 
 def _duration_unit(type_):

@@ -14,6 +14,7 @@ import re
 
 import clang.cindex as ci
 from colcon_rsia import model
+from colcon_rsia.frontend import clocks
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend import wrappers
 from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
@@ -24,6 +25,7 @@ from colcon_rsia.frontend.cursors import call_object
 from colcon_rsia.frontend.cursors import child_cursors
 from colcon_rsia.frontend.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cursors import explicit_template_type
+from colcon_rsia.frontend.cursors import expression_text
 from colcon_rsia.frontend.cursors import first_function
 from colcon_rsia.frontend.cursors import first_handle
 from colcon_rsia.frontend.cursors import first_template_argument
@@ -136,20 +138,6 @@ def extract_facts(tu, *, package_path, source):
     return walker.facts
 
 
-def _expression_text(cursor):
-    """The source text of an expression, tokens joined readably."""
-    text = ''
-    previous = ''
-    for token in source_tokens(cursor):
-        spelling = token.spelling
-        if previous and (previous[-1].isalnum() or previous[-1] == '_') \
-                and (spelling[0].isalnum() or spelling[0] == '_'):
-            text += ' '
-        text += spelling
-        previous = spelling
-    return text
-
-
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
 
 # the option objects roscpp's subscribe/advertise also take
@@ -220,6 +208,31 @@ class _Walker:
         self.problems = []
         # the workspace's wrapper functions this unit calls
         self._wrappers = wrappers.Summaries(self)
+        # Qt and boost::asio timers, sleep_until loops
+        self._clocks = clocks.OtherClocks(self)
+        # what each role of ros_api does to the facts
+        self._handlers = {
+            ros_api.PUBLISHER: self._on_publisher,
+            ros_api.SUBSCRIBER: self._on_subscriber,
+            ros_api.TIMER: self._on_timer,
+            ros_api.SERVICE: self._on_service,
+            ros_api.CLIENT: self._on_client,
+            ros_api.PUBLISH: self._on_publish,
+            ros_api.RATE: self._on_rate,
+            ros_api.RATE_SLEEP: self._on_rate_sleep,
+            ros_api.SYNC: self._on_sync,
+            ros_api.REGISTER_CALLBACK: self._on_register_callback,
+            ros_api.ACTION_SERVER: self._on_action_server,
+            ros_api.ACTION_CLIENT: self._on_action_client,
+            ros_api.NODE_HANDLE: self._on_node_handle,
+            ros_api.PRIVATE_HANDLE: self._on_private_handle,
+            ros_api.PUBLIC_HANDLE: self._on_public_handle,
+            ros_api.PARAM_READ: self._on_param_read,
+            ros_api.NODE_NAME: self._on_node_name,
+            ros_api.SUB_NODE: self._on_sub_node,
+            ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
+            **self._clocks.handlers(),
+        }
 
     # --- locations ---------------------------------------------------------
 
@@ -287,6 +300,7 @@ class _Walker:
             c for c in self.facts.calls
             if not (c.kind == 'ref' and c.callee in self._registered and
                     c.callee in self._lambdas_in_variables)]
+        self._clocks.finish()
         self._resolve_stored_callbacks()
         self._resolve_string_names()
 
@@ -294,7 +308,7 @@ class _Walker:
         """Note what a string variable/field is set to."""
         if not _is_string(variable):
             return
-        value, literal = self._topic(expression)
+        value, literal = self.topic(expression)
         if literal:
             self._string_values.setdefault(
                 variable.get_usr(), set()).add(value)
@@ -440,7 +454,9 @@ class _Walker:
             class_id=self._class_id(cursor),
             params=[c.get_usr() for c in cursor.get_children()
                     if c.kind == CK.PARM_DECL]))
-        ctx = _Context(fid)
+        parent = cursor.semantic_parent
+        ctx = _Context(fid, owner=parent if parent is not None and
+                       parent.kind in CLASS_KINDS else None)
         pending_member = None
         for child in cursor.get_children():
             if child.kind == CK.MEMBER_REF:
@@ -571,7 +587,7 @@ class _Walker:
                     if c.kind == CK.PARM_DECL]))
         if self.key(cursor) not in self._consumed:
             self._add_call(ctx, lid, cursor, kind='ref')
-        inner = _Context(lid)
+        inner = _Context(lid, owner=ctx.owner)
         for child in cursor.get_children():
             if child.kind == CK.COMPOUND_STMT:
                 self._visit(child, inner, [])
@@ -597,7 +613,7 @@ class _Walker:
 
     def _store_callable(self, variable, expression):
         """Remember what a std::function variable/field is set to."""
-        callback, _ = self._resolve_callback(expression)
+        callback, _ = self.resolve_callback(expression)
         if callback and not callback.startswith(CALLABLE_PREFIX):
             self._callables.setdefault(variable.get_usr(), set()).add(
                 callback)
@@ -633,8 +649,7 @@ class _Walker:
                 self._wrapper_call(cursor, ctx, stack, ref)
             return
         arguments = list(cursor.get_arguments())
-        handler = getattr(self, '_on_' + api.role)
-        handler(cursor, ctx, stack, api, name, arguments)
+        self._handlers[api.role](cursor, ctx, stack, api, name, arguments)
 
     def _dependent_call(self, cursor, ctx, stack):
         """``node->template create_publisher<M>(...)`` in a template.
@@ -648,8 +663,8 @@ class _Walker:
         if name is None:
             return
         api = ros_api.lookup_call(name)
-        handler = getattr(self, '_on_' + api.role)
-        handler(cursor, ctx, stack, api, name, list(cursor.get_arguments()))
+        self._handlers[api.role](
+            cursor, ctx, stack, api, name, list(cursor.get_arguments()))
 
     def dependent_call_name(self, cursor):
         """The API a call on a template-dependent object names, or None."""
@@ -678,7 +693,7 @@ class _Walker:
         if not summary.endpoints and not summary.publishes_members:
             return
         arguments = list(cursor.get_arguments())
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         obj = first_handle(call_object(cursor))
         name = qualified_name(ref)
         written = explicit_template_type(cursor) or \
@@ -692,7 +707,7 @@ class _Walker:
                 if index is not None and index < len(arguments) else None
         for endpoint in summary.endpoints:
             if endpoint.topic_param is not None:
-                topic, literal = self._topic(argument(endpoint.topic_param))
+                topic, literal = self.topic(argument(endpoint.topic_param))
             else:
                 topic, literal = endpoint.topic, endpoint.topic_is_literal
             msg_type = endpoint.msg_type or (
@@ -713,7 +728,7 @@ class _Walker:
                     handle_name=target.spelling if target is not None
                     else None, **common))
             else:
-                callback, declaration = self._resolve_callback(
+                callback, declaration = self.resolve_callback(
                     argument(endpoint.callback_param))
                 # a message type the wrapper deduces from the callback
                 common['msg_type'] = common['msg_type'] or \
@@ -784,7 +799,7 @@ class _Walker:
 
     # --- argument helpers --------------------------------------------------
 
-    def _topic(self, argument):
+    def topic(self, argument):
         """Return (topic as written, is it a literal)."""
         if argument is None:
             return None, False
@@ -804,10 +819,10 @@ class _Walker:
         if len(literals) == 1 and not has_variable:
             text = literals[0].spelling
             return _unquote(text), True
-        text = _expression_text(argument)
+        text = expression_text(argument)
         return (text or None), False
 
-    def _argument(self, arguments, position):
+    def argument(self, arguments, position):
         by_type = {
             ros_api.FIRST_STRING: _is_string,
             ros_api.FIRST_CALLABLE: _is_callable_argument,
@@ -828,7 +843,7 @@ class _Walker:
         """
         for index, argument in enumerate(arguments, start=first_index):
             if caller is not None and _is_string(argument):
-                value, literal = self._topic(argument)
+                value, literal = self.topic(argument)
                 if literal:
                     self.facts.string_arguments.append(model.StringArgument(
                         caller=caller, callee=callee, index=index,
@@ -859,7 +874,7 @@ class _Walker:
             self._bind_arguments(target.get_usr(), rest)
             return
 
-    def _resolve_callback(self, argument):
+    def resolve_callback(self, argument):
         """Return (function id, declaration cursor) of a callback argument."""
         if argument is None:
             return None, None
@@ -899,10 +914,10 @@ class _Walker:
         else:
             positions = position if isinstance(position, tuple) \
                 else (position,)
-            candidates = [self._argument(arguments, p) for p in positions]
+            candidates = [self.argument(arguments, p) for p in positions]
         found = []
         for argument in candidates:
-            callback, _ = self._resolve_callback(argument)
+            callback, _ = self.resolve_callback(argument)
             if callback:
                 found.append(callback)
         return found
@@ -915,7 +930,7 @@ class _Walker:
                 return normalize_msg_type(child.type.spelling)
         return None
 
-    def _target(self, cursor, stack):
+    def target(self, cursor, stack):
         """The variable/field a created object is stored in, or None."""
         start = cursor.extent.start.offset
         for parent in reversed(stack):
@@ -968,7 +983,7 @@ class _Walker:
         if self._wrapped_publisher(cursor, stack, api, arguments):
             return
         typed, api, arguments = self._with_options(cursor, api, arguments)
-        topic, literal = self._topic(self._argument(arguments, api.name_arg))
+        topic, literal = self.topic(self.argument(arguments, api.name_arg))
         if topic is None and name.endswith('::init'):
             return
         if topic is None and api.name_arg and len(arguments) <= api.name_arg:
@@ -976,7 +991,7 @@ class _Walker:
         msg_type = self._table_msg_type(api.msg_type) or \
             self._type_name(arguments, api) or \
             self._template_msg_type(typed, name)
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
             self.facts.publishers.append(model.PublisherFact(
@@ -984,7 +999,7 @@ class _Walker:
                 **common))
         self._note_concatenation(
             self.facts.publishers[-1:], literal,
-            self._argument(arguments, api.name_arg))
+            self.argument(arguments, api.name_arg))
 
     def _wrapped_publisher(self, cursor, stack, api, arguments):
         """``RealtimePublisher<M>(pub)`` publishes through `pub`.
@@ -995,10 +1010,10 @@ class _Walker:
         if api.wraps_arg is None:
             return False
         written = _written(arguments)
-        wrapped = self._argument(arguments, api.wraps_arg)
+        wrapped = self.argument(arguments, api.wraps_arg)
         if len(written) != 1 or wrapped is None or _is_string(wrapped):
             return False
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         handle = first_handle(wrapped)
         if target is not None and handle is not None:
             self.facts.handle_aliases.append(model.HandleAlias(
@@ -1009,7 +1024,7 @@ class _Walker:
     def _argument_msg_type(self, arguments, api):
         if api.msg_type_arg is None:
             return None
-        argument = self._argument(arguments, api.msg_type_arg)
+        argument = self.argument(arguments, api.msg_type_arg)
         return normalize_msg_type(argument.type.get_canonical().spelling) \
             if argument is not None else None
 
@@ -1017,8 +1032,8 @@ class _Walker:
         """The message type a generic API names: "pkg/msg/Name"."""
         if api.type_name_arg is None:
             return None
-        written, literal = self._topic(
-            self._argument(arguments, api.type_name_arg))
+        written, literal = self.topic(
+            self.argument(arguments, api.type_name_arg))
         if not literal or not re.fullmatch(r'\w+/\w+/\w+', written or ''):
             return None
         return written.replace('/', '::')
@@ -1112,7 +1127,7 @@ class _Walker:
 
     def _with_options(self, cursor, api, arguments):
         """(call with the endpoint's arguments, api, arguments)."""
-        options = self._options_call(self._argument(arguments, api.name_arg))
+        options = self._options_call(self.argument(arguments, api.name_arg))
         if options is None:
             return cursor, api, arguments
         # create/init(topic, queue_size, callback, ...): a subscription's
@@ -1124,11 +1139,11 @@ class _Walker:
 
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
         typed, api, arguments = self._with_options(cursor, api, arguments)
-        topic, literal = self._topic(self._argument(arguments, api.name_arg))
+        topic, literal = self.topic(self.argument(arguments, api.name_arg))
         if topic is None:
             return  # a default-constructed message_filters::Subscriber
-        callback, declaration = self._resolve_callback(
-            self._argument(arguments, api.callback_arg)) \
+        callback, declaration = self.resolve_callback(
+            self.argument(arguments, api.callback_arg)) \
             if api.callback_arg is not None else (None, None)
         if api.type_name_arg is not None:
             # generic: the callback takes serialized messages of any type
@@ -1138,7 +1153,7 @@ class _Walker:
                 self._template_msg_type(typed, name) or \
                 self._argument_msg_type(arguments, api) or \
                 self._callback_msg_type(declaration)
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is None and api.callback_arg is None:
             target = first_handle(call_object(cursor))
         for common in self._endpoints(cursor, ctx, api, name, arguments,
@@ -1147,7 +1162,7 @@ class _Walker:
                 callback=callback, **common))
         self._note_concatenation(
             self.facts.subscribers[-1:], literal,
-            self._argument(arguments, api.name_arg))
+            self.argument(arguments, api.name_arg))
 
     def _note_concatenation(self, facts, literal, argument):
         """Resolve later a topic built with `+` from literals and strings.
@@ -1170,7 +1185,7 @@ class _Walker:
         """
         if literal:
             return None
-        argument = self._argument(arguments, api.name_arg)
+        argument = self.argument(arguments, api.name_arg)
         if argument is None:
             return None
         for current in [argument] + list(walk_preorder(argument)):
@@ -1178,8 +1193,8 @@ class _Walker:
                 continue
             read = ros_api.lookup_call(qualified_name(current.referenced))
             if read is not None and read.role == ros_api.PARAM_READ:
-                param, is_literal = self._topic(
-                    self._argument(list(current.get_arguments()), 0))
+                param, is_literal = self.topic(
+                    self.argument(list(current.get_arguments()), 0))
                 if is_literal:
                     return 'param:' + param
         parts = _string_parts(argument)
@@ -1190,7 +1205,7 @@ class _Walker:
         return handle.get_usr() if handle is not None else None
 
     def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
-        param, literal = self._topic(self._argument(arguments, 0))
+        param, literal = self.topic(self.argument(arguments, 0))
         if not literal:
             return
         written = _written(arguments)
@@ -1199,7 +1214,7 @@ class _Walker:
             # value = nh.param("name", default);
             # value = node->declare_parameter("name", default);
             # value = node->get_parameter("name").as_string()
-            target = self._target(cursor, stack)
+            target = self.target(cursor, stack)
             default_argument = written[1] if len(written) > 1 else None
         else:
             # nh.param("name", variable, default) / getParam("name", var)
@@ -1207,7 +1222,7 @@ class _Walker:
             default_argument = written[2] if len(written) > 2 else None
         default = None
         if default_argument is not None:
-            default, is_literal = self._topic(default_argument)
+            default, is_literal = self.topic(default_argument)
             default = default if is_literal else None
         self.facts.param_reads.append(model.ParamRead(
             function=ctx.function, name=param, default=default,
@@ -1216,20 +1231,20 @@ class _Walker:
             location=self.location(cursor)))
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
-        node_name, literal = self._topic(
-            self._argument(arguments, api.name_arg))
+        node_name, literal = self.topic(
+            self.argument(arguments, api.name_arg))
         namespace = None
-        argument = self._argument(arguments, api.namespace_arg) \
+        argument = self.argument(arguments, api.namespace_arg) \
             if api.namespace_arg is not None else None
         # Node("name", options) has no namespace argument
         if argument is not None and _is_string(argument):
-            namespace, ns_literal = self._topic(argument)
+            namespace, ns_literal = self.topic(argument)
             namespace = namespace if ns_literal else None
         name_param = None
         if not literal:
             # Base(const std::string & name) : Node(name): the name the
             # callers of Base pass
-            handle = first_handle(self._argument(arguments, api.name_arg))
+            handle = first_handle(self.argument(arguments, api.name_arg))
             if handle is not None and handle.kind == CK.PARM_DECL:
                 name_param = handle.get_usr()
         self.facts.node_names.append(model.NodeNameFact(
@@ -1245,7 +1260,7 @@ class _Walker:
         """
         if not self._ros2:
             return  # the ROS 1 Updater publishes only when told to
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is None:
             return
         location = self.location(cursor)
@@ -1253,13 +1268,13 @@ class _Walker:
         callback = f'{api.label}::update@{location}'
         self.facts.functions.append(model.Function(
             id=callback, name=f'{api.label}::update', location=location))
-        period = self._argument(arguments, api.period_arg)
+        period = self.argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
         rate_hz = _round(1.0 / seconds) if seconds else None
         self.facts.timers.append(model.TimerFact(
             function=ctx.function, api=api.label, callback=callback,
-            period=_expression_text(period) if period is not None
+            period=expression_text(period) if period is not None
             else str(api.default_period),
             rate_hz=rate_hz, location=location))
         self.facts.publish_sites.append(model.PublishSite(
@@ -1267,26 +1282,27 @@ class _Walker:
             location=location))
 
     def _on_client(self, cursor, ctx, stack, api, name, arguments):
-        service, _ = self._topic(self._argument(arguments, api.name_arg))
+        service, _ = self.topic(self.argument(arguments, api.name_arg))
         self.facts.clients.append(model.ClientFact(
             function=ctx.function, api=name, name=service,
             location=self.location(cursor)))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
-        callback, _ = self._resolve_callback(
-            self._argument(arguments, api.callback_arg))
-        period = self._argument(arguments, api.period_arg)
+        callback, _ = self.resolve_callback(
+            self.argument(arguments, api.callback_arg))
+        period = self.argument(arguments, api.period_arg)
         self.facts.timers.append(model.TimerFact(
-            function=ctx.function, api=name, callback=callback,
-            period=_expression_text(period) if period is not None else '',
+            function=ctx.function, api=ros_api.api_label(name),
+            callback=callback,
+            period=expression_text(period) if period is not None else '',
             rate_hz=_period_rate_hz(period),
             location=self.location(cursor)))
 
     def _on_service(self, cursor, ctx, stack, api, name, arguments):
-        argument = self._argument(arguments, api.name_arg)
-        service, literal = self._topic(argument)
-        callback, _ = self._resolve_callback(
-            self._argument(arguments, api.callback_arg))
+        argument = self.argument(arguments, api.name_arg)
+        service, literal = self.topic(argument)
+        callback, _ = self.resolve_callback(
+            self.argument(arguments, api.callback_arg))
         fact = model.ServiceFact(
             function=ctx.function, api=name, name=service,
             callback=callback, location=self.location(cursor))
@@ -1302,13 +1318,13 @@ class _Walker:
         self._action(cursor, ctx, stack, api, name, arguments, 'client')
 
     def _action(self, cursor, ctx, stack, api, name, arguments, role):
-        action, _ = self._topic(self._argument(arguments, api.name_arg)) \
+        action, _ = self.topic(self.argument(arguments, api.name_arg)) \
             if api.name_arg is not None else (None, False)
         callbacks = self._callbacks(arguments, api.callback_arg) \
             if api.callback_arg is not None else []
         is_registration = api.name_arg is None
         target = first_handle(call_object(cursor)) if is_registration \
-            else self._target(cursor, stack)
+            else self.target(cursor, stack)
         self.facts.actions.append(model.ActionFact(
             function=ctx.function, api=ros_api.api_label(name), role=role,
             name=action, callbacks=callbacks,
@@ -1322,10 +1338,10 @@ class _Walker:
                            handle.get_usr() if handle is not None else None)
 
     def _on_rate(self, cursor, ctx, stack, api, name, arguments):
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is None:
             return  # a temporary Rate paces nothing
-        argument = self._argument(arguments, api.period_arg)
+        argument = self.argument(arguments, api.period_arg)
         rate_hz = None
         if argument is not None:
             if is_chrono_duration(argument.type):
@@ -1336,24 +1352,36 @@ class _Walker:
                 rate_hz = evaluate_number(argument)
         self.facts.rates.append(model.RateObject(
             handle=target.get_usr(), rate_hz=rate_hz,
-            expression=_expression_text(argument) if argument else '',
+            expression=expression_text(argument) if argument else '',
             location=self.location(cursor)))
 
-    def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
-        handle = first_handle(call_object(cursor))
-        if handle is None or not ctx.loops:
-            return
+    def paced_loop(self, ctx, sleep, clock):
+        """(loop id, loop cursor) a sleep on `clock` paces, or None.
+
+        It paces its innermost loop when it runs on every iteration and
+        its clock (a Rate, a deadline) outlives the iteration.
+        """
+        if clock is None or not ctx.loops:
+            return None
         loop_id, conditional_at_entry, loop = ctx.loops[-1]
         if ctx.conditional != conditional_at_entry:
-            return  # a sleep that may be skipped does not pace the loop
-        if _continue_before(loop, cursor):
-            return  # an iteration may end before the sleep
-        declared = handle.extent.start
+            return None  # a sleep that may be skipped does not pace
+        if _continue_before(loop, sleep):
+            return None  # an iteration may end before the sleep
+        declared = clock.extent.start
         if declared.file is not None and loop.extent.start.file is not None \
                 and declared.file.name == loop.extent.start.file.name and \
                 loop.extent.start.offset <= declared.offset \
                 <= loop.extent.end.offset:
-            return  # a Rate made anew in every iteration never adapts
+            return None  # a clock made anew in every iteration never adapts
+        return loop_id, loop
+
+    def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
+        handle = first_handle(call_object(cursor))
+        paced = self.paced_loop(ctx, cursor, handle)
+        if paced is None:
+            return
+        loop_id, loop = paced
         self.facts.paced_loops.append(model.PacedLoop(
             loop=loop_id, function=ctx.function,
             rate_handle=handle.get_usr(), location=self.location(loop),
@@ -1368,15 +1396,15 @@ class _Walker:
         if name.endswith('::connectInput'):
             target = first_handle(call_object(cursor))
         else:
-            target = self._target(cursor, stack)
+            target = self.target(cursor, stack)
         self.facts.syncs.append(model.SyncFact(
             handle=target.get_usr() if target is not None else None,
             inputs=inputs, location=self.location(cursor)))
 
     def _on_register_callback(self, cursor, ctx, stack, api, name,
                               arguments):
-        callback, _ = self._resolve_callback(
-            self._argument(arguments, api.callback_arg))
+        callback, _ = self.resolve_callback(
+            self.argument(arguments, api.callback_arg))
         handle = first_handle(call_object(cursor))
         self.facts.registrations.append(model.Registration(
             function=ctx.function,
@@ -1384,7 +1412,7 @@ class _Walker:
             callback=callback, location=self.location(cursor)))
 
     def _on_node_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is None:
             return
         namespace = ''
@@ -1396,14 +1424,14 @@ class _Walker:
             if len(written) > 1:
                 # NodeHandle(parent, "arm"); a sub-namespace not known
                 # is marked so
-                sub, literal = self._topic(written[1])
+                sub, literal = self.topic(written[1])
                 namespace += '|' + (
                     sub if literal else UNKNOWN_NAMESPACE + (sub or '?'))
         elif named:
             # ros::NodeHandle nh("arm") / nh(real_name): a string variable
             # set once is its literal (see _resolve_string_names); a name
             # not known is marked so, never taken for the node's namespace
-            namespace, literal = self._topic(written[0])
+            namespace, literal = self.topic(written[0])
             if not literal:
                 variable = first_handle(written[0])
                 namespace = UNKNOWN_NAMESPACE + (namespace or '?')
@@ -1420,8 +1448,8 @@ class _Walker:
 
     def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
         """``node->create_sub_node("arm")``: a handle in a sub-namespace."""
-        target = self._target(cursor, stack)
-        sub, literal = self._topic(self._argument(arguments, api.name_arg))
+        target = self.target(cursor, stack)
+        sub, literal = self.topic(self.argument(arguments, api.name_arg))
         if target is None or not literal:
             return
         parent = self._namespace_of(cursor)
@@ -1430,13 +1458,13 @@ class _Walker:
             namespace=f'ref:{parent}|{sub}' if parent else sub))
 
     def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is not None:
             self.facts.node_handles.append(model.NodeHandleFact(
                 handle=target.get_usr(), namespace='~'))
 
     def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self._target(cursor, stack)
+        target = self.target(cursor, stack)
         if target is not None:
             self.facts.node_handles.append(model.NodeHandleFact(
                 handle=target.get_usr(), namespace=''))
@@ -1445,8 +1473,10 @@ class _Walker:
 class _Context:
     """Where the walk is inside one function body."""
 
-    def __init__(self, function):
+    def __init__(self, function, owner=None):
         self.function = function
+        # the class of a method (a lambda's: its enclosing method's)
+        self.owner = owner
         # (loop id, conditional depth at the loop, loop cursor)
         self.loops = []
         self.conditional = 0

@@ -11,6 +11,7 @@ wrappers (:mod:`colcon_rsia.frontend.wrappers`).
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend.const_eval import source_tokens
 
 CK = ci.CursorKind
 
@@ -172,3 +173,17 @@ def explicit_template_type(call):
                 owner is not None and same_cursor(child.referenced, owner)):
             return child.type.spelling or child.spelling
     return None
+
+
+def expression_text(cursor):
+    """The source text of an expression, tokens joined readably."""
+    text = ''
+    previous = ''
+    for token in source_tokens(cursor):
+        spelling = token.spelling
+        if previous and (previous[-1].isalnum() or previous[-1] == '_') \
+                and (spelling[0].isalnum() or spelling[0] == '_'):
+            text += ' '
+        text += spelling
+        previous = spelling
+    return text

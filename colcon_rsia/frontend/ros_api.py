@@ -40,6 +40,13 @@ SUB_NODE = 'sub_node'              # returns a handle in a sub-namespace
 CLIENT = 'client'                  # a service client
 # publishes from a timer of its own (ROS 2 diagnostic_updater::Updater)
 TIMED_PUBLISHER = 'timed_publisher'
+# clocks beyond ROS (see frontend/clocks.py)
+SIGNAL_CONNECT = 'signal_connect'  # QObject::connect: a QTimer's timeout()
+TIMER_PERIOD = 'timer_period'      # sets the period of a timer object
+TIMER_SINGLE_SHOT = 'timer_single_shot'  # a QTimer that fires once
+OBJECT_TIMER = 'object_timer'      # QObject::startTimer -> timerEvent()
+TIMER_WAIT = 'timer_wait'          # boost::asio async_wait(handler)
+DEADLINE_SLEEP = 'deadline_sleep'  # sleep_until(deadline)
 
 # special argument positions
 FIRST_STRING = 'first_string'      # the first argument of string type
@@ -93,6 +100,9 @@ class Api:
     wraps_arg: Optional[int] = None
     # TIMED_PUBLISHER: the period in seconds when the call gives none
     default_period: Optional[float] = None
+    # a bare number given as period_arg counts this many seconds (a Qt
+    # interval is in milliseconds)
+    period_unit: float = 1.0
     # generic publishers/subscriptions: the argument naming the type as a
     # string ("std_msgs/msg/String"), which gives the message type
     type_name_arg: Optional[int] = None
@@ -128,6 +138,26 @@ def _ros2_node_methods(prefix):
             PARAM_READ, name_arg=0, node_private=True),
         prefix + 'get_parameter_or': Api(
             PARAM_READ, name_arg=0, node_private=True),
+    }
+
+
+def _asio_timer(timer_class):
+    """The methods of a boost::asio timer class template."""
+    method = timer_class + '::'
+    short = timer_class.rsplit('::', 1)[1]
+    # (io, expiry): a duration, or a time point, which gives no period
+    period = Api(TIMER_PERIOD, period_arg=1, label=timer_class)
+    return {
+        method + short: period,
+        method + 'expires_after': Api(
+            TIMER_PERIOD, period_arg=0, label=timer_class),
+        method + 'expires_from_now': Api(
+            TIMER_PERIOD, period_arg=0, label=timer_class),
+        # expires_at(expiry() + period)
+        method + 'expires_at': Api(
+            TIMER_PERIOD, period_arg=0, label=timer_class),
+        method + 'async_wait': Api(
+            TIMER_WAIT, callback_arg=0, label=timer_class),
     }
 
 
@@ -299,6 +329,32 @@ CALLS = {
         ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=ALL_CALLABLES),
     'rclcpp_action::create_client': Api(
         ACTION_CLIENT, name_arg=FIRST_STRING),
+    # rclcpp timers made directly, then added to the node's timers
+    # interface: GenericTimer(clock, period, callback, context),
+    # WallTimer(period, callback, context)
+    'rclcpp::GenericTimer::GenericTimer': Api(
+        TIMER, callback_arg=FIRST_CALLABLE, period_arg=FIRST_DURATION,
+        label='rclcpp::GenericTimer'),
+    'rclcpp::WallTimer::WallTimer': Api(
+        TIMER, callback_arg=FIRST_CALLABLE, period_arg=FIRST_DURATION,
+        label='rclcpp::WallTimer'),
+    # Qt: a QTimer calls what its timeout() signal is connected to every
+    # interval (in ms), unless it is single-shot; QObject::startTimer
+    # calls the object's timerEvent()
+    'QObject::connect': Api(SIGNAL_CONNECT, label='QTimer'),
+    'QTimer::start': Api(TIMER_PERIOD, period_arg=0, period_unit=0.001),
+    'QTimer::setInterval': Api(
+        TIMER_PERIOD, period_arg=0, period_unit=0.001),
+    'QTimer::setSingleShot': Api(TIMER_SINGLE_SHOT),
+    'QObject::startTimer': Api(OBJECT_TIMER, period_arg=0, period_unit=0.001),
+    # boost::asio: a handler that arms its timer again runs periodically;
+    # the period comes from the constructor or the expires_* calls
+    **_asio_timer('boost::asio::basic_waitable_timer'),
+    **_asio_timer('boost::asio::basic_deadline_timer'),
+    # a loop sleeping until a deadline it advances by a fixed period runs
+    # at that period (see frontend/clocks.py)
+    'std::this_thread::sleep_until': Api(DEADLINE_SLEEP),
+    'boost::this_thread::sleep_until': Api(DEADLINE_SLEEP),
     # nodelet handles
     'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),

@@ -160,7 +160,7 @@ class Summaries:
         topic_param = _parameter_index(argument(endpoint.topic_param), params)
         topic, literal = endpoint.topic, endpoint.topic_is_literal
         if endpoint.topic_param is not None and topic_param is None:
-            topic, literal = self.walker._topic(
+            topic, literal = self.walker.topic(
                 argument(endpoint.topic_param))
         msg_type, from_call = endpoint.msg_type, endpoint.msg_type_from_call
         if from_call:
@@ -174,15 +174,15 @@ class Summaries:
             member=None, publishes=endpoint.publishes)
 
     def _endpoint(self, call, api, arguments, params, type_params, member):
-        topic_argument = self.walker._argument(arguments, api.name_arg)
+        topic_argument = self.walker.argument(arguments, api.name_arg)
         topic_param = _parameter_index(topic_argument, params)
         topic, literal = (None, False) if topic_param is not None else \
-            self.walker._topic(topic_argument)
+            self.walker.topic(topic_argument)
         msg_type, from_call = _message_type(call, type_params)
         callback_param = None
         if api.callback_arg is not None:
             callback_param = _parameter_index(
-                self.walker._argument(arguments, api.callback_arg), params)
+                self.walker.argument(arguments, api.callback_arg), params)
         return Endpoint(
             role=api.role, topic_param=topic_param, topic=topic,
             topic_is_literal=literal, msg_type=msg_type,

@@ -747,6 +747,10 @@ class GenericTimer : public TimerBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(GenericTimer)
+  GenericTimer(
+    std::shared_ptr<Clock> clock, std::chrono::nanoseconds period,
+    FunctorT && callback, std::shared_ptr<Context> context,
+    bool autostart = true);
 };
 
 template<class FunctorT>
@@ -754,6 +758,9 @@ class WallTimer : public GenericTimer<FunctorT>
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(WallTimer)
+  WallTimer(
+    std::chrono::nanoseconds period, FunctorT && callback,
+    std::shared_ptr<Context> context, bool autostart = true);
 };
 
 // service.hpp, client.hpp

@@ -7,6 +7,8 @@
 //   through the base class's publishStatus): independent (timer, 10 Hz)
 // - the node subscribes to sonar_enable, so pattern 1 does not apply
 // - the range topic is a string member set only by its initializer: "range"
+// - ping is published only from a rclcpp::WallTimer made directly (250 ms)
+//   and added to the node's timers interface: independent (timer, 4 Hz)
 #include <chrono>
 #include <memory>
 #include <string>
@@ -14,6 +16,7 @@
 #include "rclcpp/rclcpp.hpp"
 #include "sensor_msgs/msg/range.hpp"
 #include "std_msgs/msg/bool.hpp"
+#include "std_msgs/msg/empty.hpp"
 #include "std_msgs/msg/string.hpp"
 
 using namespace std::chrono_literals;
@@ -50,6 +53,12 @@ public:
       "sonar_enable", 1,
       [this](const std_msgs::msg::Bool & msg) {enabled_ = msg.data;});
     timer_ = create_wall_timer(100ms, std::bind(&SonarNode::onTimer, this));
+
+    ping_pub_ = create_publisher<std_msgs::msg::Empty>("ping", 1);
+    auto ping = [this]() {ping_pub_->publish(std_msgs::msg::Empty());};
+    ping_timer_ = std::make_shared<rclcpp::WallTimer<decltype(ping)>>(
+      250ms, std::move(ping), get_node_base_interface()->get_context());
+    get_node_timers_interface()->add_timer(ping_timer_, nullptr);
   }
 
 private:
@@ -70,6 +79,8 @@ private:
   rclcpp::Publisher<sensor_msgs::msg::Range>::SharedPtr range_pub_;
   rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr enable_sub_;
   rclcpp::TimerBase::SharedPtr timer_;
+  rclcpp::Publisher<std_msgs::msg::Empty>::SharedPtr ping_pub_;
+  rclcpp::TimerBase::SharedPtr ping_timer_;
 };
 
 int main(int argc, char ** argv)
