@@ -105,6 +105,8 @@ class PublisherFact:
     class_id: Optional[str] = None
     nh: Optional[str] = None      # USR of the NodeHandle used, or a namespace marker
     topic_handle: Optional[str] = None  # the variable holding a non-literal topic
+    # [prefix, suffix] the code joins around that variable's value
+    topic_affixes: Optional[List[str]] = None
 
 
 @dataclass
@@ -122,6 +124,7 @@ class SubscriberFact:
     class_id: Optional[str] = None
     nh: Optional[str] = None
     topic_handle: Optional[str] = None
+    topic_affixes: Optional[List[str]] = None
 
 
 @dataclass
@@ -375,6 +378,9 @@ class TopicParam:
     name: str
     default: Optional[str]
     namespace: str                # of the NodeHandle that reads it
+    # what the code joins around the value (`topic + "_filtered"`)
+    prefix: str = ''
+    suffix: str = ''
 
 
 @dataclass

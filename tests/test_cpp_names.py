@@ -5,6 +5,8 @@
 Expectations written by hand from the code below.
 """
 
+from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.graph import Instance
 from conftest import analyse_source
 import pytest
 
@@ -65,11 +67,59 @@ def test_names_joined_from_known_strings_are_names(node):
 def test_names_joined_with_unknown_values_stay_unresolved(node):
     # before: the first variable's value stood for the whole name
     # ('turtle1'), and a parameter's default for `topic + "_filtered"`
-    unknown = sorted(p.topic for p in node.publishers
-                     if not p.topic_is_literal)
-    assert unknown == ['robot+"/"+prefix', 'topic+"_filtered"']
-    assert all(p.topic_param is None for p in node.publishers
-               if not p.topic_is_literal)
+    unknown = {p.topic: p.topic_param for p in node.publishers
+               if not p.topic_is_literal}
+    assert sorted(unknown) == ['robot+"/"+prefix', 'topic+"_filtered"']
+    # two values joined, one of them unknown: no parameter makes the name
+    assert unknown['robot+"/"+prefix'] is None
+
+
+def test_a_parameter_joined_with_literals_keeps_them(node):
+    # nh.param<std::string>("topic", topic, "scan"), then topic + "_filtered"
+    param = next(p.topic_param for p in node.publishers
+                 if p.topic == 'topic+"_filtered"')
+    assert (param.name, param.default, param.prefix, param.suffix) == \
+        ('topic', 'scan', '', '_filtered')
+
+
+PRIVATE_PARAMETER_JOINED = r"""
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <string>
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "cloud_filter");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  std::string input;
+  pnh.param<std::string>("input", input, "points");
+  ros::Publisher out = nh.advertise<sensor_msgs::PointCloud2>(
+      input + "_filtered", 1);
+  ros::spin();
+}
+"""
+
+
+def test_the_launch_value_of_a_joined_parameter_makes_the_name(tmp_path):
+    # ~input defaults to "points"; the code publishes input + "_filtered"
+    summary = analyse_source(tmp_path, 'cloud_filter',
+                             PRIVATE_PARAMETER_JOINED)
+    [node] = summary.nodes
+    assert _published(build_graph([summary]), node.id) == \
+        {'/points_filtered'}
+    # a launch file sets ~input: its value, with the suffix of the code
+    launched = Instance(
+        id='/cloud_filter', node=node, package=node.package,
+        executable=node.executable, name='cloud_filter',
+        params={'input': 'lidar'})
+    assert _published(build_graph([summary], instances=[launched]),
+                      '/cloud_filter') == {'/lidar_filtered'}
+
+
+def _published(system, instance_id):
+    return {entry['resolved']
+            for entry in system.instances[instance_id].publishers}
 
 
 HANDLE_AS_ARGUMENT = """

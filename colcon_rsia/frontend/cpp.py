@@ -333,7 +333,9 @@ class _Walker:
                 return None
             return next(iter(values))
         for fact in self.facts.publishers + self.facts.subscribers:
-            topic = None if fact.topic_is_literal else value(fact.topic_handle)
+            # (a topic joined around a variable: see _concatenated below)
+            topic = None if fact.topic_is_literal or fact.topic_affixes \
+                else value(fact.topic_handle)
             if topic:
                 fact.topic = topic
                 fact.topic_is_literal = True
@@ -1054,9 +1056,10 @@ class _Walker:
         if api.camera:
             topics.append((_camera_info(topic),
                            self._table_msg_type(ros_api.CAMERA_INFO_MSG)))
+        topic_handle, affixes = self._topic_handle(arguments, api, literal)
         for each_topic, each_type in topics:
             yield dict(
-                topic_handle=self._topic_handle(arguments, api, literal),
+                topic_handle=topic_handle, topic_affixes=affixes,
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
@@ -1178,16 +1181,19 @@ class _Walker:
             self._concatenated.append((facts[0], parts))
 
     def _topic_handle(self, arguments, api, literal):
-        """Where a non-literal topic comes from: a variable, or a parameter.
+        """(handle, affixes): where a non-literal topic comes from.
 
-        ``create_publisher<M>(get_parameter("topic").as_string(), 10)``
-        reads the parameter in place: recorded as ``param:<name>``.
+        A variable, or a parameter: ``create_publisher<M>(get_parameter(
+        "topic").as_string(), 10)`` reads the parameter in place, recorded
+        as ``param:<name>``. A variable joined with literals (``topic +
+        "_filtered"``) gives [prefix, suffix] too, so that the value a
+        launch file gives the parameter read into it makes the name.
         """
         if literal:
-            return None
+            return None, None
         argument = self.argument(arguments, api.name_arg)
         if argument is None:
-            return None
+            return None, None
         for current in [argument] + list(walk_preorder(argument)):
             if current.kind != CK.CALL_EXPR or current.referenced is None:
                 continue
@@ -1196,13 +1202,20 @@ class _Walker:
                 param, is_literal = self.topic(
                     self.argument(list(current.get_arguments()), 0))
                 if is_literal:
-                    return 'param:' + param
+                    return 'param:' + param, None
         parts = _string_parts(argument)
         if parts is not None and len(parts) > 1:
-            # `ns + "/pose"` is not the value of `ns`: see _note_concatenation
-            return None
+            # `ns + "/pose"` is not the value of `ns` alone
+            variables = [i for i, (kind, _) in enumerate(parts)
+                         if kind == 'variable']
+            if len(variables) != 1:
+                return None, None
+            index = variables[0]
+            return parts[index][1], [
+                ''.join(text for _, text in parts[:index]),
+                ''.join(text for _, text in parts[index + 1:])]
         handle = first_handle(argument)
-        return handle.get_usr() if handle is not None else None
+        return (handle.get_usr() if handle is not None else None), None
 
     def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
         param, literal = self.topic(self.argument(arguments, 0))

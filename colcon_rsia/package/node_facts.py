@@ -203,7 +203,9 @@ def topic_param(facts, fact):
         namespace = resolve_namespace(facts, read.nh)
     if default is None:
         default = facts.param_defaults.get(name)
-    return model.TopicParam(name=name, default=default, namespace=namespace)
+    prefix, suffix = getattr(fact, 'topic_affixes', None) or ('', '')
+    return model.TopicParam(name=name, default=default, namespace=namespace,
+                            prefix=prefix, suffix=suffix)
 
 
 def handles_of(facts, handle):

@@ -127,7 +127,11 @@ def build_graph(summaries, instances=None, notes=()):
 
 
 def _topic_name(instance, entity):
-    """The topic as the node uses it: literal, or from a parameter."""
+    """The topic as the node uses it: literal, or from a parameter.
+
+    A parameter's value (else its default) with what the code joins
+    around it.
+    """
     if entity.topic_is_literal:
         return entity.topic
     param = entity.topic_param
@@ -138,7 +142,8 @@ def _topic_name(instance, entity):
         # a private parameter: the launch file sets it inside the node
         key = join(param.namespace[1:], param.name).lstrip('/')
         value = instance.params.get(key)
-    return value if isinstance(value, str) else param.default
+    value = value if isinstance(value, str) else param.default
+    return None if value is None else param.prefix + value + param.suffix
 
 
 def _resolve(instance, entity):
