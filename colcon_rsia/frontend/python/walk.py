@@ -10,6 +10,7 @@ import os
 
 from colcon_rsia import model
 from colcon_rsia.frontend import python_api
+from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import MODULE_FUNCTION
@@ -82,20 +83,6 @@ def extract_python_facts(path, *, package_path, module_name,
     return facts
 
 
-class _Context:
-    """Where the walk is inside one function body."""
-
-    def __init__(self, scope, function, loops=(), conditional=0):
-        self.scope = scope
-        self.function = function
-        # (loop id, conditional depth at the loop, loop node)
-        self.loops = list(loops)
-        self.conditional = conditional
-
-    def loop_ids(self):
-        return [loop_id for loop_id, _, _ in self.loops]
-
-
 class _Extractor:
     """Collects the facts of one module; see :func:`extract_python_facts`."""
 
@@ -154,7 +141,7 @@ class _Extractor:
         self.facts.functions.append(model.Function(
             id=scope.id, name=name, location=location, class_id=class_id,
             params=[scope.handle(p) for p in scope.params]))
-        context = _Context(scope, scope.id)
+        context = recorder.Context(scope.id, scope=scope)
         body = [scope.node.body] if scope.kind == 'lambda' \
             else scope.node.body
         for node in body:
@@ -203,9 +190,8 @@ class _Extractor:
             self._visit(node, context)
 
     def _conditional(self, nodes, context):
-        context.conditional += 1
-        self._visit_all(nodes, context)
-        context.conditional -= 1
+        with context.branch():
+            self._visit_all(nodes, context)
 
     def _visit_def(self, node, context):
         # the body is a function of its own; decorators and defaults run here
@@ -222,8 +208,9 @@ class _Extractor:
 
     def _visit_class(self, node, context):
         self._visit_all(own_children(node), context)
-        inner = _Context(self.module.scopes[id(node)], context.function,
-                         context.loops, context.conditional)
+        inner = recorder.Context(
+            context.function, scope=self.module.scopes[id(node)],
+            loops=context.loops, conditional=context.conditional)
         self._visit_all(node.body, inner)
 
     def _visit_while(self, node, context):
@@ -237,10 +224,8 @@ class _Extractor:
         self._visit_all(node.orelse, context)
 
     def _loop(self, node, body, context):
-        context.loops.append(
-            (self.loop_id(node), context.conditional, node))
-        self._visit_all(body, context)
-        context.loops.pop()
+        with context.loop(self.loop_id(node), node):
+            self._visit_all(body, context)
 
     def _visit_if(self, node, context):
         self._visit(node.test, context)
@@ -788,19 +773,19 @@ class _Extractor:
 
     def _on_rate_sleep(self, api, name, node, context):
         handle = self._receiver(node, context)
-        if handle is None or handle.startswith('new@') or not context.loops:
+        if handle is None or handle.startswith('new@'):
             return  # rospy.Rate(10).sleep(): a new Rate never adapts
-        loop_id, conditional, loop = context.loops[-1]
-        if context.conditional != conditional:
-            return  # a sleep that may be skipped does not pace the loop
-        if self._assigned_in(loop, handle, context):
-            return  # a Rate made anew in every iteration never adapts
-        if _continue_before(loop, node):
-            return  # an iteration may end before the sleep
-        self.facts.paced_loops.append(model.PacedLoop(
-            loop=loop_id, function=context.function, rate_handle=handle,
-            location=self.location(loop),
-            sleep_location=self.location(node)))
+        paced = recorder.paced_loop(
+            context,
+            made_in_loop=lambda loop: self._assigned_in(loop, handle, context),
+            continue_before=lambda loop: _continue_before(loop, node))
+        if paced is None:
+            return
+        loop_id, loop = paced
+        recorder.record_paced_loop(
+            self.facts, context, loop_id=loop_id, clock=handle,
+            loop_location=self.location(loop),
+            sleep_location=self.location(node))
 
     def _assigned_in(self, loop, handle, context):
         for node in region([loop]):
