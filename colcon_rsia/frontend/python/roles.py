@@ -1,0 +1,231 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""What each recognised Python API does to the facts.
+
+Part of the Python front end (see :mod:`colcon_rsia.frontend.python`):
+mixed into the walk (:mod:`colcon_rsia.frontend.python.walk`), which
+answers where names and values lead; the loop context and the pacing rule
+are the recorder's (:mod:`colcon_rsia.frontend.recorder`).
+"""
+
+import ast
+
+from colcon_rsia import model
+from colcon_rsia.frontend import python_api
+from colcon_rsia.frontend import recorder
+from colcon_rsia.frontend.python.scopes import region
+from colcon_rsia.frontend.python.scopes import SCOPE_NODES
+from colcon_rsia.frontend.python.values import call_argument
+
+LOOP_NODES = (ast.For, ast.AsyncFor, ast.While)
+
+
+class Roles:
+    """The handlers of the python_api roles, named after them."""
+
+    def _on_node_handle(self, api, name, node, context):
+        """The node's name: ``rospy.init_node("n")``, ``Node("n", namespace=)``."""
+        if name not in python_api.NODE_NAMING:
+            return
+        written = call_argument(node, (0, 'name')) or \
+            call_argument(node, (0, 'node_name'))
+        node_name, literal = self._topic(written, context)
+        namespace, ns_literal = self._topic(
+            call_argument(node, (None, 'namespace')), context)
+        # super().__init__(node_name) in a base class of the package: the
+        # name its subclasses pass
+        name_param = self.project.handle(written, context.scope) \
+            if isinstance(written, ast.Name) else None
+        self.facts.node_names.append(model.NodeNameFact(
+            function=context.function, name=node_name if literal else None,
+            namespace=namespace if ns_literal else None,
+            location=self.location(node), name_param=name_param))
+
+    def _on_publisher(self, api, name, node, context):
+        msg_type = api.msg_type or self._msg_type(
+            call_argument(node, api.msg_type_arg), context)
+        if api.implicit_topics:
+            topics = [(topic, True) for topic in api.implicit_topics]
+        else:
+            argument = call_argument(node, api.name)
+            topic, literal = self._topic(argument, context)
+            if topic is None:
+                return
+            topics = [(topic, literal)]
+        handle, handle_name = self._target(node, context)
+        for topic, literal in topics:
+            self.facts.publishers.append(model.PublisherFact(
+                function=context.function, api=name, topic=topic,
+                topic_is_literal=literal, msg_type=msg_type, handle=handle,
+                handle_name=handle_name, location=self.location(node),
+                topic_handle=None if literal else self._topic_handle(
+                    argument, context)))
+
+    def _on_subscriber(self, api, name, node, context):
+        name_arg, type_arg = api.name, api.msg_type_arg
+        if api.ros1_form is not None and self._ros1_form(node):
+            name_arg, type_arg = api.ros1_form
+        msg_type = api.msg_type or self._msg_type(
+            call_argument(node, type_arg), context)
+        if api.implicit_topics:
+            topics = [(topic, True) for topic in api.implicit_topics]
+        else:
+            argument = call_argument(node, name_arg)
+            topic, literal = self._topic(argument, context)
+            if topic is None:
+                return
+            topics = [(topic, literal)]
+        callback, scope, offset = self._callback(
+            call_argument(node, api.callback), context)
+        callback_args = call_argument(node, api.callback_args)
+        if scope is not None and callback_args is not None and \
+                len(scope.params) > 1:
+            # called as callback(msg, callback_args)
+            self._bind_one(scope, 1, callback_args, context)
+        handle, _ = self._target(node, context)
+        for topic, literal in topics:
+            self.facts.subscribers.append(model.SubscriberFact(
+                function=context.function, api=name, topic=topic,
+                topic_is_literal=literal, msg_type=msg_type, handle=handle,
+                callback=callback, location=self.location(node),
+                topic_handle=None if literal else self._topic_handle(
+                    argument, context)))
+
+    def _on_timer(self, api, name, node, context):
+        callback, _, _ = self._callback(
+            call_argument(node, api.callback), context)
+        period = call_argument(node, api.period)
+        self.facts.timers.append(model.TimerFact(
+            function=context.function, api=name, callback=callback,
+            period=self.text(period) if period is not None else '',
+            rate_hz=self._rate_hz(period, api.period_unit, context),
+            location=self.location(node)))
+
+    def _on_service(self, api, name, node, context):
+        service, _ = self._topic(call_argument(node, api.name), context)
+        callback, _, _ = self._callback(
+            call_argument(node, api.callback), context)
+        self.facts.services.append(model.ServiceFact(
+            function=context.function, api=name, name=service,
+            callback=callback, location=self.location(node)))
+
+    def _on_service_client(self, api, name, node, context):
+        service, _ = self._topic(call_argument(node, api.name), context)
+        self.facts.clients.append(model.ClientFact(
+            function=context.function, api=name, name=service,
+            location=self.location(node)))
+
+    def _on_action_server(self, api, name, node, context):
+        self._action(api, name, node, context, 'server')
+
+    def _on_action_client(self, api, name, node, context):
+        self._action(api, name, node, context, 'client')
+
+    def _action(self, api, name, node, context, role):
+        registration = api.name is None
+        action = None
+        if not registration:
+            action, _ = self._topic(call_argument(node, api.name), context)
+        callbacks = []
+        specs = ((api.callback,) if api.callback else ()) + \
+            api.extra_callbacks
+        for spec in specs:
+            callback, _, _ = self._callback(call_argument(node, spec), context)
+            if callback:
+                callbacks.append(callback)
+        if registration:
+            handle = self._receiver(node, context)
+            label = name.rsplit('.', 1)[0]
+            location = 'registration:' + self.location(node)
+        else:
+            handle, _ = self._target(node, context)
+            label = name
+            location = self.location(node)
+        self.facts.actions.append(model.ActionFact(
+            function=context.function, api=label, role=role, name=action,
+            callbacks=callbacks, handle=handle, location=location))
+
+    def _on_publish(self, api, name, node, context):
+        self.facts.publish_sites.append(model.PublishSite(
+            function=context.function, api=name,
+            handle=self._receiver(node, context),
+            location=self.location(node), loops=context.loop_ids()))
+
+    def _on_rate(self, api, name, node, context):
+        handle, _ = self._target(node, context)
+        if handle is None or handle.startswith('new@'):
+            return  # a temporary Rate paces nothing
+        argument = call_argument(node, api.period)
+        self.facts.rates.append(model.RateObject(
+            handle=handle,
+            rate_hz=self._rate_hz(argument, api.period_unit, context),
+            expression=self.text(argument) if argument is not None else '',
+            location=self.location(node)))
+
+    def _on_rate_sleep(self, api, name, node, context):
+        handle = self._receiver(node, context)
+        if handle is None or handle.startswith('new@'):
+            return  # rospy.Rate(10).sleep(): a new Rate never adapts
+        paced = recorder.paced_loop(
+            context,
+            made_in_loop=lambda loop: self._assigned_in(loop, handle, context),
+            continue_before=lambda loop: _continue_before(loop, node))
+        if paced is None:
+            return
+        loop_id, loop = paced
+        recorder.record_paced_loop(
+            self.facts, context, loop_id=loop_id, clock=handle,
+            loop_location=self.location(loop),
+            sleep_location=self.location(node))
+
+    def _assigned_in(self, loop, handle, context):
+        for node in region([loop]):
+            targets = []
+            if isinstance(node, ast.Assign):
+                targets = node.targets
+            elif isinstance(node, (ast.AnnAssign, ast.NamedExpr)):
+                targets = [node.target]
+            elif isinstance(node, ast.withitem) and node.optional_vars:
+                targets = [node.optional_vars]
+            for target in targets:
+                for each in ast.walk(target):
+                    if isinstance(each, (ast.Name, ast.Attribute)) and \
+                            self.project.handle(each, context.scope) == \
+                            handle:
+                        return True
+        return False
+
+    def _on_sync(self, api, name, node, context):
+        inputs = []
+        for element in self._elements(call_argument(node, api.inputs), context):
+            handle = self._object_handle(element, context)
+            if handle is not None:
+                inputs.append(handle)
+        handle, _ = self._target(node, context)
+        self.facts.syncs.append(model.SyncFact(
+            handle=handle, inputs=inputs, location=self.location(node)))
+
+    def _on_register_callback(self, api, name, node, context):
+        callback, _, _ = self._callback(
+            call_argument(node, api.callback), context)
+        self.facts.registrations.append(model.Registration(
+            function=context.function, handle=self._receiver(node, context),
+            callback=callback, location=self.location(node)))
+
+
+def _continue_before(loop, sleep):
+    """Whether a `continue` of this loop comes before the sleep call."""
+    where = (sleep.lineno, sleep.col_offset)
+    todo = list(loop.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Continue) and \
+                (node.lineno, node.col_offset) < where:
+            return True
+        if isinstance(node, LOOP_NODES):
+            todo.extend(node.orelse)  # the inner loop's continue is its own
+            continue
+        if isinstance(node, SCOPE_NODES):
+            continue
+        todo.extend(ast.iter_child_nodes(node))
+    return False
