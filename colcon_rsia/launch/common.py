@@ -13,6 +13,7 @@ from typing import List
 from colcon_rsia import safe_files
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import LaunchResult
+from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.safe_eval import Unresolved
 from defusedxml import DefusedXmlException
 from defusedxml.ElementTree import DefusedXMLParser
@@ -435,17 +436,7 @@ def parse_bool(text, what):
         return True
     if value in ('false', '0'):
         return False
-    raise Unresolved(f"{what}: '{_short(text)}' is not true or false")
-
-
-def _short(text, limit=60):
-    text = str(text)
-    return text if len(text) <= limit else text[:limit] + '…'
-
-
-def shorten(text, limit=60):
-    """The first ``limit`` characters of a text for a message."""
-    return _short(text, limit)
+    raise Unresolved(f"{what}: '{shorten(text)}' is not true or false")
 
 
 def resolve_path(path, current_file):

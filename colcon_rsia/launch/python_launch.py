@@ -21,11 +21,11 @@ import string
 
 from colcon_rsia.launch import safe_eval
 from colcon_rsia.launch.common import location
-from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.ir import Action
 from colcon_rsia.launch.ir import Group
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.model import LaunchError
+from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.python_launch_api import ArgError
 from colcon_rsia.launch.python_launch_api import Args
 from colcon_rsia.launch.python_launch_api import LAUNCH_API

@@ -21,10 +21,11 @@ from colcon_rsia.launch.common import MAX_NESTING
 from colcon_rsia.launch.common import parse_bool
 from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import resolve_path
-from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.common import UnknownArg
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import NodeInstance
+from colcon_rsia.launch.notes import shorten
+from colcon_rsia.launch.notes import unique
 from colcon_rsia.launch.substitutions import Resolver
 from colcon_rsia.launch.substitutions import Unresolved
 import yaml
@@ -531,15 +532,9 @@ class Ros1Reader:
                              f'<{shorten(child.tag, 40)}> in <node> ignored')
         _command_line(arg_tokens, holder)
         instance.args = [t for t in arg_tokens if ':=' not in t]
-        self._dedupe(notes)
+        notes[:] = unique(notes)
         self.loader.result.instances.append(instance)
         self.instances.append((instance, holder.params))
-
-    @staticmethod
-    def _dedupe(notes):
-        seen = set()
-        kept = [n for n in notes if not (n in seen or seen.add(n))]
-        notes[:] = kept
 
 
 @dataclass

@@ -30,7 +30,6 @@ from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import resolve_path
 from colcon_rsia.launch.common import ros2_param_sections
 from colcon_rsia.launch.common import ros_arguments
-from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.common import typed_value
 from colcon_rsia.launch.common import UnknownArg
 from colcon_rsia.launch.ir import Action
@@ -61,6 +60,8 @@ from colcon_rsia.launch.ir import TypedValue
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import NodeInstance
+from colcon_rsia.launch.notes import shorten
+from colcon_rsia.launch.notes import unique
 from colcon_rsia.launch.python_launch import read_python_launch
 from colcon_rsia.launch.safe_eval import evaluate
 from colcon_rsia.launch.safe_eval import to_text
@@ -374,7 +375,7 @@ class Ros2Executor:
             self._component(composable, ctx, uncertain)
 
     def _NodeAction(self, action, ctx, depth, uncertain):  # noqa: N802
-        notes = _unique(ctx.notes + uncertain)
+        notes = unique(ctx.notes + uncertain)
         where = action.location
         package = self._field(action.package, 'package', ctx, notes, where)
         executable = self._field(action.executable, 'executable', ctx,
@@ -401,7 +402,7 @@ class Ros2Executor:
         self.loader.result.instances.append(NodeInstance(
             package=package, executable=executable, name=name,
             namespace=namespace, remaps=remaps, params=params, kind=kind,
-            location=where, unresolved=_unique(notes)))
+            location=where, unresolved=unique(notes)))
         for composable in action.composables:
             self._component(composable, ctx, uncertain)
 
@@ -409,7 +410,7 @@ class Ros2Executor:
         condition = self.condition(action, ctx)
         if condition is False:
             return
-        notes = _unique(ctx.notes + uncertain + action.notes + (
+        notes = unique(ctx.notes + uncertain + action.notes + (
             [] if condition is True else [condition]))
         where = action.location
         package = self._field(action.package, 'package', ctx, notes, where)
@@ -423,7 +424,7 @@ class Ros2Executor:
         self.loader.result.instances.append(NodeInstance(
             package=package, executable=plugin, name=name,
             namespace=namespace, remaps=remaps, params=params,
-            kind='component', location=where, unresolved=_unique(notes)))
+            kind='component', location=where, unresolved=unique(notes)))
 
     # fields
 
@@ -680,11 +681,6 @@ def _is_substitution(value):
     return isinstance(value, (
         Text, Concat, Call, LaunchConfig, PackagePath, EnvVar, PathJoin,
         PyExpr, ThisFile, BoolOp, UnknownValue))
-
-
-def _unique(notes):
-    seen = set()
-    return [n for n in notes if not (n in seen or seen.add(n))]
 
 
 # XML and YAML front ends

@@ -14,6 +14,8 @@ import ast
 import math
 import operator
 
+from colcon_rsia.launch.notes import shorten
+
 
 class Unresolved(Exception):
     """A value that cannot be determined statically (the message says why)."""
@@ -74,7 +76,7 @@ def evaluate(expression, *, lookup=None, functions=None):
     try:
         tree = ast.parse(text, mode='eval')
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise Unresolved(f'not a valid expression: {_short(text)}')
+        raise Unresolved(f'not a valid expression: {shorten(text)}')
     evaluator = _Evaluator(lookup, functions or {})
     return evaluator.eval(tree.body, 0)
 
@@ -86,10 +88,6 @@ def to_text(value):
     except ValueError:  # an int beyond Python's str conversion limit
         raise Unresolved('the expression value is too large')
     return text
-
-
-def _short(text, limit=60):
-    return text if len(text) <= limit else text[:limit] + '…'
 
 
 def _check(value):
