@@ -52,8 +52,9 @@ def load_launch(path, *, arguments=None, package_paths=None, environ=None):
             from colcon_rsia.launch.ros1 import Ros1Reader
             Ros1Reader(loader).read_top(path, root)
         else:
-            from colcon_rsia.launch.ros2 import Ros2Executor
-            Ros2Executor(loader).run_top(path, kind, text, root)
+            from colcon_rsia.launch.ros2_executor import Ros2Executor
+            Ros2Executor(loader, _ros2_readers()).run_top(
+                path, kind, text, root)
     except LaunchError:
         raise
     except RecursionError:
@@ -64,3 +65,15 @@ def load_launch(path, *, arguments=None, package_paths=None, environ=None):
             f'{path}: internal error of the launch analysis '
             f'({type(e).__name__}: {e}); please report it.') from e
     return loader.result
+
+
+def _ros2_readers():
+    """The readers of ROS 2 launch files by kind, for the executor.
+
+    Imported when a ROS 2 file is read: a ROS 1 system never loads them.
+    """
+    from colcon_rsia.launch.python_launch import read_python_launch
+    from colcon_rsia.launch.ros2 import read_xml_launch
+    from colcon_rsia.launch.ros2 import read_yaml_launch
+    return {'ros2': read_xml_launch, 'yaml': read_yaml_launch,
+            'python': read_python_launch}

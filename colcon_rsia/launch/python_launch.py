@@ -6,7 +6,7 @@ A small interpreter walks ``generate_launch_description()`` (and the module
 functions it calls) over a subset of Python: assignments, lists, dicts,
 tuples, f-strings, arithmetic on known values, ``if`` on known values,
 ``for`` over known sequences, and the launch / launch_ros API, which builds
-the actions of :mod:`colcon_rsia.launch.ros2`. Module-level code other than
+the actions of :mod:`colcon_rsia.launch.ir`. Module-level code other than
 imports, constants and definitions is never interpreted. Calls to anything
 else give an unknown value with a note; an ``if`` whose condition is not
 known runs both branches and marks what they create; a loop over an unknown
@@ -52,9 +52,11 @@ from colcon_rsia.launch.python_launch_values import SCALARS
 from colcon_rsia.launch.safe_eval import Unresolved
 
 
-def read_python_launch(path, text, loader):
+def read_python_launch(path, text, loader, root=None):
     """The ROS 2 actions of a Python launch file.
 
+    :param root: not used (an XML reader's argument; every reader takes
+      the same)
     :raises LaunchError: when the file is not valid Python
     """
     try:
