@@ -32,10 +32,6 @@ import yaml
 
 # elements that start nothing and change nothing the analysis needs
 _IGNORED = frozenset(('machine', 'env', 'master', 'test'))
-# element -> method of Ros1Reader reading it
-_ELEMENTS = {
-    'arg': '_arg', 'group': '_group', 'remap': '_remap', 'param': '_param',
-    'rosparam': '_rosparam', 'node': '_node', 'include': '_include'}
 
 
 @dataclass
@@ -170,12 +166,12 @@ class Ros1Reader:
         uncertain = [] if condition is True else [condition]
         if elem.tag in _IGNORED:
             return
-        handler = _ELEMENTS.get(elem.tag)
+        handler = _ELEMENT_HANDLERS.get(elem.tag)
         if handler is None:
             self.loader.note(f'{self._loc(scope, elem)}: unknown element '
                              f'<{shorten(elem.tag, 40)}> ignored')
             return
-        getattr(self, handler)(elem, scope, depth, uncertain)
+        handler(self, elem, scope, depth, uncertain)
 
     def _arg(self, elem, scope, depth, uncertain):
         attrs = elem.attrs
@@ -535,6 +531,14 @@ class Ros1Reader:
         notes[:] = unique(notes)
         self.loader.result.instances.append(instance)
         self.instances.append((instance, holder.params))
+
+
+# element -> the method of Ros1Reader reading it
+_ELEMENT_HANDLERS = {
+    'arg': Ros1Reader._arg, 'group': Ros1Reader._group,
+    'remap': Ros1Reader._remap, 'param': Ros1Reader._param,
+    'rosparam': Ros1Reader._rosparam, 'node': Ros1Reader._node,
+    'include': Ros1Reader._include}
 
 
 @dataclass

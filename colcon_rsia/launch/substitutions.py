@@ -248,18 +248,23 @@ class Resolver:
 
     def resolve(self, sub):
         """The text of a parsed substitution tree."""
-        if isinstance(sub, Text):
-            return sub.value
-        if isinstance(sub, Concat):
-            total = []
-            size = 0
-            for part in sub.parts:
-                value = self.resolve(part)
-                size += len(value)
-                if size > MAX_VALUE_LENGTH:
-                    raise Unresolved('a substituted value is too long')
-                total.append(value)
-            return ''.join(total)
+        return _TREE_HANDLERS[type(sub)](self, sub)
+
+    def _text(self, sub):
+        return sub.value
+
+    def _concat(self, sub):
+        total = []
+        size = 0
+        for part in sub.parts:
+            value = self.resolve(part)
+            size += len(value)
+            if size > MAX_VALUE_LENGTH:
+                raise Unresolved('a substituted value is too long')
+            total.append(value)
+        return ''.join(total)
+
+    def _call(self, sub):
         if sub.name == 'eval':
             return _limit(self._eval(sub))
         handler = _HANDLERS[self.dialect].get(sub.name)
@@ -365,6 +370,13 @@ def _unquote(body):
         return body[1:-1]
     return body
 
+
+# the parts of a parsed tree
+_TREE_HANDLERS = {
+    Text: Resolver._text,
+    Concat: Resolver._concat,
+    Call: Resolver._call,
+}
 
 _HANDLERS = {
     'ros1': {
