@@ -21,6 +21,7 @@ from defusedxml.ElementTree import ParseError
 import yaml
 
 # a launch or parameter file larger than this is not a hand-written file
+# (the largest real ones are some hundred KiB)
 MAX_FILE_SIZE = 8 * 1024 * 1024
 # includes nested deeper than this are runaway recursion, not a system
 # (real systems nest a handful of levels)
@@ -29,12 +30,18 @@ MAX_INCLUDE_DEPTH = 32
 # levels deep, must not make 2**30 reads (the largest real systems read a
 # few hundred files)
 MAX_INCLUDES = 2000
-# parameters one YAML value may expand to (YAML aliases can nest a billion)
+# parameters one YAML value may expand to: YAML aliases can nest a
+# billion, the largest real parameter files hold a few thousand
 MAX_PARAMETERS = 20000
-# nesting of YAML values and of launch elements handled recursively; the
-# Python stack stays well below its limit (the nesting of substitutions
-# and of Python launch code have limits of their own:
-# substitutions.MAX_SUBSTITUTION_NESTING, python_launch_values.MAX_CODE_NESTING)
+# THE nesting limit of launch elements, for every reader (ROS 1 XML,
+# ROS 2 XML and YAML) and the ROS 2 executor (groups and the includes
+# they contain), and of YAML values: all are handled recursively. Real
+# files nest a handful of levels; at a few Python frames a level, 64
+# keeps the stack well below its limit of 1000. Other nestings have their
+# own: includes (MAX_INCLUDE_DEPTH), substitutions
+# (substitutions.MAX_SUBSTITUTION_NESTING), values in values
+# (ros2_values.MAX_VALUE_DEPTH), Python launch code
+# (python_launch_values.MAX_CODE_NESTING)
 MAX_NESTING = 64
 # node name patterns of parameter files longer than this, or with more
 # wildcards, match nothing (their regular expression could backtrack for

@@ -17,17 +17,22 @@ import re
 # AST nodes evaluated for one file: a launch file takes a few thousand;
 # loops and calls must not make the analysis run away
 MAX_STEPS = 200000
-# ... and for all the Python launch files of one load
+# ... and for all the Python launch files of one load: ten files at their
+# limit, so that many files cannot multiply the time of one load
 MAX_TOTAL_STEPS = 2000000
-# iterations of one interpreted loop (and elements of a range())
+# iterations of one interpreted loop (and elements of a range()): launch
+# files loop over robots, cameras or arguments, tens of them
 MAX_LOOP = 1000
-# nested calls of module functions (recursion ends here)
+# nested calls of module functions: helpers call each other a few levels
+# deep; recursion ends here, each level being many Python frames
 MAX_CALL_DEPTH = 16
 # nesting of interpreted statements, expressions and calls together; the
 # Python stack (a few frames per level) stays well below its limit
 # (elements and YAML: common.MAX_NESTING)
 MAX_CODE_NESTING = 100
-# elements of a list or characters of a string the interpreter builds
+# elements of a list or characters of a string the interpreter builds:
+# a value doubled in a loop must not exhaust memory (as
+# substitutions.MAX_VALUE_LENGTH for substitutions)
 MAX_SIZE = 100000
 # bits of an integer the interpreter builds: far beyond any count or port
 # in a launch file, small enough that arithmetic and str() stay instant

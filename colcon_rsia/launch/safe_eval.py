@@ -24,12 +24,13 @@ class Unresolved(Exception):
 # an expression longer than this is not a launch-file expression; the
 # limit also keeps ast.parse far from its nesting limits
 MAX_EXPRESSION_LENGTH = 2000
-# nesting depth of the evaluated tree; the Python stack stays well below its
-# own limit
+# nesting depth of the evaluated tree: expressions nest a few levels; at
+# two Python frames a level the stack stays well below its limit of 1000
 MAX_DEPTH = 100
 # longest string an expression may build ('x' * 10 ** 9 must not run)
 MAX_STRING_LENGTH = 100000
-# largest magnitude of a number an expression may build
+# largest magnitude of a number an expression may build: about the largest
+# float, beyond which arithmetic overflows or big integers get slow
 MAX_NUMBER = 10 ** 308
 
 _BINARY = {
