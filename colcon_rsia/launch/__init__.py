@@ -12,7 +12,6 @@ import os
 
 from colcon_rsia.launch.common import file_kind
 from colcon_rsia.launch.common import Loader
-from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import LaunchResult
 from colcon_rsia.launch.model import NodeInstance
@@ -42,11 +41,7 @@ def load_launch(path, *, arguments=None, package_paths=None, environ=None):
     if not os.path.isfile(path):
         raise LaunchError(f'{path}: launch file not found.')
     try:
-        text = loader.read_text(path)
-        root = None
-        if not path.lower().endswith(('.py', '.yaml', '.yml')):
-            root = parse_xml(text, path)
-        kind = file_kind(path, text, root)
+        text, root, kind = loader.read_launch(path)
         loader.include_stack.append(os.path.realpath(path))
         if kind == 'ros1':
             from colcon_rsia.launch.ros1 import Ros1Reader

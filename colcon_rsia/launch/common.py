@@ -111,6 +111,17 @@ class Loader:
         except UnicodeDecodeError:
             raise LaunchError(f'{path}: is not UTF-8 text.')
 
+    def read_launch(self, path):
+        """A launch file's text, parsed XML (None for Python, YAML) and kind.
+
+        :raises LaunchError: when it cannot be read, or is malformed XML
+        """
+        text = self.read_text(path)
+        root = None
+        if not path.lower().endswith(('.py', '.yaml', '.yml')):
+            root = parse_xml(text, path)
+        return text, root, file_kind(path, text, root)
+
     def find_package(self, package, kind):
         """The directory of a package for ``$(find)`` and its relatives.
 
@@ -138,6 +149,9 @@ class Loader:
 
     def enter_include(self, path, location):
         """Start reading an included file; False (with a note) to skip it."""
+        if not os.path.isfile(path):
+            self.note(f'{location}: included file {path} not found')
+            return False
         real = os.path.realpath(path)
         if real in self.include_stack:
             self.note(f'{location}: include cycle: {path} is already being '
@@ -158,6 +172,25 @@ class Loader:
     def leave_include(self):
         """Done reading the last entered file."""
         self.include_stack.pop()
+
+
+def argument_text(arguments, name, *, declaring=None, missing='is not set'):
+    """The text of a launch argument (``$(arg)``, ``$(var)``).
+
+    :param dict arguments: name -> text or :class:`UnknownArg`
+    :param declaring: the argument whose default is being read (it may
+      not refer to itself)
+    :param str missing: how a note says that the argument has no value
+    :raises Unresolved: when its value is not known statically
+    """
+    if name == declaring:
+        raise Unresolved(f"argument '{name}' refers to itself")
+    if name not in arguments:
+        raise Unresolved(f"argument '{name}' {missing}")
+    value = arguments[name]
+    if isinstance(value, UnknownArg):
+        raise Unresolved(f"argument '{name}' is not known: {value.reason}")
+    return value
 
 
 def location(path, line):

@@ -11,6 +11,7 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
+from colcon_rsia.launch.common import argument_text
 from colcon_rsia.launch.common import check_value
 from colcon_rsia.launch.common import flatten
 from colcon_rsia.launch.common import fqn
@@ -125,15 +126,8 @@ class Ros1Reader:
 
     def _resolver(self, scope, notes, declaring=None):
         def lookup(name):
-            if name == declaring:
-                raise Unresolved(f"argument '{name}' refers to itself")
-            if name not in scope.args:
-                raise Unresolved(f"argument '{name}' is not declared")
-            value = scope.args[name]
-            if isinstance(value, UnknownArg):
-                raise Unresolved(f"argument '{name}' is not known: "
-                                 f'{value.reason}')
-            return value
+            return argument_text(scope.args, name, declaring=declaring,
+                                 missing='is not declared')
         return Resolver(
             dialect='ros1', lookup_arg=lookup, environ=self.loader.environ,
             find_package=self.loader.find_package,
@@ -305,9 +299,6 @@ class Ros1Reader:
     def include_file(self, path, where, *, args, ns, remaps, notes,
                      explicit, depth):
         """Read an included launch file of any kind (ROS 1 context)."""
-        if not os.path.isfile(path):
-            self.loader.note(f'{where}: included file {path} not found')
-            return
         if not self.loader.enter_include(path, where):
             return
         try:

@@ -15,14 +15,12 @@ from dataclasses import dataclass
 import os
 from typing import Optional
 
-from colcon_rsia.launch.common import file_kind
 from colcon_rsia.launch.common import join_ns
 from colcon_rsia.launch.common import load_yaml
 from colcon_rsia.launch.common import MAX_NESTING
 from colcon_rsia.launch.common import normalise_ns
 from colcon_rsia.launch.common import params_from_sections
 from colcon_rsia.launch.common import parse_bool
-from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import resolve_path
 from colcon_rsia.launch.common import ros2_param_sections
 from colcon_rsia.launch.common import ros_arguments
@@ -128,17 +126,10 @@ class Ros2Executor:
                 child.configs[key] = self.text(value, ctx, child.notes)
             except Unresolved as e:
                 child.configs[key] = UnknownArg(str(e))
-        if not os.path.isfile(path):
-            self.loader.note(f'{where}: included file {path} not found')
-            return
         if not self.loader.enter_include(path, where):
             return
         try:
-            text = self.loader.read_text(path)
-            root = None
-            if not path.lower().endswith(('.py', '.yaml', '.yml')):
-                root = parse_xml(text, path)
-            kind = file_kind(path, text, root)
+            text, root, kind = self.loader.read_launch(path)
             if kind == 'ros1':
                 self.loader.note(f'{where}: {path} is a ROS 1 launch file; '
                                  'not included from a ROS 2 launch file')

@@ -11,9 +11,9 @@ handler per type of value.
 
 import os
 
+from colcon_rsia.launch.common import argument_text
 from colcon_rsia.launch.common import parse_bool
 from colcon_rsia.launch.common import typed_value
-from colcon_rsia.launch.common import UnknownArg
 from colcon_rsia.launch.ir import BoolOp
 from colcon_rsia.launch.ir import EnvVar
 from colcon_rsia.launch.ir import LaunchConfig
@@ -77,15 +77,7 @@ class ValueResolver:
 
         :raises Unresolved: when it is not set or not known
         """
-        if name == self.declaring:
-            raise Unresolved(f"argument '{name}' refers to itself")
-        if name not in self.configs:
-            raise Unresolved(f"argument '{name}' is not set")
-        value = self.configs[name]
-        if isinstance(value, UnknownArg):
-            raise Unresolved(f"argument '{name}' is not known: "
-                             f'{value.reason}')
-        return value
+        return argument_text(self.configs, name, declaring=self.declaring)
 
     def text(self, value):
         """The text of a value, within the limits of one value."""
