@@ -206,12 +206,18 @@ class Ros2Executor:
         equal = actual == expected
         return equal if cond.kind == 'equals' else not equal
 
-    def _declare_argument(self, action, ctx, depth, uncertain):
+    def _configuration_name(self, action, ctx, what):
+        """The name an action sets; None (noted) when not known."""
         try:
-            name = self.text(action.name, ctx, [])
+            return self.text(action.name, ctx, [])
         except Unresolved as e:
-            self.loader.note(f'{action.location}: argument name not known '
+            self.loader.note(f'{action.location}: {what} name not known '
                              f'({e})')
+            return None
+
+    def _declare_argument(self, action, ctx, depth, uncertain):
+        name = self._configuration_name(action, ctx, 'argument')
+        if name is None:
             return
         if uncertain:
             if name not in ctx.configs:
@@ -231,11 +237,8 @@ class Ros2Executor:
             self.loader.note(f'{action.location}: argument {name}: {e}')
 
     def _set_configuration(self, action, ctx, depth, uncertain):
-        try:
-            name = self.text(action.name, ctx, [])
-        except Unresolved as e:
-            self.loader.note(f'{action.location}: configuration name not '
-                             f'known ({e})')
+        name = self._configuration_name(action, ctx, 'configuration')
+        if name is None:
             return
         if uncertain:
             ctx.configs[name] = UnknownArg(uncertain[0])
