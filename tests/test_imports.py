@@ -118,6 +118,46 @@ def test_no_import_cycles():
     assert _cycles(_import_graph()) == []
 
 
+def _reachable(graph, module):
+    """The modules a module imports, directly or through others."""
+    seen, stack = set(), [module]
+    while stack:
+        for target in graph.get(stack.pop(), ()):
+            if target not in seen:
+                seen.add(target)
+                stack.append(target)
+    return seen
+
+
+LAUNCH = 'colcon_rsia.launch'
+# the readers of ROS 2 launch files and what only they use; the executor
+# is handed them as a table and runs what they build
+ROS2_READERS = {f'{LAUNCH}.ros2'} | {
+    m for m in MODULES if m.startswith(f'{LAUNCH}.python_launch')}
+
+
+def test_launch_executor_and_readers_do_not_import_each_other():
+    graph = _import_graph()
+    executor = f'{LAUNCH}.ros2_executor'
+    assert _reachable(graph, executor) & ROS2_READERS == set()
+    for reader in ROS2_READERS:
+        assert executor not in _reachable(graph, reader), reader
+
+
+def test_launch_modules_import_no_launch_entry():
+    # launch/__init__ (load_launch) picks the readers and the executor:
+    # a module below it that imported it would make a cycle through it
+    graph = _import_graph()
+    wrong = [m for m in MODULES if m.startswith(f'{LAUNCH}.')
+             and LAUNCH in graph[m]]
+    assert wrong == []
+
+
+def test_launch_notes_is_the_lowest_launch_module():
+    # every launch module may use shorten/unique without a cycle
+    assert _imports(MODULES[f'{LAUNCH}.notes']) == set()
+
+
 def _layer(module):
     parts = module.split('.')[1:]
     if parts[:2] == ['package', 'store']:

@@ -12,7 +12,6 @@ import os
 
 from colcon_rsia.launch.common import file_kind
 from colcon_rsia.launch.common import Loader
-from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import LaunchResult
 from colcon_rsia.launch.model import NodeInstance
@@ -42,18 +41,15 @@ def load_launch(path, *, arguments=None, package_paths=None, environ=None):
     if not os.path.isfile(path):
         raise LaunchError(f'{path}: launch file not found.')
     try:
-        text = loader.read_text(path)
-        root = None
-        if not path.lower().endswith(('.py', '.yaml', '.yml')):
-            root = parse_xml(text, path)
-        kind = file_kind(path, text, root)
+        text, root, kind = loader.read_launch(path)
         loader.include_stack.append(os.path.realpath(path))
         if kind == 'ros1':
             from colcon_rsia.launch.ros1 import Ros1Reader
             Ros1Reader(loader).read_top(path, root)
         else:
-            from colcon_rsia.launch.ros2 import Ros2Executor
-            Ros2Executor(loader).run_top(path, kind, text, root)
+            from colcon_rsia.launch.ros2_executor import Ros2Executor
+            Ros2Executor(loader, _ros2_readers()).run_top(
+                path, kind, text, root)
     except LaunchError:
         raise
     except RecursionError:
@@ -64,3 +60,15 @@ def load_launch(path, *, arguments=None, package_paths=None, environ=None):
             f'{path}: internal error of the launch analysis '
             f'({type(e).__name__}: {e}); please report it.') from e
     return loader.result
+
+
+def _ros2_readers():
+    """The readers of ROS 2 launch files by kind, for the executor.
+
+    Imported when a ROS 2 file is read: a ROS 1 system never loads them.
+    """
+    from colcon_rsia.launch.python_launch import read_python_launch
+    from colcon_rsia.launch.ros2 import read_xml_launch
+    from colcon_rsia.launch.ros2 import read_yaml_launch
+    return {'ros2': read_xml_launch, 'yaml': read_yaml_launch,
+            'python': read_python_launch}

@@ -13,6 +13,7 @@ from typing import List
 from colcon_rsia import safe_files
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import LaunchResult
+from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.safe_eval import Unresolved
 from defusedxml import DefusedXmlException
 from defusedxml.ElementTree import DefusedXMLParser
@@ -20,6 +21,7 @@ from defusedxml.ElementTree import ParseError
 import yaml
 
 # a launch or parameter file larger than this is not a hand-written file
+# (the largest real ones are some hundred KiB)
 MAX_FILE_SIZE = 8 * 1024 * 1024
 # includes nested deeper than this are runaway recursion, not a system
 # (real systems nest a handful of levels)
@@ -28,12 +30,18 @@ MAX_INCLUDE_DEPTH = 32
 # levels deep, must not make 2**30 reads (the largest real systems read a
 # few hundred files)
 MAX_INCLUDES = 2000
-# parameters one YAML value may expand to (YAML aliases can nest a billion)
+# parameters one YAML value may expand to: YAML aliases can nest a
+# billion, the largest real parameter files hold a few thousand
 MAX_PARAMETERS = 20000
-# nesting of YAML values and of launch elements handled recursively; the
-# Python stack stays well below its limit (the nesting of substitutions
-# and of Python launch code have limits of their own:
-# substitutions.MAX_SUBSTITUTION_NESTING, python_launch_values.MAX_CODE_NESTING)
+# THE nesting limit of launch elements, for every reader (ROS 1 XML,
+# ROS 2 XML and YAML) and the ROS 2 executor (groups and the includes
+# they contain), and of YAML values: all are handled recursively. Real
+# files nest a handful of levels; at a few Python frames a level, 64
+# keeps the stack well below its limit of 1000. Other nestings have their
+# own: includes (MAX_INCLUDE_DEPTH), substitutions
+# (substitutions.MAX_SUBSTITUTION_NESTING), values in values
+# (ros2_values.MAX_VALUE_DEPTH), Python launch code
+# (python_launch_values.MAX_CODE_NESTING)
 MAX_NESTING = 64
 # node name patterns of parameter files longer than this, or with more
 # wildcards, match nothing (their regular expression could backtrack for
@@ -103,6 +111,17 @@ class Loader:
         except UnicodeDecodeError:
             raise LaunchError(f'{path}: is not UTF-8 text.')
 
+    def read_launch(self, path):
+        """A launch file's text, parsed XML (None for Python, YAML) and kind.
+
+        :raises LaunchError: when it cannot be read, or is malformed XML
+        """
+        text = self.read_text(path)
+        root = None
+        if not path.lower().endswith(('.py', '.yaml', '.yml')):
+            root = parse_xml(text, path)
+        return text, root, file_kind(path, text, root)
+
     def find_package(self, package, kind):
         """The directory of a package for ``$(find)`` and its relatives.
 
@@ -130,6 +149,9 @@ class Loader:
 
     def enter_include(self, path, location):
         """Start reading an included file; False (with a note) to skip it."""
+        if not os.path.isfile(path):
+            self.note(f'{location}: included file {path} not found')
+            return False
         real = os.path.realpath(path)
         if real in self.include_stack:
             self.note(f'{location}: include cycle: {path} is already being '
@@ -150,6 +172,25 @@ class Loader:
     def leave_include(self):
         """Done reading the last entered file."""
         self.include_stack.pop()
+
+
+def argument_text(arguments, name, *, declaring=None, missing='is not set'):
+    """The text of a launch argument (``$(arg)``, ``$(var)``).
+
+    :param dict arguments: name -> text or :class:`UnknownArg`
+    :param declaring: the argument whose default is being read (it may
+      not refer to itself)
+    :param str missing: how a note says that the argument has no value
+    :raises Unresolved: when its value is not known statically
+    """
+    if name == declaring:
+        raise Unresolved(f"argument '{name}' refers to itself")
+    if name not in arguments:
+        raise Unresolved(f"argument '{name}' {missing}")
+    value = arguments[name]
+    if isinstance(value, UnknownArg):
+        raise Unresolved(f"argument '{name}' is not known: {value.reason}")
+    return value
 
 
 def location(path, line):
@@ -435,17 +476,7 @@ def parse_bool(text, what):
         return True
     if value in ('false', '0'):
         return False
-    raise Unresolved(f"{what}: '{_short(text)}' is not true or false")
-
-
-def _short(text, limit=60):
-    text = str(text)
-    return text if len(text) <= limit else text[:limit] + '…'
-
-
-def shorten(text, limit=60):
-    """The first ``limit`` characters of a text for a message."""
-    return _short(text, limit)
+    raise Unresolved(f"{what}: '{shorten(text)}' is not true or false")
 
 
 def resolve_path(path, current_file):

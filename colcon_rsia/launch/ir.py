@@ -4,8 +4,8 @@
 
 The XML and YAML readers (:mod:`colcon_rsia.launch.ros2`) and the Python
 reader (:mod:`colcon_rsia.launch.python_launch`) produce these; the
-executor (:class:`colcon_rsia.launch.ros2.Ros2Executor`) runs them. Plain
-data: nothing here reads a file or resolves a value.
+executor (:class:`colcon_rsia.launch.ros2_executor.Ros2Executor`) runs
+them. Plain data: nothing here reads a file or resolves a value.
 """
 
 from dataclasses import dataclass

@@ -11,6 +11,7 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
+from colcon_rsia.launch.common import argument_text
 from colcon_rsia.launch.common import check_value
 from colcon_rsia.launch.common import flatten
 from colcon_rsia.launch.common import fqn
@@ -21,20 +22,17 @@ from colcon_rsia.launch.common import MAX_NESTING
 from colcon_rsia.launch.common import parse_bool
 from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import resolve_path
-from colcon_rsia.launch.common import shorten
 from colcon_rsia.launch.common import UnknownArg
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import NodeInstance
+from colcon_rsia.launch.notes import shorten
+from colcon_rsia.launch.notes import unique
 from colcon_rsia.launch.substitutions import Resolver
 from colcon_rsia.launch.substitutions import Unresolved
 import yaml
 
 # elements that start nothing and change nothing the analysis needs
 _IGNORED = frozenset(('machine', 'env', 'master', 'test'))
-# element -> method of Ros1Reader reading it
-_ELEMENTS = {
-    'arg': '_arg', 'group': '_group', 'remap': '_remap', 'param': '_param',
-    'rosparam': '_rosparam', 'node': '_node', 'include': '_include'}
 
 
 @dataclass
@@ -128,15 +126,8 @@ class Ros1Reader:
 
     def _resolver(self, scope, notes, declaring=None):
         def lookup(name):
-            if name == declaring:
-                raise Unresolved(f"argument '{name}' refers to itself")
-            if name not in scope.args:
-                raise Unresolved(f"argument '{name}' is not declared")
-            value = scope.args[name]
-            if isinstance(value, UnknownArg):
-                raise Unresolved(f"argument '{name}' is not known: "
-                                 f'{value.reason}')
-            return value
+            return argument_text(scope.args, name, declaring=declaring,
+                                 missing='is not declared')
         return Resolver(
             dialect='ros1', lookup_arg=lookup, environ=self.loader.environ,
             find_package=self.loader.find_package,
@@ -169,12 +160,12 @@ class Ros1Reader:
         uncertain = [] if condition is True else [condition]
         if elem.tag in _IGNORED:
             return
-        handler = _ELEMENTS.get(elem.tag)
+        handler = _ELEMENT_HANDLERS.get(elem.tag)
         if handler is None:
             self.loader.note(f'{self._loc(scope, elem)}: unknown element '
                              f'<{shorten(elem.tag, 40)}> ignored')
             return
-        getattr(self, handler)(elem, scope, depth, uncertain)
+        handler(self, elem, scope, depth, uncertain)
 
     def _arg(self, elem, scope, depth, uncertain):
         attrs = elem.attrs
@@ -308,9 +299,6 @@ class Ros1Reader:
     def include_file(self, path, where, *, args, ns, remaps, notes,
                      explicit, depth):
         """Read an included launch file of any kind (ROS 1 context)."""
-        if not os.path.isfile(path):
-            self.loader.note(f'{where}: included file {path} not found')
-            return
         if not self.loader.enter_include(path, where):
             return
         try:
@@ -531,15 +519,17 @@ class Ros1Reader:
                              f'<{shorten(child.tag, 40)}> in <node> ignored')
         _command_line(arg_tokens, holder)
         instance.args = [t for t in arg_tokens if ':=' not in t]
-        self._dedupe(notes)
+        notes[:] = unique(notes)
         self.loader.result.instances.append(instance)
         self.instances.append((instance, holder.params))
 
-    @staticmethod
-    def _dedupe(notes):
-        seen = set()
-        kept = [n for n in notes if not (n in seen or seen.add(n))]
-        notes[:] = kept
+
+# element -> the method of Ros1Reader reading it
+_ELEMENT_HANDLERS = {
+    'arg': Ros1Reader._arg, 'group': Ros1Reader._group,
+    'remap': Ros1Reader._remap, 'param': Ros1Reader._param,
+    'rosparam': Ros1Reader._rosparam, 'node': Ros1Reader._node,
+    'include': Ros1Reader._include}
 
 
 @dataclass

@@ -14,6 +14,8 @@ import ast
 import math
 import operator
 
+from colcon_rsia.launch.notes import shorten
+
 
 class Unresolved(Exception):
     """A value that cannot be determined statically (the message says why)."""
@@ -22,12 +24,13 @@ class Unresolved(Exception):
 # an expression longer than this is not a launch-file expression; the
 # limit also keeps ast.parse far from its nesting limits
 MAX_EXPRESSION_LENGTH = 2000
-# nesting depth of the evaluated tree; the Python stack stays well below its
-# own limit
+# nesting depth of the evaluated tree: expressions nest a few levels; at
+# two Python frames a level the stack stays well below its limit of 1000
 MAX_DEPTH = 100
 # longest string an expression may build ('x' * 10 ** 9 must not run)
 MAX_STRING_LENGTH = 100000
-# largest magnitude of a number an expression may build
+# largest magnitude of a number an expression may build: about the largest
+# float, beyond which arithmetic overflows or big integers get slow
 MAX_NUMBER = 10 ** 308
 
 _BINARY = {
@@ -74,7 +77,7 @@ def evaluate(expression, *, lookup=None, functions=None):
     try:
         tree = ast.parse(text, mode='eval')
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise Unresolved(f'not a valid expression: {_short(text)}')
+        raise Unresolved(f'not a valid expression: {shorten(text)}')
     evaluator = _Evaluator(lookup, functions or {})
     return evaluator.eval(tree.body, 0)
 
@@ -86,10 +89,6 @@ def to_text(value):
     except ValueError:  # an int beyond Python's str conversion limit
         raise Unresolved('the expression value is too large')
     return text
-
-
-def _short(text, limit=60):
-    return text if len(text) <= limit else text[:limit] + '…'
 
 
 def _check(value):
@@ -114,30 +113,30 @@ class _Evaluator:
     def eval(self, node, depth):
         if depth > MAX_DEPTH:
             raise Unresolved('the expression is nested too deeply')
-        method = getattr(self, '_' + type(node).__name__, None)
+        method = _NODE_HANDLERS.get(type(node))
         if method is None:
             raise Unresolved(
                 f'{type(node).__name__} is not supported in expressions')
-        return _check(method(node, depth + 1))
+        return _check(method(self, node, depth + 1))
 
-    def _Constant(self, node, depth):  # noqa: N802
+    def _constant(self, node, depth):
         if not isinstance(node.value, _SCALARS):
             raise Unresolved('only text, numbers and booleans are supported')
         return node.value
 
-    def _Name(self, node, depth):  # noqa: N802
+    def _name(self, node, depth):
         if self.lookup is None:
             raise Unresolved(f"unknown name '{node.id}'")
         return self.lookup(node.id)
 
-    def _BinOp(self, node, depth):  # noqa: N802
+    def _bin_op(self, node, depth):
         if type(node.op) not in _BINARY:
             raise Unresolved('operator not supported in expressions')
         left = self.eval(node.left, depth)
         right = self.eval(node.right, depth)
         return binary(node.op, left, right)
 
-    def _UnaryOp(self, node, depth):  # noqa: N802
+    def _unary_op(self, node, depth):
         value = self.eval(node.operand, depth)
         if isinstance(node.op, ast.Not):
             return not value
@@ -149,7 +148,7 @@ class _Evaluator:
             return +value
         raise Unresolved('operator not supported in expressions')
 
-    def _BoolOp(self, node, depth):  # noqa: N802
+    def _bool_op(self, node, depth):
         value = None
         for operand in node.values:
             value = self.eval(operand, depth)
@@ -159,7 +158,7 @@ class _Evaluator:
                 return value
         return value
 
-    def _Compare(self, node, depth):  # noqa: N802
+    def _compare(self, node, depth):
         left = self.eval(node.left, depth)
         for op_node, right_node in zip(node.ops, node.comparators):
             op = _COMPARE.get(type(op_node))
@@ -175,12 +174,12 @@ class _Evaluator:
             left = right
         return True
 
-    def _IfExp(self, node, depth):  # noqa: N802
+    def _if_exp(self, node, depth):
         if self.eval(node.test, depth):
             return self.eval(node.body, depth)
         return self.eval(node.orelse, depth)
 
-    def _Call(self, node, depth):  # noqa: N802
+    def _call(self, node, depth):
         if not isinstance(node.func, ast.Name) or node.keywords:
             raise Unresolved('only simple calls such as arg(…) are supported')
         function = self.functions.get(node.func.id,
@@ -196,6 +195,19 @@ class _Evaluator:
             return function(*args)
         except (TypeError, ValueError, ArithmeticError) as e:
             raise Unresolved(f'{node.func.id}() fails: {e}')
+
+
+# the nodes of the subset; any other is not supported
+_NODE_HANDLERS = {
+    ast.Constant: _Evaluator._constant,
+    ast.Name: _Evaluator._name,
+    ast.BinOp: _Evaluator._bin_op,
+    ast.UnaryOp: _Evaluator._unary_op,
+    ast.BoolOp: _Evaluator._bool_op,
+    ast.Compare: _Evaluator._compare,
+    ast.IfExp: _Evaluator._if_exp,
+    ast.Call: _Evaluator._call,
+}
 
 
 def binary(op, left, right):

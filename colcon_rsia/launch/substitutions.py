@@ -13,6 +13,7 @@ import os
 from typing import List
 from typing import Optional
 
+from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.safe_eval import evaluate
 from colcon_rsia.launch.safe_eval import to_text
 from colcon_rsia.launch.safe_eval import Unresolved
@@ -115,7 +116,7 @@ class _Parser:
         name = text[name_start:self.pos]
         if not name:
             raise Unresolved(
-                f'empty or malformed substitution in {_short(text[start:])}')
+                f'empty or malformed substitution in {shorten(text[start:])}')
         if name == 'eval':
             raw = self._raw_body(start)
             return Call(name, [], raw, text[start:self.pos])
@@ -124,7 +125,7 @@ class _Parser:
             self._skip_space()
             if self.pos >= len(text):
                 raise Unresolved(
-                    f'unterminated substitution {_short(text[start:])}')
+                    f'unterminated substitution {shorten(text[start:])}')
             if text[self.pos] == ')':
                 self.pos += 1
                 break
@@ -164,7 +165,8 @@ class _Parser:
         buf = []
         while True:
             if self.pos >= len(text):
-                raise Unresolved(f'unterminated quote in {_short(text[start:])}')
+                raise Unresolved(
+                    f'unterminated quote in {shorten(text[start:])}')
             c = text[self.pos]
             if c == quote:
                 self.pos += 1
@@ -201,17 +203,13 @@ class _Parser:
                     return body.strip()
                 level -= 1
             self.pos += 1
-        raise Unresolved(f'unterminated substitution {_short(text[start:])}')
+        raise Unresolved(f'unterminated substitution {shorten(text[start:])}')
 
 
 def _flush(buf, parts):
     if buf:
         parts.append(Text(''.join(buf)))
         buf.clear()
-
-
-def _short(text, limit=60):
-    return text if len(text) <= limit else text[:limit] + '…'
 
 
 def _limit(value):
@@ -250,23 +248,28 @@ class Resolver:
 
     def resolve(self, sub):
         """The text of a parsed substitution tree."""
-        if isinstance(sub, Text):
-            return sub.value
-        if isinstance(sub, Concat):
-            total = []
-            size = 0
-            for part in sub.parts:
-                value = self.resolve(part)
-                size += len(value)
-                if size > MAX_VALUE_LENGTH:
-                    raise Unresolved('a substituted value is too long')
-                total.append(value)
-            return ''.join(total)
+        return _TREE_HANDLERS[type(sub)](self, sub)
+
+    def _text(self, sub):
+        return sub.value
+
+    def _concat(self, sub):
+        total = []
+        size = 0
+        for part in sub.parts:
+            value = self.resolve(part)
+            size += len(value)
+            if size > MAX_VALUE_LENGTH:
+                raise Unresolved('a substituted value is too long')
+            total.append(value)
+        return ''.join(total)
+
+    def _call(self, sub):
         if sub.name == 'eval':
             return _limit(self._eval(sub))
         handler = _HANDLERS[self.dialect].get(sub.name)
         if handler is None:
-            raise Unresolved(f'unknown substitution {_short(sub.source)}')
+            raise Unresolved(f'unknown substitution {shorten(sub.source)}')
         args = [self.resolve(a) for a in sub.args]
         return _limit(handler(self, args, sub))
 
@@ -320,7 +323,7 @@ class Resolver:
         return placeholder
 
     def _not_static(self, args, sub):
-        raise Unresolved(f'{_short(sub.source)} is only known at run time')
+        raise Unresolved(f'{shorten(sub.source)} is only known at run time')
 
     def _eval(self, sub):
         body = sub.raw
@@ -338,7 +341,7 @@ class Resolver:
         try:
             value = evaluate(text, lookup=self._eval_arg, functions=functions)
         except TypeError:  # a function called with the wrong arguments
-            raise Unresolved(f'{_short(sub.source)}: wrong arguments')
+            raise Unresolved(f'{shorten(sub.source)}: wrong arguments')
         return to_text(value)
 
     def _eval_arg(self, name):
@@ -367,6 +370,13 @@ def _unquote(body):
         return body[1:-1]
     return body
 
+
+# the parts of a parsed tree
+_TREE_HANDLERS = {
+    Text: Resolver._text,
+    Concat: Resolver._concat,
+    Call: Resolver._call,
+}
 
 _HANDLERS = {
     'ros1': {

@@ -9,13 +9,18 @@ private to the node, and a remap replaces a resolved name by another; both
 sides of a remap are resolved in the node's namespace.
 """
 
+from colcon_rsia.launch.common import normalise_ns
 from colcon_rsia.model import UNKNOWN_NAMESPACE
 
 
 def join(namespace, name):
-    """Join a namespace and a relative name into a normalised global name."""
-    parts = [p for p in f'{namespace}/{name}'.split('/') if p]
-    return '/' + '/'.join(parts)
+    """Join a namespace and a relative name into a normalised global name.
+
+    The launch readers normalise names the same way (``normalise_ns``);
+    one definition keeps the names they give and the ones resolved here
+    equal.
+    """
+    return normalise_ns(f'{namespace}/{name}')
 
 
 def node_fqn(namespace, node_name):
