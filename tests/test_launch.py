@@ -1014,3 +1014,23 @@ def test_eval_and_python_launch_arithmetic_agree(tmp_path):
         expected
     assert not isinstance(xml.params.get('huge'), int)
     assert not isinstance(python.params.get('huge'), int)
+
+
+def test_a_composable_node_outside_a_container_is_a_note(tmp_path):
+    # launch itself refuses it; the rest of the file is still read
+    path = write(tmp_path, 'stray.launch.py', """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+        from launch_ros.descriptions import ComposableNode
+
+        def generate_launch_description():
+            return LaunchDescription([
+                ComposableNode(package='demo', plugin='demo::Talker',
+                               name='talker'),
+                Node(package='demo', executable='listener', name='listener'),
+            ])
+        """)
+    result = load(path)
+    assert sorted(instances(result)) == ['/listener']
+    assert any('ComposableNode outside a container' in note
+               for note in result.unresolved)

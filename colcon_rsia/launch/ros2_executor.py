@@ -26,6 +26,7 @@ from colcon_rsia.launch.common import ros2_param_sections
 from colcon_rsia.launch.common import ros_arguments
 from colcon_rsia.launch.common import UnknownArg
 from colcon_rsia.launch.ir import Action
+from colcon_rsia.launch.ir import ComposableNodeAction
 from colcon_rsia.launch.ir import DeclareArgument
 from colcon_rsia.launch.ir import Group
 from colcon_rsia.launch.ir import Ignored
@@ -332,6 +333,12 @@ class Ros2Executor:
     def _opaque(self, action, ctx, depth, uncertain):
         self.loader.note(f'{action.location}: {action.note}')
 
+    def _stray_composable(self, action, ctx, depth, uncertain):
+        # launch itself rejects it: a component runs only in a container
+        self.loader.note(
+            f'{action.location}: a ComposableNode outside a container '
+            '(ComposableNodeContainer, LoadComposableNodes) starts nothing')
+
     def _load_composable(self, action, ctx, depth, uncertain):
         for composable in action.composables:
             self._component(composable, ctx, uncertain)
@@ -534,5 +541,6 @@ _ACTION_HANDLERS = {
     SetEnv: Ros2Executor._set_env,
     Opaque: Ros2Executor._opaque,
     LoadComposable: Ros2Executor._load_composable,
+    ComposableNodeAction: Ros2Executor._stray_composable,
     NodeAction: Ros2Executor._node,
 }
