@@ -57,6 +57,21 @@ rclcpp_components_register_node(camera
   PLUGIN "idioms::Camera" EXECUTABLE camera_node)
 vendor_specific_setup(camera FAST)  # defined by no package here
 
+# a library that is not installed, a target made by a command nothing
+# defines, a version of a package found through another
+find_library(GEO_LIB NAMES surely_not_installed_geo REQUIRED)
+target_link_libraries(fusion ${GEO_LIB})
+pybind11_add_module(py_ext src/py_ext.cpp)
+target_link_libraries(py_ext rclcpp::rclcpp)
+rosidl_generate_interfaces(${PROJECT_NAME} msg/Fused.msg)
+if(${rosidl_cmake_VERSION} VERSION_LESS 2.5.0)
+  rosidl_target_interfaces(fusion ${PROJECT_NAME} rosidl_typesupport_cpp)
+else()
+  rosidl_get_typesupport_target(fused_target ${PROJECT_NAME}
+    rosidl_typesupport_cpp)
+  target_link_libraries(fusion ${fused_target})
+endif()
+
 if(BUILD_TESTING)
   find_package(ament_cmake_gtest REQUIRED)
   ament_add_gtest(test_fusion test/test_fusion.cpp)
@@ -80,7 +95,7 @@ SOURCES = [
     'src/fusion_math.cpp', 'src/mapper_main.cpp', 'src/mapper_grid.cpp',
     'src/auto_node.cpp', 'src/filters.cpp', 'src/retired.cpp',
     'src/camera.cpp', 'test/test_fusion.cpp', 'test/fusion_check.cpp',
-    'tools/inspector.cpp']
+    'tools/inspector.cpp', 'src/py_ext.cpp']
 
 
 def write_package(root, cmakelists, sources=SOURCES, extra=None):

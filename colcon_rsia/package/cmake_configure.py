@@ -334,13 +334,20 @@ def first_error(output):
     for i, line in enumerate(lines):
         if line.startswith('CMake Error'):
             # 'CMake Error at CMakeLists.txt:4 (add_executable):' + message
-            words = [re.sub(r'^CMake Error( at)?:?\s*', '', line.strip())
-                     .rstrip(':')]
+            # and its indented message, up to a blank line
+            place = re.sub(r'^CMake Error( at)?:?\s*', '', line.strip())
+            message = []
             for following in lines[i + 1:]:
-                if following.strip():
-                    words.append(following.strip())
+                if not following.strip():
+                    if message:
+                        break
+                    continue
+                if not following.startswith(' '):
                     break
-            return re.sub(r'\s+', ' ', ': '.join(w for w in words if w))[:300]
+                message.append(following.strip())
+            text = place.rstrip(':') + (': ' + ' '.join(message)
+                                        if message else '')
+            return re.sub(r'\s+', ' ', text)[:300]
     return 'no codemodel was written'
 
 

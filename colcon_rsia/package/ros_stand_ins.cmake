@@ -22,6 +22,14 @@ macro(rsia_provide_package rsia_method rsia_package)
     set(${rsia_package}_${rsia_suffix} "")
     set(${rsia_upper}_${rsia_suffix} "")
   endforeach()
+  # `if(${rosidl_cmake_VERSION} VERSION_LESS 2.5.0)` needs a version: the
+  # one asked for, else one newer than any
+  if("${ARGV2}" MATCHES "^[0-9]+(\\.[0-9]+)*$")
+    set(${rsia_package}_VERSION "${ARGV2}")
+  else()
+    set(${rsia_package}_VERSION 9999.0.0)
+  endif()
+  set(${rsia_upper}_VERSION "${${rsia_package}_VERSION}")
   # find_package(catkin REQUIRED COMPONENTS roscpp ...): each component too
   foreach(rsia_component ${ARGN})
     set(${rsia_package}_${rsia_component}_FOUND TRUE)
@@ -39,8 +47,11 @@ cmake_language(SET_DEPENDENCY_PROVIDER rsia_provide_package
 # Imported targets of packages that are not installed (rclcpp::rclcpp,
 # Boost::system) would fail the generate step: they are left out. So are
 # dependencies on targets the stand-ins below do not make (message
-# generation targets).
+# generation targets), and links of such targets (pybind11_add_module's).
 function(target_link_libraries rsia_target)
+  if(NOT TARGET "${rsia_target}")
+    return()
+  endif()
   set(rsia_items)
   foreach(rsia_item IN LISTS ARGN)
     if(rsia_item MATCHES "::" AND NOT TARGET "${rsia_item}")
@@ -62,6 +73,24 @@ function(add_dependencies rsia_target)
     _add_dependencies(${rsia_target} ${rsia_items})
   endif()
 endfunction()
+
+# Nothing is installed, and the targets of stood-in commands are missing
+function(install)
+endfunction()
+
+# Libraries and headers of packages that are not installed: found as nothing
+# (a NOTFOUND result used by a target fails the generate step)
+foreach(rsia_command find_library find_path find_file)
+  cmake_language(EVAL CODE "
+    function(${rsia_command} rsia_variable)
+      set(rsia_arguments \${ARGN})
+      list(REMOVE_ITEM rsia_arguments REQUIRED)
+      _${rsia_command}(\${rsia_variable} \${rsia_arguments})
+      if(NOT \${rsia_variable})
+        set(\${rsia_variable} \"\" CACHE STRING \"\" FORCE)
+      endif()
+    endfunction()")
+endforeach()
 
 # -- catkin -----------------------------------------------------------------
 
@@ -108,13 +137,38 @@ foreach(rsia_command ament_package ament_target_dependencies
     ament_lint_auto_find_test_dependencies ament_add_gtest ament_add_gmock
     ament_add_gtest_executable ament_add_pytest_test ament_add_test
     ament_python_install_package ament_index_register_resource
-    ament_environment_hooks ament_auto_find_build_dependencies
-    ament_auto_find_test_dependencies ament_auto_package
-    ament_auto_add_gtest autoware_package
-    pluginlib_export_plugin_description_file
-    rosidl_generate_interfaces rosidl_target_interfaces)
+    ament_environment_hooks ament_auto_find_test_dependencies
+    ament_auto_package ament_auto_add_gtest
+    pluginlib_export_plugin_description_file rosidl_target_interfaces)
   cmake_language(EVAL CODE "function(${rsia_command})\nendfunction()")
 endforeach()
+
+# ament_auto_find_build_dependencies() finds the build dependencies of
+# package.xml (autoware_package() calls it): their variables are set (a
+# package may test ${rosidl_cmake_VERSION})
+macro(ament_auto_find_build_dependencies)
+  set(rsia_lines)
+  if(EXISTS "${PROJECT_SOURCE_DIR}/package.xml")
+    file(STRINGS "${PROJECT_SOURCE_DIR}/package.xml" rsia_lines
+      REGEX "<(depend|build_depend|buildtool_depend)>")
+  endif()
+  foreach(rsia_line IN LISTS rsia_lines)
+    string(REGEX REPLACE ".*<[a-z_]+>[ \t]*([^< \t]+)[ \t]*</.*" "\\1"
+      rsia_dependency "${rsia_line}")
+    rsia_provide_package(FIND_PACKAGE "${rsia_dependency}")
+  endforeach()
+endmacro()
+
+macro(autoware_package)
+  ament_auto_find_build_dependencies()
+endmacro()
+
+# rosidl_default_generators brings rosidl_cmake, whose version packages test
+macro(rosidl_generate_interfaces)
+  if(NOT DEFINED rosidl_cmake_VERSION)
+    rsia_provide_package(FIND_PACKAGE rosidl_cmake)
+  endif()
+endmacro()
 
 # the variable it sets names no target we have: linking to nothing is right
 function(rosidl_get_typesupport_target rsia_variable)
