@@ -151,6 +151,15 @@ def configure_package(package_path, build_base):
     cmake_files = _package_cmake_files(package_path)
     if 'CMakeLists.txt' not in cmake_files:
         return Configured()  # nothing to configure: nothing to say
+    for relative, content in sorted(cmake_files.items()):
+        try:
+            content.decode('utf-8')
+        except UnicodeDecodeError:
+            # CMake reads it, but writes the file names it holds garbled
+            # into the codemodel (a Latin-1 'café.cpp' loses its '.cpp')
+            return Configured(problem=(
+                f'{relative} is not UTF-8, which CMake cannot report file '
+                f'names of; {FALLBACK}'))
     cmake, version = cmake_version()
     if cmake is None:
         return Configured(problem=f'cmake was not found; {FALLBACK}')
