@@ -2,12 +2,14 @@
 # Licensed under the Apache License, Version 2.0
 """Which executables and components a package's CMakeLists.txt makes.
 
-Without a build there is no CMake codemodel: the file itself is read, with
-the helper functions and macros packages wrap add_executable in.
+Without a build, CMake configures the package (tests/test_cmake_configure.py);
+when it cannot, the file itself is read, with the helper functions and macros
+packages wrap add_executable in.
 """
 
 import json
 
+from colcon_rsia.package import cmake_configure
 from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
 from conftest import run_colcon
@@ -32,10 +34,17 @@ rclcpp_components_register_node(demo_lib PLUGIN "${plugin}" EXECUTABLE ${exe})
 """
 
 
-def test_helper_functions_macros_and_variables_are_expanded(tmp_path):
+def test_helper_functions_macros_and_variables_are_expanded(
+        tmp_path, monkeypatch):
+    # the fallback reader: no cmake to ask
+    monkeypatch.setattr(cmake_configure, '_CMAKE_VERSION', [(None, None)])
     (tmp_path / 'CMakeLists.txt').write_text(CMAKELISTS)
+    diagnostics = []
     executables = find_executables(
-        package_path=str(tmp_path), build_base=str(tmp_path / 'no_build'))
+        package_path=str(tmp_path), build_base=str(tmp_path / 'no_build'),
+        diagnostics=diagnostics)
+    assert diagnostics == [
+        'cmake was not found; CMakeLists.txt read by the fallback reader']
     assert executables == {
         'talker': [str(tmp_path / 'src' / 'topics' / 'talker.cpp')],
         'server': [str(tmp_path / 'src' / 'services' / 'server.cpp')],
@@ -44,7 +53,8 @@ def test_helper_functions_macros_and_variables_are_expanded(tmp_path):
     components = find_components(
         package_path=str(tmp_path),
         exported_classes=[('a::Talker', 'rclcpp::Node'),
-                          ('b::Talker', 'rclcpp::Node')])
+                          ('b::Talker', 'rclcpp::Node')],
+        build_base=str(tmp_path / 'no_build'))
     # a registration whose names stay unknown (${plugin}) is left out; two
     # classes of one short name keep their qualified names
     assert components == {
@@ -77,12 +87,13 @@ def test_a_program_no_executable_names_is_its_own_node(tmp_path):
         '<buildtool_depend>ament_cmake</buildtool_depend>'
         '<depend>rclcpp</depend>'
         '<export><build_type>ament_cmake</build_type></export></package>')
-    # executables made in a loop: not readable without CMake itself
+    # executables made in a loop (CMake reads it); gamma's main is built by
+    # no executable
     (package / 'CMakeLists.txt').write_text(
         'cmake_minimum_required(VERSION 3.8)\nproject(looped)\n'
         'foreach(node alpha beta)\n'
-        '  add_executable(${node} src/${node}.cpp)\nendforeach()\n')
-    for name in ('alpha', 'beta'):
+        '  add_executable(${node}_node src/${node}.cpp)\nendforeach()\n')
+    for name in ('alpha', 'beta', 'gamma'):
         (package / 'src' / f'{name}.cpp').write_text(NODE.format(name=name))
     run_colcon(['rsia', 'analyze', '--base-paths', str(tmp_path / 'src')],
                cwd=tmp_path, check=True)
@@ -91,8 +102,9 @@ def test_a_program_no_executable_names_is_its_own_node(tmp_path):
     # each main is its own node with only its own publisher, and says why
     nodes = {n['id']: [p['topic'] for p in n['publishers']]
              for n in summary['nodes']}
-    assert nodes == {'looped/alpha': ['alpha_out'],
-                     'looped/beta': ['beta_out']}
-    assert len(summary['diagnostics']) == 2
-    assert all('defines main() but no executable' in d
-               for d in summary['diagnostics'])
+    assert nodes == {'looped/alpha_node': ['alpha_out'],
+                     'looped/beta_node': ['beta_out'],
+                     'looped/gamma': ['gamma_out']}
+    assert summary['diagnostics'] == [
+        'src/gamma.cpp defines main() but no executable of CMakeLists.txt '
+        "builds it: node 'gamma' named after the file"]

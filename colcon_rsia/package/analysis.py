@@ -501,7 +501,8 @@ def build_summary(*, name, path, build_base, units):
     """
     summary = model.PackageSummary(
         package=name, path=path, tool_version=__version__)
-    executables = find_executables(package_path=path, build_base=build_base)
+    executables = find_executables(package_path=path, build_base=build_base,
+                                   diagnostics=summary.diagnostics)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
     unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
@@ -523,7 +524,8 @@ def build_summary(*, name, path, build_base, units):
                     'file')
     library = [u for f, u in units.items() if f not in executable_sources]
     exported = merge_facts(units.values()).plugin_exports
-    components = find_components(package_path=path, exported_classes=exported)
+    components = find_components(package_path=path, exported_classes=exported,
+                                 build_base=build_base)
     # component classes an executable of the package instantiates: the
     # executable is that node (one node, one id)
     wrapped = set()

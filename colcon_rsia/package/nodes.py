@@ -3,68 +3,59 @@
 """Which sources make which node.
 
 C++ executables come from the CMake file-API codemodel that colcon-cmake asks
-CMake for (``build/<pkg>/.cmake/api/v1/reply``), else from ``add_executable``
-in ``CMakeLists.txt``. Nodelets come from the plugin XML exported in
+CMake for (``build/<pkg>/.cmake/api/v1/reply``); before a build, from the
+codemodel of our own configure (see
+:mod:`colcon_rsia.package.cmake_configure`); when CMake cannot be asked,
+from ``add_executable`` in ``CMakeLists.txt``. Nodelets come from the plugin XML exported in
 ``package.xml`` and the ``PLUGINLIB_EXPORT_CLASS`` lines of the sources.
 """
 
-import glob
-import json
 import os
 import re
 
 from colcon_rsia import safe_files
+from colcon_rsia.package.cmake_configure import configure_package
+from colcon_rsia.package.cmake_configure import executables_from_codemodel
+from colcon_rsia.package.cmake_configure import is_cxx_source
 import defusedxml.ElementTree as ElementTree
 
 NODELET_BASE_CLASS = 'nodelet::Nodelet'
 
 
-def find_executables(*, package_path, build_base):
-    """Return {executable name: [absolute source paths]} of a package."""
-    executables = _executables_from_codemodel(package_path, build_base)
-    if executables is None:
-        executables = _executables_from_cmakelists(package_path)
-    return executables
+def find_executables(*, package_path, build_base, diagnostics=None):
+    """Return {executable name: [absolute source paths]} of a package.
+
+    From the codemodel of the package's build, else from our own configure
+    of the package (:mod:`colcon_rsia.package.cmake_configure`), else, when
+    CMake cannot be asked, from reading ``CMakeLists.txt`` here.
+
+    :param diagnostics: a list that receives why CMake could not be asked
+      when ``CMakeLists.txt`` is read here
+    """
+    executables = executables_from_codemodel(build_base)
+    if executables is not None:
+        return executables
+    configured = configure_package(package_path, build_base)
+    if configured.executables is not None:
+        return configured.executables
+    if configured.problem and diagnostics is not None:
+        diagnostics.append(configured.problem)
+    return _executables_from_cmakelists(package_path)
 
 
-def _executables_from_codemodel(package_path, build_base):
-    indexes = sorted(glob.glob(os.path.join(
-        build_base, '.cmake', 'api', 'v1', 'reply', 'index-*.json')))
-    if not indexes:
+def _configured_registrations(package_path, build_base):
+    """The component registrations our configure recorded, or None.
+
+    None for a built package (its CMakeLists.txt is read, as before) and
+    when CMake could not be asked.
+    """
+    if build_base is None or \
+            executables_from_codemodel(build_base) is not None:
         return None
-    reply_dir = os.path.dirname(indexes[-1])
-    try:
-        with open(indexes[-1]) as h:
-            index = json.load(h)
-        codemodel_file = None
-        for client in index.get('reply', {}).values():
-            if isinstance(client, dict) and 'codemodel-v2' in client:
-                codemodel_file = client['codemodel-v2']['jsonFile']
-        if codemodel_file is None:
-            return None
-        with open(os.path.join(reply_dir, codemodel_file)) as h:
-            codemodel = json.load(h)
-        source_dir = codemodel['paths']['source']
-        targets = {}
-        for configuration in codemodel['configurations'][:1]:
-            for target in configuration['targets']:
-                with open(os.path.join(reply_dir, target['jsonFile'])) as h:
-                    targets[target['id']] = json.load(h)
-    except (OSError, ValueError, KeyError, TypeError):
+    configured = configure_package(package_path, build_base)
+    if configured.executables is None:
         return None
-    executables = {}
-    for target in targets.values():
-        if target.get('type') != 'EXECUTABLE':
-            continue
-        sources = [
-            os.path.normpath(os.path.join(source_dir, s['path']))
-            for s in target.get('sources', []) if 'path' in s]
-        sources = [s for s in sources if _is_cxx_source(s)]
-        if not sources:
-            continue
-        name = target.get('nameOnDisk') or target['name']
-        executables[name] = sources
-    return executables
+    return configured.registrations
 
 
 _ADD_EXECUTABLE = re.compile(r'add_executable\s*\(([^)]*)\)', re.IGNORECASE)
@@ -144,7 +135,7 @@ def _executables_from_cmakelists(package_path):
             continue
         sources = [
             os.path.normpath(os.path.join(package_path, w))
-            for w in words[1:] if _is_cxx_source(w)]
+            for w in words[1:] if is_cxx_source(w)]
         if sources:
             executables[words[0]] = sources
     return executables
@@ -153,11 +144,6 @@ def _executables_from_cmakelists(package_path):
 def _substitute(word, variables):
     return re.sub(
         r'\$\{(\w+)\}', lambda m: variables.get(m.group(1), m.group(0)), word)
-
-
-def _is_cxx_source(path):
-    return os.path.splitext(path)[1].lower() in (
-        '.cpp', '.cc', '.cxx', '.c++', '.c')
 
 
 def find_nodelets(*, package_path, exported_classes):
@@ -250,35 +236,31 @@ _REGISTER_COMPONENT = re.compile(
     r'rclcpp_components_register_nodes?\s*\(([^)]*)\)', re.IGNORECASE)
 
 
-def find_components(*, package_path, exported_classes):
+def find_components(*, package_path, exported_classes, build_base=None):
     """Return {node name: class name} of the package's ROS 2 components.
 
     A component is registered with ``RCLCPP_COMPONENTS_REGISTER_NODE`` in
     its source and/or ``rclcpp_components_register_node(target PLUGIN
     "ns::Class" EXECUTABLE name)`` in CMakeLists.txt; it is named after the
-    executable when one is given, else after its class.
+    executable when one is given, else after its class. The registrations
+    are those our configure of an unbuilt package recorded (with
+    ``build_base``), else those read in CMakeLists.txt.
     """
     classes = {c.lstrip(':') for c, base in exported_classes
                if base == COMPONENT_BASE_CLASS}
+    registrations = _configured_registrations(package_path, build_base)
+    if registrations is None:
+        registrations = _registrations_in_cmakelists(package_path)
     executables = {}
-    text = read_cmakelists(package_path)
-    for match in _REGISTER_COMPONENT.finditer(text):
-        words = [w.strip('"') for w in match.group(1).split()]
-        if any('${' in w for w in words):
-            continue  # a name we could not work out
-        plugin = executable = None
-        for keyword, value in zip(words, words[1:]):
-            if keyword == 'PLUGIN':
-                plugin = value.lstrip(':')
-            elif keyword == 'EXECUTABLE':
-                executable = value
-        if match.group(0).lower().startswith('rclcpp_components_register_nodes'):
+    for kind, *names in registrations:
+        if kind == 'nodes':
             # the plural form lists plugin classes, no executables
-            classes.update(w.lstrip(':') for w in words[1:] if '::' in w)
-        elif plugin:
+            classes.update(n.lstrip(':') for n in names if n)
+        elif names and names[0]:
+            plugin = names[0].lstrip(':')
             classes.add(plugin)
-            if executable:
-                executables[plugin] = executable
+            if len(names) > 1 and names[1]:
+                executables[plugin] = names[1]
     shorts = [c.split('::')[-1] for c in classes if c not in executables]
     components = {}
     for class_name in sorted(classes):
@@ -289,3 +271,24 @@ def find_components(*, package_path, exported_classes):
             name = short if shorts.count(short) == 1 else class_name
         components[name] = class_name
     return components
+
+
+def _registrations_in_cmakelists(package_path):
+    """('node', plugin, executable) and ('nodes', class) read in the text."""
+    registrations = []
+    for match in _REGISTER_COMPONENT.finditer(read_cmakelists(package_path)):
+        words = [w.strip('"') for w in match.group(1).split()]
+        if any('${' in w for w in words):
+            continue  # a name we could not work out
+        if match.group(0).lower().startswith(
+                'rclcpp_components_register_nodes'):
+            registrations += [('nodes', w) for w in words[1:] if '::' in w]
+            continue
+        plugin = executable = ''
+        for keyword, value in zip(words, words[1:]):
+            if keyword == 'PLUGIN':
+                plugin = value
+            elif keyword == 'EXECUTABLE':
+                executable = value
+        registrations.append(('node', plugin, executable))
+    return registrations
