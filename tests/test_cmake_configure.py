@@ -212,7 +212,8 @@ def test_a_configure_that_hangs_is_stopped(tmp_path, monkeypatch):
     package = write_package(tmp_path / 'slow', """
 cmake_minimum_required(VERSION 3.8)
 project(slow)
-execute_process(COMMAND sleep 60)
+while(TRUE)
+endwhile()
 add_executable(slow src/slow.cpp)
 """, sources=['src/slow.cpp'])
     diagnostics = []
@@ -294,3 +295,27 @@ def test_configure_finds_what_the_build_finds_system(system_workspace,
             system_workspace, tmp_path):
         assert diagnostics == [], package
         assert configured == built, package
+
+
+def test_no_program_of_the_package_runs(tmp_path):
+    # a configure reads targets: the package's execute_process() and
+    # try_run() must not run anything on the analysing machine
+    marker = tmp_path / 'ran'
+    package = write_package(tmp_path / 'eager', f"""
+cmake_minimum_required(VERSION 3.8)
+project(eager)
+execute_process(COMMAND touch {marker} RESULT_VARIABLE touched
+                OUTPUT_VARIABLE said)
+if(NOT touched EQUAL 0)
+  message(FATAL_ERROR "the package stops when its command fails")
+endif()
+add_executable(eager_node src/eager_node.cpp)
+""", sources=['src/eager_node.cpp'])
+    diagnostics = []
+    executables = find_executables(
+        package_path=str(package), build_base=str(tmp_path / 'build'),
+        diagnostics=diagnostics)
+    assert not marker.exists()
+    assert diagnostics == []
+    assert executables == {
+        'eager_node': [str(package / 'src' / 'eager_node.cpp')]}

@@ -11,6 +11,51 @@
 # RSIA_RECORD_FILE (set on the command line) receives one line per component
 # registration: "node<TAB>plugin<TAB>executable" or "nodes<TAB>class".
 
+# -- no program of the package runs -----------------------------------------
+
+# A configure only asks which targets the package makes. The package's own
+# execute_process() and try_run() would run programs on the machine that
+# analyses it (one of autoware's pip-installs at configure time): they do
+# nothing and report success with empty output. CMake's own modules
+# (compiler checks, FindPython) keep the real commands. Macros, so that
+# the output variables are set in the caller's scope and
+# CMAKE_CURRENT_LIST_FILE names the calling file.
+macro(execute_process)
+  string(FIND "${CMAKE_CURRENT_LIST_FILE}" "${CMAKE_ROOT}/" rsia_at)
+  if(rsia_at EQUAL 0)
+    _execute_process(${ARGV})
+  else()
+    rsia_skip_process(${ARGV})
+  endif()
+endmacro()
+
+function(rsia_skip_process)
+  cmake_parse_arguments(rsia ""
+    "OUTPUT_VARIABLE;ERROR_VARIABLE;RESULT_VARIABLE;RESULTS_VARIABLE" ""
+    ${ARGN})
+  foreach(rsia_stream OUTPUT ERROR)
+    if(rsia_${rsia_stream}_VARIABLE)
+      set(${rsia_${rsia_stream}_VARIABLE} "" PARENT_SCOPE)
+    endif()
+  endforeach()
+  foreach(rsia_result RESULT RESULTS)
+    if(rsia_${rsia_result}_VARIABLE)
+      set(${rsia_${rsia_result}_VARIABLE} 0 PARENT_SCOPE)
+    endif()
+  endforeach()
+  message(STATUS "colcon-rsia: execute_process() of the package not run")
+endfunction()
+
+macro(try_run rsia_run_result rsia_compile_result)
+  string(FIND "${CMAKE_CURRENT_LIST_FILE}" "${CMAKE_ROOT}/" rsia_at)
+  if(rsia_at EQUAL 0)
+    _try_run(${rsia_run_result} ${rsia_compile_result} ${ARGN})
+  else()
+    set(${rsia_run_result} 0)
+    set(${rsia_compile_result} TRUE)
+  endif()
+endmacro()
+
 # -- find_package: every package is found, with nothing in it --------------
 
 macro(rsia_provide_package rsia_method rsia_package)
