@@ -9,7 +9,7 @@ condition, an ``else`` branch) is not a decimation we can count.
 """
 
 import clang.cindex as ci
-from colcon_rsia.frontend.const_eval import evaluate_number
+from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 
 CK = ci.CursorKind
 
