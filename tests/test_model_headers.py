@@ -15,9 +15,9 @@ import time
 
 import clang.cindex as ci
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend import model_mode
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
+from colcon_rsia.frontend.cpp import model_mode
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]

@@ -3,7 +3,7 @@
 """The self-completing model mode, and failures that stay local."""
 
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend import repair
+from colcon_rsia.frontend.cpp.model_mode import repair
 from colcon_rsia.frontend.cpp.walker import _Walker
 from colcon_rsia.package import analysis
 from conftest import analyse_source
@@ -913,7 +913,7 @@ def test_a_helper_made_through_its_constructor_template_belongs_to_the_node(
 
 
 def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
-    from colcon_rsia.frontend import model_mode
+    from colcon_rsia.frontend.cpp import model_mode
     # a ros2_control checkout: its controller_interface/ headers are real
     library = tmp_path / 'ws' / 'controller_interface'
     header = 'controller_interface/controller_interface.hpp'

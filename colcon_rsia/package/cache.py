@@ -40,9 +40,9 @@ def _frontend_digest():
         # the colcon_rsia directory: this module is in colcon_rsia/package
         here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
         files = [os.path.join(here, relative) for relative in (
-            'model.py', 'frontend/ros_api.py', 'frontend/model_mode.py',
-            'frontend/repair.py')]
-        # the C++ front end's modules, and the model headers
+            'model.py', 'frontend/ros_api.py')]
+        # the C++ front end's modules (the model mode's too), and the
+        # model headers
         for root, dirs, names in sorted(os.walk(
                 os.path.join(here, 'frontend', 'cpp'))):
             dirs.sort()

@@ -53,10 +53,10 @@ from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
 from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.every_nth import every_nth
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
 from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
 from colcon_rsia.frontend.cpp.strings import unquote
-from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
 
 CK = ci.CursorKind
 
