@@ -144,13 +144,16 @@ def first_function(cursor):
     return None
 
 
+def _callee(call):
+    """The expression a call calls (its first child), or None."""
+    children = child_cursors(call)
+    return children[0] if children else None
+
+
 def call_object(call):
     """The object expression of a member call, or None."""
-    children = child_cursors(call)
-    if not children:
-        return None
-    callee = children[0]
-    if callee.kind == CK.MEMBER_REF_EXPR:
+    callee = _callee(call)
+    if callee is not None and callee.kind == CK.MEMBER_REF_EXPR:
         for child in child_cursors(callee):
             if child.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
                                   CK.TEMPLATE_REF):
@@ -160,10 +163,9 @@ def call_object(call):
 
 def explicit_template_type(call):
     """The first explicit template argument written at a call site."""
-    children = child_cursors(call)
-    if not children:
+    callee = _callee(call)
+    if callee is None:
         return None
-    callee = children[0]
     candidates = [callee] + child_cursors(callee)
     if callee.kind == CK.UNEXPOSED_EXPR and child_cursors(callee):
         candidates += child_cursors(child_cursors(callee)[0])
@@ -271,12 +273,3 @@ def continue_before(loop, sleep):
             continue  # an inner loop's continue is its own
         todo.extend(child_cursors(current))
     return False
-
-
-def binary_operator(cursor, left):
-    """The operator of a binary expression: the token after its left side."""
-    end = left.extent.end.offset
-    for token in cursor.get_tokens():
-        if token.extent.start.offset >= end:
-            return token.spelling
-    return None

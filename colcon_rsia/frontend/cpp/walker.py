@@ -26,8 +26,8 @@ from colcon_rsia.frontend.cpp import clocks
 from colcon_rsia.frontend.cpp import roles
 from colcon_rsia.frontend.cpp import strings
 from colcon_rsia.frontend.cpp import wrappers
+from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
-from colcon_rsia.frontend.cpp.cursors import binary_operator
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS

@@ -199,27 +199,25 @@ def _guard(package, name):
     return f'RSIA_STUB_{package}_{name}_H'
 
 
+def _guarded_header(package, name, kind, about, includes, body):
+    """A stand-in's text: its marker, guard and namespace around `body`."""
+    guard = _guard(package, name)
+    return '\n'.join([
+        f'{STUB_MARKER} kind={kind}: <{package}/{name}.h>', *about,
+        f'#ifndef {guard}', f'#define {guard}', '', *includes, '',
+        f'namespace {package}', '{', '', *body, '',
+        f'}}  // namespace {package}', '', f'#endif  // {guard}', ''])
+
+
 def _message_stub(package, name, *, includes=(), typedefs=(), kind='message',
                   declarations=()):
-    lines = [
-        f'{STUB_MARKER} kind={kind}: <{package}/{name}.h>',
-        '// a message the model mode cannot read: its name, template shape and',
-        '// pointer typedefs are those of a generated message header, its',
-        '// fields the catch-all rsia_model::Fields',
-        f'#ifndef {_guard(package, name)}',
-        f'#define {_guard(package, name)}',
-        '',
-        '#include <rsia_model/message.h>']
-    lines += [f'#include <{i}>' for i in includes]
-    lines += ['', f'namespace {package}', '{', '']
-    lines += list(declarations)
-    lines += [
+    body = list(declarations) + [
         'template <class ContainerAllocator>',
         f'struct {name}_ : ::rsia_model::Fields',
         '{',
         f'  typedef {name}_<ContainerAllocator> Type;']
-    lines += [f'  typedef {target} {alias};' for alias, target in typedefs]
-    lines += [
+    body += [f'  typedef {target} {alias};' for alias, target in typedefs]
+    body += [
         f'  typedef boost::shared_ptr<{name}_<ContainerAllocator>> Ptr;',
         f'  typedef boost::shared_ptr<{name}_<ContainerAllocator> const> '
         'ConstPtr;',
@@ -228,43 +226,32 @@ def _message_stub(package, name, *, includes=(), typedefs=(), kind='message',
         f'typedef ::{package}::{name}_<std::allocator<void>> {name};',
         f'typedef boost::shared_ptr< ::{package}::{name}> {name}Ptr;',
         f'typedef boost::shared_ptr< ::{package}::{name} const> '
-        f'{name}ConstPtr;',
-        '',
-        f'}}  // namespace {package}',
-        '',
-        f'#endif  // {_guard(package, name)}',
-        '']
-    return '\n'.join(lines)
+        f'{name}ConstPtr;']
+    return _guarded_header(
+        package, name, kind,
+        ['// a message the model mode cannot read: its name, template shape and',
+         '// pointer typedefs are those of a generated message header, its',
+         '// fields the catch-all rsia_model::Fields'],
+        ['#include <rsia_model/message.h>'] +
+        [f'#include <{i}>' for i in includes], body)
 
 
 def _service_stub(package, name):
-    return '\n'.join([
-        f'{STUB_MARKER} kind=service: <{package}/{name}.h>',
-        '// a service the model mode cannot read (the sources use its Request',
-        '// or Response): the struct of a generated service header',
-        f'#ifndef {_guard(package, name)}',
-        f'#define {_guard(package, name)}',
-        '',
-        f'#include <{package}/{name}Request.h>',
-        f'#include <{package}/{name}Response.h>',
-        '',
-        f'namespace {package}',
-        '{',
-        '',
-        f'struct {name}',
-        '{',
-        f'  typedef {name}Request Request;',
-        f'  typedef {name}Response Response;',
-        '  Request request;',
-        '  Response response;',
-        '  typedef Request RequestType;',
-        '  typedef Response ResponseType;',
-        '};',
-        '',
-        f'}}  // namespace {package}',
-        '',
-        f'#endif  // {_guard(package, name)}',
-        ''])
+    return _guarded_header(
+        package, name, 'service',
+        ['// a service the model mode cannot read (the sources use its Request',
+         '// or Response): the struct of a generated service header'],
+        [f'#include <{package}/{name}Request.h>',
+         f'#include <{package}/{name}Response.h>'],
+        [f'struct {name}',
+         '{',
+         f'  typedef {name}Request Request;',
+         f'  typedef {name}Response Response;',
+         '  Request request;',
+         '  Response response;',
+         '  typedef Request RequestType;',
+         '  typedef Response ResponseType;',
+         '};'])
 
 
 def _combined_stub(package, name):
@@ -286,27 +273,15 @@ def combined_stub_from(content):
 
 
 def _config_stub(package, name):
-    return '\n'.join([
-        f'{STUB_MARKER} kind=config: <{package}/{name}.h>',
-        '// a dynamic_reconfigure config (generated from a .cfg file): its',
-        '// parameters are the catch-all rsia_model::Fields',
-        f'#ifndef {_guard(package, name)}',
-        f'#define {_guard(package, name)}',
-        '',
-        '#include <rsia_model/message.h>',
-        '',
-        f'namespace {package}',
-        '{',
-        '',
-        f'class {name} : public ::rsia_model::Fields',
-        '{',
-        'public:',
-        f'  static const {name}& __getDefault__();',
-        f'  static const {name}& __getMin__();',
-        f'  static const {name}& __getMax__();',
-        '};',
-        '',
-        f'}}  // namespace {package}',
-        '',
-        f'#endif  // {_guard(package, name)}',
-        ''])
+    return _guarded_header(
+        package, name, 'config',
+        ['// a dynamic_reconfigure config (generated from a .cfg file): its',
+         '// parameters are the catch-all rsia_model::Fields'],
+        ['#include <rsia_model/message.h>'],
+        [f'class {name} : public ::rsia_model::Fields',
+         '{',
+         'public:',
+         f'  static const {name}& __getDefault__();',
+         f'  static const {name}& __getMin__();',
+         f'  static const {name}& __getMax__();',
+         '};'])
