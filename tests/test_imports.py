@@ -185,6 +185,23 @@ def test_layers():
     assert wrong == []
 
 
+def test_model_mode_stands_apart_from_the_walk():
+    # the model mode prepares a unit's arguments before it is parsed: it
+    # reads text, never the walk of the C++ front end (which may use it
+    # only through its constants)
+    model_mode = 'colcon_rsia.frontend.cpp.model_mode'
+    wrong = []
+    for module, path in MODULES.items():
+        if module != model_mode and not module.startswith(model_mode + '.'):
+            continue
+        for target in _imports(path):
+            if target.startswith('colcon_rsia.frontend.cpp') and not (
+                    target == model_mode or
+                    target.startswith(model_mode + '.')):
+                wrong.append(f'{module} imports {target}')
+    assert wrong == []
+
+
 def test_every_layer_is_known():
     assert {_layer(m) for m in MODULES} - {'colcon_rsia', 'package.store'} \
         <= set(ALLOWED)

@@ -5,7 +5,7 @@
 Every translation unit of test_workspaces/ros1 (compiled once by the session
 fixture) is parsed twice: as colcon_rsia.package.analysis does, with the real headers
 and the compile database's arguments, and in the model mode
-(colcon_rsia.frontend.model_mode), and the facts of both must be equal.
+(colcon_rsia.frontend.cpp.model_mode), and the facts of both must be equal.
 """
 
 import glob
@@ -15,9 +15,9 @@ import time
 
 import clang.cindex as ci
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend import model_mode
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
+from colcon_rsia.frontend.cpp import model_mode
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]

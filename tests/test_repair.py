@@ -3,7 +3,8 @@
 """The self-completing model mode, and failures that stay local."""
 
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend import repair
+from colcon_rsia.frontend.cpp.model_mode import repair
+from colcon_rsia.frontend.cpp.walker import _Walker
 from colcon_rsia.package import analysis
 from conftest import analyse_source
 import pytest
@@ -235,13 +236,13 @@ def test_names_the_package_declares_are_never_repaired():
 
 def test_a_failing_declaration_loses_only_itself(tmp_path, monkeypatch):
     package = _package(tmp_path)
-    original = cpp._Walker._function
+    original = _Walker._function
 
     def failing(walker, cursor):
         if cursor.spelling == 'onImage':
             raise RuntimeError('boom')
         return original(walker, cursor)
-    monkeypatch.setattr(cpp._Walker, '_function', failing)
+    monkeypatch.setattr(_Walker, '_function', failing)
     summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
     [node] = summary.nodes
     # the constructor's facts survive; the publish site was in onImage
@@ -912,7 +913,7 @@ def test_a_helper_made_through_its_constructor_template_belongs_to_the_node(
 
 
 def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
-    from colcon_rsia.frontend import model_mode
+    from colcon_rsia.frontend.cpp import model_mode
     # a ros2_control checkout: its controller_interface/ headers are real
     library = tmp_path / 'ws' / 'controller_interface'
     header = 'controller_interface/controller_interface.hpp'

@@ -15,8 +15,8 @@ from colcon_rsia.event_handler.rsia import RsiaEventHandler
 from colcon_rsia.frontend.compile_db import clang_arguments
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
 from colcon_rsia.frontend.compile_db import load_compile_database
-from colcon_rsia.frontend.const_eval import evaluate_tokens
 from colcon_rsia.frontend.cpp import normalize_msg_type
+from colcon_rsia.frontend.cpp.const_eval import evaluate_tokens
 from colcon_rsia.package.runner import analyze
 from colcon_rsia.package.runner import missing_compile_db_message
 from colcon_rsia.package.store import read_summary

@@ -239,8 +239,8 @@ def _own_include_dirs(path):
 
 
 def _model_entries(entries, path, workspace_package_dirs, stub_dir):
-    from colcon_rsia.frontend import repair
-    from colcon_rsia.frontend.model_mode import prepare_model_arguments
+    from colcon_rsia.frontend.cpp.model_mode import repair
+    from colcon_rsia.frontend.cpp.model_mode import prepare_model_arguments
     model_entries = []
     for entry in entries:
         arguments = prepare_model_arguments(
@@ -378,7 +378,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     the first). The repair header is left as that best round had it.
     """
     from colcon_rsia.frontend import cpp
-    from colcon_rsia.frontend import repair
+    from colcon_rsia.frontend.cpp.model_mode import repair
 
     def parse():
         return cpp.parse(
@@ -408,7 +408,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         lines = text_of(file).split('\n')
         return lines[line - 1] if 0 < line <= len(lines) else ''
 
-    from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
+    from colcon_rsia.frontend.cpp.model_mode import MODEL_HEADERS_DIR
     stub_dir = os.path.dirname(os.path.dirname(os.path.dirname(header)))
 
     def _user_file(file):
@@ -448,7 +448,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     if best[1] != rounds:
         # a later round made things worse (a repair can): keep the best,
         # so that later parses of the unit do not pay for it
-        from colcon_rsia.frontend.model_mode import write_atomically
+        from colcon_rsia.frontend.cpp.model_mode import write_atomically
         write_atomically(header, best[3])
     if best[1]:
         repair.share_repairs(header, repair.read_repairs(header))
@@ -474,7 +474,7 @@ def _package_declarations(package_path):
                                 os.path.join(root, name), errors='replace'))
                         except OSError:
                             pass  # named by the checks before the parse
-            from colcon_rsia.frontend import repair
+            from colcon_rsia.frontend.cpp.model_mode import repair
             _declarations[package_path] = repair.declared_names(texts)
         return _declarations[package_path]
 

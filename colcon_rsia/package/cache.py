@@ -40,10 +40,14 @@ def _frontend_digest():
         # the colcon_rsia directory: this module is in colcon_rsia/package
         here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
         files = [os.path.join(here, relative) for relative in (
-            'model.py', 'frontend/cpp.py', 'frontend/const_eval.py',
-            'frontend/ros_api.py', 'frontend/model_mode.py',
-            'frontend/repair.py', 'frontend/every_nth.py',
-            'frontend/wrappers.py')]
+            'model.py', 'frontend/ros_api.py')]
+        # the C++ front end's modules (the model mode's too), and the
+        # model headers
+        for root, dirs, names in sorted(os.walk(
+                os.path.join(here, 'frontend', 'cpp'))):
+            dirs.sort()
+            files += [os.path.join(root, n) for n in sorted(names)
+                      if n.endswith('.py')]
         for root, dirs, names in sorted(os.walk(
                 os.path.join(here, 'frontend', 'model_headers'))):
             dirs.sort()

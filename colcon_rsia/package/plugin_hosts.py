@@ -143,7 +143,7 @@ _BT_NODE = Host(
 
 # the base class a plugin is exported with -> its host
 HOSTS = {
-    # any node registered with BT_REGISTER_NODES (see frontend/cpp.py)
+    # any node registered with BT_REGISTER_NODES (see frontend/cpp/plugin_exports.py)
     'BT::TreeNode': _BT_NODE,
     'controller_interface::ControllerInterface': _ROS2_CONTROLLER,
     'controller_interface::ChainableControllerInterface': _ROS2_CONTROLLER,

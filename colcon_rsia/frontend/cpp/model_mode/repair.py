@@ -27,9 +27,9 @@ import os
 import re
 import threading
 
-from colcon_rsia.frontend.model_mode import COMMENT_OR_STRING
-from colcon_rsia.frontend.model_mode import MODEL_HEADERS_DIR
-from colcon_rsia.frontend.model_mode import write_atomically
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
+from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
 # parses of a unit after the first: each round fixes what the previous one
 # revealed (a namespace, then the names used in it)

@@ -65,7 +65,7 @@ def _evaluate_structure(cursor, depth):
     if kind == CK.BINARY_OPERATOR and len(children) == 2:
         left = evaluate_number(children[0], depth + 1)
         right = evaluate_number(children[1], depth + 1)
-        operator = _operator_between(cursor, children[0])
+        operator = binary_operator(cursor, children[0])
         return _apply(operator, left, right)
     if kind == CK.DECL_REF_EXPR:
         return _constant_variable(cursor.referenced, depth)
@@ -83,7 +83,8 @@ def _constant_variable(declaration, depth):
     return evaluate_number(children[-1], depth + 1) if children else None
 
 
-def _operator_between(cursor, left):
+def binary_operator(cursor, left):
+    """The operator of a binary expression: the token after its left side."""
     end = left.extent.end.offset
     for token in cursor.get_tokens():
         if token.extent.start.offset >= end:
@@ -330,7 +331,7 @@ def evaluate_duration_seconds(cursor, depth=0):
     if kind == CK.BINARY_OPERATOR and len(children) == 2:
         left = evaluate_duration_seconds(children[0], depth + 1)
         right = evaluate_number(children[1], depth + 1)
-        operator = _operator_between(cursor, children[0])
+        operator = binary_operator(cursor, children[0])
         if left is not None and right is not None and operator in ('*', '/'):
             return _apply(operator, left, right)
         return None

@@ -9,7 +9,8 @@ condition, an ``else`` branch) is not a decimation we can count.
 """
 
 import clang.cindex as ci
-from colcon_rsia.frontend.const_eval import evaluate_number
+from colcon_rsia.frontend.cpp.const_eval import binary_operator
+from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 
 CK = ci.CursorKind
 
@@ -41,25 +42,17 @@ def _unwrap(cursor):
     return cursor
 
 
-def _operator(cursor, left):
-    end = left.extent.end.offset
-    for token in cursor.get_tokens():
-        if token.extent.start.offset >= end:
-            return token.spelling
-    return None
-
-
 def _modulo_is_zero(condition):
     condition = _unwrap(condition)
     children = list(condition.get_children())
     if condition.kind != CK.BINARY_OPERATOR or len(children) != 2 or \
-            _operator(condition, children[0]) != '==':
+            binary_operator(condition, children[0]) != '==':
         return None
     for modulo, zero in (children, children[::-1]):
         modulo = _unwrap(modulo)
         parts = list(modulo.get_children())
         if modulo.kind == CK.BINARY_OPERATOR and len(parts) == 2 and \
-                _operator(modulo, parts[0]) == '%' and \
+                binary_operator(modulo, parts[0]) == '%' and \
                 evaluate_number(zero) == 0:
             n = evaluate_number(parts[1])
             if n is not None and n == int(n) and n >= 1:

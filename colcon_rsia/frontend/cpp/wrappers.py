@@ -24,14 +24,17 @@ from dataclasses import dataclass
 from typing import Optional
 
 import clang.cindex as ci
+from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.const_eval import source_tokens
-from colcon_rsia.frontend.cursors import call_object
-from colcon_rsia.frontend.cursors import explicit_template_type
-from colcon_rsia.frontend.cursors import first_handle
-from colcon_rsia.frontend.cursors import normalize_msg_type
-from colcon_rsia.frontend.cursors import qualified_name
-from colcon_rsia.frontend.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.cursors import call_object
+from colcon_rsia.frontend.cpp.cursors import callback_msg_type
+from colcon_rsia.frontend.cpp.cursors import explicit_template_type
+from colcon_rsia.frontend.cpp.cursors import first_handle
+from colcon_rsia.frontend.cpp.cursors import first_template_argument
+from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
+from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
 
 CK = ci.CursorKind
 
@@ -189,6 +192,67 @@ class Summaries:
             msg_type_from_call=from_call, callback_param=callback_param,
             member=member.get_usr() if member is not None else None,
             publishes=False)
+
+    def record_call(self, cursor, ctx, stack, ref):
+        """A call of a workspace wrapper: the facts its summary gives.
+
+        The call's own arguments fill the summary in. An endpoint the wrapper
+        keeps in a member of a helper object is the handle
+        ``<object>|<member>``, which the object's publishing methods
+        publish through.
+        """
+        summary = self.of(ref)
+        if not summary.endpoints and not summary.publishes_members:
+            return
+        arguments = list(cursor.get_arguments())
+        target = self.walker.target(cursor, stack)
+        obj = first_handle(call_object(cursor))
+        name = qualified_name(ref)
+        written = explicit_template_type(cursor) or \
+            first_template_argument(cursor.type.get_canonical().spelling)
+        location = self.walker.location(cursor)
+        # the helper object the wrapper's members belong to
+        holder = target if ref.kind == CK.CONSTRUCTOR else obj
+
+        def argument(index):
+            return arguments[index] \
+                if index is not None and index < len(arguments) else None
+        for endpoint in summary.endpoints:
+            if endpoint.topic_param is not None:
+                topic, literal = self.walker.topic(argument(endpoint.topic_param))
+            else:
+                topic, literal = endpoint.topic, endpoint.topic_is_literal
+            msg_type = endpoint.msg_type or (
+                normalize_msg_type(written)
+                if endpoint.msg_type_from_call else None)
+            if endpoint.member is not None and holder is not None:
+                handle = f'{holder.get_usr()}|{endpoint.member}'
+            elif target is not None and endpoint.member is None:
+                handle = target.get_usr()
+            else:
+                handle = f'wrapper@{location}'
+            common = dict(
+                function=ctx.function, api=name, topic=topic,
+                topic_is_literal=literal, msg_type=msg_type, handle=handle,
+                location=location)
+            if endpoint.role == ROLE_PUBLISHER:
+                self.walker.facts.publishers.append(model.PublisherFact(
+                    handle_name=target.spelling if target is not None
+                    else None, **common))
+            else:
+                callback, declaration = self.walker.resolve_callback(
+                    argument(endpoint.callback_param))
+                # a message type the wrapper deduces from the callback
+                common['msg_type'] = common['msg_type'] or \
+                    callback_msg_type(declaration)
+                self.walker.facts.subscribers.append(model.SubscriberFact(
+                    callback=callback, **common))
+            if endpoint.publishes:
+                self.walker.publish_site(ctx, stack, cursor, name, handle)
+        if obj is not None:
+            for member in sorted(summary.publishes_members):
+                self.walker.publish_site(ctx, stack, cursor, name,
+                                         f'{obj.get_usr()}|{member}')
 
 
 def _definition(declaration):

@@ -32,18 +32,18 @@ import re
 import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.const_eval import evaluate_duration_seconds
-from colcon_rsia.frontend.const_eval import evaluate_number
-from colcon_rsia.frontend.const_eval import is_chrono_duration
-from colcon_rsia.frontend.cursors import call_object
-from colcon_rsia.frontend.cursors import child_cursors
-from colcon_rsia.frontend.cursors import CLASS_KINDS
-from colcon_rsia.frontend.cursors import expression_text
-from colcon_rsia.frontend.cursors import first_function
-from colcon_rsia.frontend.cursors import first_handle
-from colcon_rsia.frontend.cursors import FUNCTION_KINDS
-from colcon_rsia.frontend.cursors import qualified_name
-from colcon_rsia.frontend.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.const_eval import evaluate_duration_seconds
+from colcon_rsia.frontend.cpp.const_eval import evaluate_number
+from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
+from colcon_rsia.frontend.cpp.cursors import call_object
+from colcon_rsia.frontend.cpp.cursors import child_cursors
+from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
+from colcon_rsia.frontend.cpp.cursors import expression_text
+from colcon_rsia.frontend.cpp.cursors import first_function
+from colcon_rsia.frontend.cpp.cursors import first_handle
+from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
 
 CK = ci.CursorKind
 

@@ -3,15 +3,17 @@
 """Questions about libclang cursors that the C++ front end asks.
 
 Names, message types, children, the object of a member call, the handle
-an expression starts from: shared by the walk of a unit
-(:mod:`colcon_rsia.frontend.cpp`) and the summaries of the workspace's
-wrappers (:mod:`colcon_rsia.frontend.wrappers`).
+an expression starts from, what kind of value an argument is: shared by
+the walk of a unit (:mod:`colcon_rsia.frontend.cpp.walker`), the handlers
+of the API roles (:mod:`colcon_rsia.frontend.cpp.roles`) and the summaries
+of the workspace's wrappers (:mod:`colcon_rsia.frontend.cpp.wrappers`).
 """
 
 import re
 
 import clang.cindex as ci
-from colcon_rsia.frontend.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
+from colcon_rsia.frontend.cpp.const_eval import source_tokens
 
 CK = ci.CursorKind
 
@@ -142,13 +144,16 @@ def first_function(cursor):
     return None
 
 
+def _callee(call):
+    """The expression a call calls (its first child), or None."""
+    children = child_cursors(call)
+    return children[0] if children else None
+
+
 def call_object(call):
     """The object expression of a member call, or None."""
-    children = child_cursors(call)
-    if not children:
-        return None
-    callee = children[0]
-    if callee.kind == CK.MEMBER_REF_EXPR:
+    callee = _callee(call)
+    if callee is not None and callee.kind == CK.MEMBER_REF_EXPR:
         for child in child_cursors(callee):
             if child.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF,
                                   CK.TEMPLATE_REF):
@@ -158,10 +163,9 @@ def call_object(call):
 
 def explicit_template_type(call):
     """The first explicit template argument written at a call site."""
-    children = child_cursors(call)
-    if not children:
+    callee = _callee(call)
+    if callee is None:
         return None
-    callee = children[0]
     candidates = [callee] + child_cursors(callee)
     if callee.kind == CK.UNEXPOSED_EXPR and child_cursors(callee):
         candidates += child_cursors(child_cursors(callee)[0])
@@ -187,3 +191,85 @@ def expression_text(cursor):
         text += spelling
         previous = spelling
     return text
+
+
+def callback_msg_type(declaration):
+    """The message type a callback's declaration takes, or None."""
+    if declaration is None:
+        return None
+    for child in declaration.get_children():
+        if child.kind == CK.PARM_DECL:
+            return normalize_msg_type(child.type.spelling)
+    return None
+
+
+_CALLABLE_ARGUMENT = re.compile(
+    r'\(lambda at |std::_Bind|std::function<|boost::_bi::bind_t|'
+    r'\(\*\)\(|::\*\)\(')
+
+
+def is_callable_argument(argument):
+    """A lambda, bind result, std::function or function (pointer)."""
+    kind = argument.type.get_canonical().kind
+    if kind in (ci.TypeKind.FUNCTIONPROTO, ci.TypeKind.MEMBERPOINTER):
+        return True
+    return bool(_CALLABLE_ARGUMENT.search(
+        argument.type.get_canonical().spelling))
+
+
+def is_duration(argument):
+    """Whether an argument is a duration (std::chrono or rclcpp)."""
+    return is_chrono_duration(argument.type) or \
+        'rclcpp::Duration' in argument.type.get_canonical().spelling
+
+
+def is_written(argument):
+    """Whether an argument is written at the call (a default has no tokens)."""
+    return next(iter(argument.get_tokens()), None) is not None
+
+
+def written_arguments(arguments):
+    """The arguments written at a call (defaulted ones left out)."""
+    return [a for a in arguments if is_written(a)]
+
+
+def is_string(argument):
+    """Whether an expression or declaration is a string (or chars)."""
+    spelling = argument.type.get_canonical().spelling
+    return 'basic_string' in spelling or 'char' in spelling
+
+
+def initializer(variable):
+    """The expression a variable or field is initialised with, or None."""
+    init = [c for c in variable.get_children()
+            if c.kind not in (CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF)]
+    return init[0] if len(init) == 1 else None
+
+
+def is_logical(cursor, operands):
+    """Whether a binary operator is ``||`` or ``&&`` (short-circuiting)."""
+    if len(operands) != 2:
+        return False
+    # only the tokens between the operands: the operator
+    between = ci.SourceRange.from_locations(
+        operands[0].extent.end, operands[1].extent.start)
+    return any(t.spelling in ('||', '&&', 'or', 'and')
+               for t in cursor.translation_unit.get_tokens(extent=between))
+
+
+def continue_before(loop, sleep):
+    """Whether a `continue` of this loop comes before the sleep call."""
+    file = sleep.extent.start.file
+    where = sleep.extent.start.offset
+    todo = child_cursors(loop)
+    while todo:
+        current = todo.pop()
+        if current.kind == CK.CONTINUE_STMT and \
+                current.extent.start.file is not None and file is not None \
+                and current.extent.start.file.name == file.name and \
+                current.extent.start.offset < where:
+            return True
+        if current.kind in LOOP_KINDS or current.kind == CK.LAMBDA_EXPR:
+            continue  # an inner loop's continue is its own
+        todo.extend(child_cursors(current))
+    return False

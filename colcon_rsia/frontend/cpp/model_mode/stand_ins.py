@@ -1,0 +1,287 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The text of the stand-in for a missing include.
+
+A message, service, action or dynamic_reconfigure config of a ROS 1
+package or a ROS 2 interface gets the names and template shape its
+generated header has; anything else is empty (with what the sources use of
+its guessed namespace, declared when nothing else declares it).
+"""
+
+import re
+
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
+from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
+from colcon_rsia.frontend.cpp.model_mode.source_names import IDENTIFIER
+from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
+from colcon_rsia.frontend.cpp.model_mode.source_names import message_evidence
+from colcon_rsia.frontend.cpp.model_mode.source_names import PACKAGE
+from colcon_rsia.frontend.cpp.model_mode.source_names import service_evidence
+
+# the version of the stand-ins' content: a stand-in of another version is
+# written again
+STUB_VERSION = 1
+STUB_MARKER = f'// colcon-rsia stand-in v{STUB_VERSION}'
+
+
+def empty_stub(name):
+    """The stand-in of an include the model knows nothing of."""
+    lines = [f'{STUB_MARKER} kind=empty: <{printable(name)}>',
+             '// an include the model mode does not provide',
+             '#pragma once']
+    namespace = guessed_namespace(name)
+    if namespace:
+        # what the sources use of `namespace::`, if it is declared nowhere
+        # else (prepare_model_arguments defines RSIA_MODEL_OWN_<ns> where it is)
+        header = f'rsia_model/unknown/{namespace}.h'
+        lines += [
+            f'#if !defined(RSIA_MODEL_OWN_{namespace}) && '
+            f'__has_include(<{header}>)',
+            f'#include <{header}>',
+            '#endif']
+    return '\n'.join(lines) + '\n'
+
+
+# include directories whose libraries use another namespace name
+_NAMESPACE_OF_DIRECTORY = {'opencv2': 'cv', 'opencv': 'cv'}
+
+
+def guessed_namespace(include):
+    """The namespace an unknown `dir/...` include probably declares."""
+    parts = include.split('/')
+    if len(parts) < 2 or not PACKAGE.match(parts[0]):
+        return None
+    namespace = _NAMESPACE_OF_DIRECTORY.get(parts[0], parts[0])
+    if namespace in MODEL_NAMESPACES or namespace.endswith(
+            ('_msgs', '_srvs')) or not member_ok(namespace):
+        return None
+    return namespace
+
+
+def printable(text):
+    """Text for a comment of a generated header: ASCII only."""
+    return text.encode('ascii', 'replace').decode('ascii')
+
+
+def stand_ins_for(include, codes):
+    """{include name: content} of the stand-in(s) for one include."""
+    parts = include.split('/')
+    if len(parts) == 3 and parts[1] in _ROS2_INTERFACE_DIRS and \
+            parts[2].endswith('.hpp') and PACKAGE.match(parts[0]):
+        return {include: _ros2_interface_stub(*parts, codes)}
+    if len(parts) != 2 or not parts[1].endswith('.h'):
+        return {include: empty_stub(include)}
+    package, name = parts[0], parts[1][:-2]
+    # messages are CamelCase, with exceptions (tf/tfMessage.h): a header
+    # whose stem the sources name as `package::stem` is one too
+    named = IDENTIFIER.match(name) and any(
+        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b', code)
+        for code in codes)
+    if not (PACKAGE.match(package) and (CAMEL.match(name) or named)):
+        return {include: empty_stub(include)}
+    for suffix, member in (('ActionGoal', 'goal'), ('ActionResult', 'result'),
+                           ('ActionFeedback', 'feedback')):
+        if name.endswith(suffix) and len(name) > len(suffix):
+            base = name[:-len(suffix)]
+            inner = base + suffix[len('Action'):]
+            stubs = stand_ins_for(f'{package}/{inner}.h', codes)
+            stubs[include] = _message_stub(
+                package, name, includes=[f'{package}/{inner}.h'],
+                typedefs=[(f'_{member}_type', f'{inner}_<ContainerAllocator>')])
+            return stubs
+    if name.endswith('Action') and len(name) > len('Action'):
+        base = name[:-len('Action')]
+        stubs = {}
+        typedefs = []
+        includes = []
+        for part, member in (('Goal', 'goal'), ('Result', 'result'),
+                             ('Feedback', 'feedback')):
+            sub = f'{package}/{base}Action{part}.h'
+            stubs.update(stand_ins_for(sub, codes))
+            includes.append(sub)
+            typedefs.append((f'_action_{member}_type',
+                             f'{base}Action{part}_<ContainerAllocator>'))
+        stubs[include] = _message_stub(
+            package, name, includes=includes, typedefs=typedefs)
+        return stubs
+    if name.endswith('Config') and len(name) > len('Config') and \
+            not message_evidence(name, codes):
+        return {include: _config_stub(package, name)}
+    if service_evidence(name, codes) and \
+            not name.endswith(('Request', 'Response')):
+        stubs = {}
+        for part in ('Request', 'Response'):
+            stubs.update(stand_ins_for(f'{package}/{name}{part}.h', codes))
+        if message_evidence(name, codes):
+            stubs[include] = _combined_stub(package, name)
+        else:
+            stubs[include] = _service_stub(package, name)
+        return stubs
+    # nothing tells a message from a service used only generically
+    # (`typename S::Request`): a message also names the would-be parts
+    return {include: _message_stub(
+        package, name,
+        declarations=[
+            'template <class ContainerAllocator>',
+            f'struct {name}Request_;',
+            'template <class ContainerAllocator>',
+            f'struct {name}Response_;', ''],
+        typedefs=[('Request', f'{name}Request_<ContainerAllocator>'),
+                  ('Response', f'{name}Response_<ContainerAllocator>')])}
+
+
+# ROS 2 interfaces: `<pkg/msg/laser_scan.hpp>` declares
+# `pkg::msg::LaserScan_<ContainerAllocator>` and `pkg::msg::LaserScan`
+_ROS2_INTERFACE_DIRS = frozenset({'msg', 'srv', 'action'})
+
+
+def _ros2_type_name(package, kind, file_stem, codes):
+    """The CamelCase name a snake_case interface header declares."""
+    wanted = file_stem.replace('_', '').lower()
+    pattern = re.compile(
+        r'\b' + re.escape(package) + r'\s*::\s*' + kind +
+        r'\s*::\s*([A-Z]\w*)')
+    for code in codes:
+        for match in pattern.finditer(code):
+            if match.group(1).lower() == wanted:
+                return match.group(1)
+    return ''.join(p[:1].upper() + p[1:] for p in file_stem.split('_'))
+
+
+def _ros2_interface_stub(package, kind, file_name, codes):
+    stem = file_name[:-len('.hpp')]
+    if '__' in stem or not PACKAGE.match(stem):
+        return empty_stub(f'{package}/{kind}/{file_name}')
+    name = _ros2_type_name(package, kind, stem, codes)
+    guard = f'RSIA_STUB_{package}_{kind}_{stem}_HPP'
+    lines = [
+        f'{STUB_MARKER} kind=ros2_{kind}: <{package}/{kind}/{file_name}>',
+        '// a ROS 2 interface the model mode cannot read: the name, template',
+        '// shape and pointer aliases of a generated rosidl header, its fields',
+        '// the catch-all rsia_model::Fields',
+        f'#ifndef {guard}', f'#define {guard}', '',
+        '#include <memory>', '#include <rsia_model/message.h>', '',
+        f'namespace {package}', '{', f'namespace {kind}', '{', '']
+
+    def struct(struct_name):
+        return [
+            'template <class ContainerAllocator>',
+            f'struct {struct_name}_ : ::rsia_model::Fields',
+            '{',
+            f'  using Type = {struct_name}_<ContainerAllocator>;',
+            f'  using SharedPtr = std::shared_ptr<{struct_name}_>;',
+            f'  using ConstSharedPtr = std::shared_ptr<const {struct_name}_>;',
+            f'  using UniquePtr = std::unique_ptr<{struct_name}_>;',
+            f'  using ConstUniquePtr = std::unique_ptr<const {struct_name}_>;',
+            f'  using WeakPtr = std::weak_ptr<{struct_name}_>;',
+            '};',
+            f'using {struct_name} = {struct_name}_<std::allocator<void>>;', '']
+    if kind == 'msg':
+        lines += struct(name)
+    elif kind == 'srv':
+        lines += struct(name + '_Request') + struct(name + '_Response')
+        lines += [f'struct {name}', '{',
+                  f'  using Request = {name}_Request;',
+                  f'  using Response = {name}_Response;', '};', '']
+    else:
+        parts = ('Goal', 'Result', 'Feedback')
+        for part in parts:
+            lines += struct(f'{name}_{part}')
+        lines += [f'struct {name}', '{']
+        lines += [f'  using {part} = {name}_{part};' for part in parts]
+        lines += ['};', '']
+    lines += [f'}}  // namespace {kind}', f'}}  // namespace {package}', '',
+              f'#endif  // {guard}', '']
+    return '\n'.join(lines)
+
+
+def _guard(package, name):
+    return f'RSIA_STUB_{package}_{name}_H'
+
+
+def _guarded_header(package, name, kind, about, includes, body):
+    """A stand-in's text: its marker, guard and namespace around `body`."""
+    guard = _guard(package, name)
+    return '\n'.join([
+        f'{STUB_MARKER} kind={kind}: <{package}/{name}.h>', *about,
+        f'#ifndef {guard}', f'#define {guard}', '', *includes, '',
+        f'namespace {package}', '{', '', *body, '',
+        f'}}  // namespace {package}', '', f'#endif  // {guard}', ''])
+
+
+def _message_stub(package, name, *, includes=(), typedefs=(), kind='message',
+                  declarations=()):
+    body = list(declarations) + [
+        'template <class ContainerAllocator>',
+        f'struct {name}_ : ::rsia_model::Fields',
+        '{',
+        f'  typedef {name}_<ContainerAllocator> Type;']
+    body += [f'  typedef {target} {alias};' for alias, target in typedefs]
+    body += [
+        f'  typedef boost::shared_ptr<{name}_<ContainerAllocator>> Ptr;',
+        f'  typedef boost::shared_ptr<{name}_<ContainerAllocator> const> '
+        'ConstPtr;',
+        '};',
+        '',
+        f'typedef ::{package}::{name}_<std::allocator<void>> {name};',
+        f'typedef boost::shared_ptr< ::{package}::{name}> {name}Ptr;',
+        f'typedef boost::shared_ptr< ::{package}::{name} const> '
+        f'{name}ConstPtr;']
+    return _guarded_header(
+        package, name, kind,
+        ['// a message the model mode cannot read: its name, template shape and',
+         '// pointer typedefs are those of a generated message header, its',
+         '// fields the catch-all rsia_model::Fields'],
+        ['#include <rsia_model/message.h>'] +
+        [f'#include <{i}>' for i in includes], body)
+
+
+def _service_stub(package, name):
+    return _guarded_header(
+        package, name, 'service',
+        ['// a service the model mode cannot read (the sources use its Request',
+         '// or Response): the struct of a generated service header'],
+        [f'#include <{package}/{name}Request.h>',
+         f'#include <{package}/{name}Response.h>'],
+        [f'struct {name}',
+         '{',
+         f'  typedef {name}Request Request;',
+         f'  typedef {name}Response Response;',
+         '  Request request;',
+         '  Response response;',
+         '  typedef Request RequestType;',
+         '  typedef Response ResponseType;',
+         '};'])
+
+
+def _combined_stub(package, name):
+    """A name used both as a message and as a service: serve both."""
+    return _message_stub(
+        package, name, kind='service_message',
+        includes=[f'{package}/{name}Request.h', f'{package}/{name}Response.h'],
+        typedefs=[('Request', f'::{package}::{name}Request'),
+                  ('Response', f'::{package}::{name}Response'),
+                  ('RequestType', f'::{package}::{name}Request'),
+                  ('ResponseType', f'::{package}::{name}Response')])
+
+
+def combined_stub_from(content):
+    """A message's stand-in made one of a service too (see _combined_stub)."""
+    match = re.search(r'<(\w+)/(\w+)\.h>', content.split('\n', 1)[0])
+    return _combined_stub(match.group(1), match.group(2)) if match \
+        else content
+
+
+def _config_stub(package, name):
+    return _guarded_header(
+        package, name, 'config',
+        ['// a dynamic_reconfigure config (generated from a .cfg file): its',
+         '// parameters are the catch-all rsia_model::Fields'],
+        ['#include <rsia_model/message.h>'],
+        [f'class {name} : public ::rsia_model::Fields',
+         '{',
+         'public:',
+         f'  static const {name}& __getDefault__();',
+         f'  static const {name}& __getMin__();',
+         f'  static const {name}& __getMax__();',
+         '};'])

@@ -1,0 +1,304 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Writing the stand-ins of one unit into the stub directory.
+
+A stub directory may be shared by the translation units of a package,
+parsed in parallel: the generated files only ever grow, writes are atomic
+and serialised by a lock.
+"""
+
+import os
+import re
+import threading
+
+from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
+from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
+from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
+from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import guessed_namespace
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
+
+FIELDS_HEADER = os.path.join('rsia_model', 'fields.h')
+IMPLICIT_MESSAGES_HEADER = os.path.join('rsia_model', 'implicit_messages.h')
+
+
+# directory level each)
+MAX_UP_LEVELS = 8
+
+
+UNKNOWN_DIR = os.path.join('rsia_model', 'unknown')
+
+
+_lock = threading.Lock()
+
+
+def write_stand_ins(scanner, codes, stub_dir):
+    """Write the stand-ins one TU needs.
+
+    :returns: (the extra include dirs, the namespaces of unknown includes
+      that the TU declares itself)
+    """
+    members, constants, field_types, msgs_types, templates = \
+        used_names(codes)
+    stubs = {}   # include name -> content
+    for name, kind in sorted(scanner.missing.items()):
+        if kind == 'empty':
+            stubs[name] = empty_stub(name)
+        else:
+            stubs.update(stand_ins_for(name, codes))
+    unknown, own = _unknown_namespaces(stubs, codes)
+    implicit = []
+    for package, includes in sorted(msgs_types.items()):
+        for include in sorted(includes):
+            if include in stubs or scanner.resolve(
+                    include, False, stub_dir) is not None:
+                continue
+            for stub_name, content in stand_ins_for(include, codes).items():
+                stubs.setdefault(stub_name, content)
+            implicit.append(include)
+    up_dirs = set()
+    with _lock:
+        os.makedirs(stub_dir, exist_ok=True)
+        # stand-ins before the headers that include them: another TU of the
+        # package may be parsing already
+        for name, content in stubs.items():
+            try:
+                target, up = _stub_path(stub_dir, name)
+                if target is None:
+                    continue
+                _write_stub(target, content)
+            except OSError:
+                continue  # e.g. a name that is also a directory: the
+                # include stays unresolved, as with no stand-in at all
+            if up:
+                up_dirs.add(up)
+        for namespace, names in unknown.items():
+            _merge_unknown(stub_dir, namespace, names)
+        _merge_implicit(stub_dir, implicit)
+        _merge_fields(stub_dir, members, constants, field_types, templates)
+    return sorted(up_dirs), own
+
+
+def _stub_path(stub_dir, name):
+    """Where the stand-in of an include goes: (path, extra include dir)."""
+    if os.path.isabs(name):
+        return None, None  # never written outside the stub directory
+    normalized = os.path.normpath(name)
+    parts = normalized.split(os.sep)
+    up = 0
+    while parts and parts[0] == '..':
+        parts.pop(0)
+        up += 1
+    if not parts or up > MAX_UP_LEVELS or '..' in parts:
+        return None, None
+    if not up:
+        return os.path.join(stub_dir, *parts), None
+    # `#include "../x.h"` from an include dir `_up/a` finds `_up/x.h`
+    base = os.path.join(stub_dir, '_up')
+    up_dir = os.path.join(base, *(['a'] * up))
+    os.makedirs(up_dir, exist_ok=True)
+    return os.path.join(base, *parts), up_dir
+
+
+def _write_stub(target, content):
+    existing = read_text(target)
+    if existing == content:
+        return
+    if existing is not None and existing.startswith(STUB_MARKER):
+        kinds = {_stub_kind(existing), _stub_kind(content)}
+        if kinds <= {'message', 'service', 'service_message'} and \
+                len(kinds) > 1:
+            # one TU uses the name as a message, another as a service: the
+            # combined form serves both (it only ever grows)
+            if _stub_kind(existing) == 'service_message':
+                return
+            content = combined_stub_from(content)
+    write_atomically(target, content)
+
+
+def _stub_kind(text):
+    match = re.search(r'kind=(\w+)', text.split('\n', 1)[0])
+    return match.group(1) if match else None
+
+
+def write_atomically(path, content):
+    """Write a text file whole or not at all (readers never see half).
+
+    Stand-ins keep undecodable names as they were read.
+    """
+    safe_files.write_text_atomically(path, content, errors='surrogateescape')
+
+
+def _merge_fields(stub_dir, members, constants, field_types=(),
+                  templates=()):
+    """Grow rsia_model/fields.h to hold these member, constant, type names.
+
+    :param templates: members called with template arguments only
+    """
+    path = os.path.join(stub_dir, FIELDS_HEADER)
+    old = read_text(path) or ''
+    if not old.startswith(STUB_MARKER):
+        old = ''
+    old_members = set(re.findall(r'RSIA_MODEL_FIELD\((\w+)\)', old))
+    old_constants = set(re.findall(r'RSIA_MODEL_CONSTANT\((\w+),', old))
+    old_types = set(re.findall(r'RSIA_MODEL_FIELD_TYPE\((\w+)\)', old))
+    old_templates = set(re.findall(
+        r'RSIA_MODEL_FIELD_TEMPLATE\((\w+)\)', old))
+    if old and members <= old_members | old_templates and \
+            constants <= old_constants | old_members and \
+            set(field_types) <= old_types | old_members and \
+            set(templates) <= old_templates | old_members:
+        return
+    # a name keeps the first form it was given (units share the file)
+    all_templates = sorted(
+        (old_templates | set(templates)) - old_members)
+    all_members = sorted((old_members | members) - set(all_templates))
+    taken = set(all_members) | set(all_templates)
+    all_constants = sorted((old_constants | constants) - taken)
+    all_types = sorted((old_types | set(field_types)) - taken)
+    lines = [
+        f'{STUB_MARKER} kind=fields',
+        '// the member names used after `.` / `->` in the analysed sources,',
+        '// the `Type::CONSTANT` names and the `Type::_field_type` names;',
+        '// included twice by rsia_model/message.h (no include guard), a name',
+        '// that is a macro there is left out']
+    for name in all_members:
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD({name})', '#endif']
+    for name in all_templates:
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TEMPLATE({name})',
+                  '#endif']
+    for name in all_types:
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TYPE({name})',
+                  '#endif']
+    # distinct values: constants may be `case` labels of one switch
+    for i, name in enumerate(all_constants):
+        lines += [f'#ifndef {name}', f'RSIA_MODEL_CONSTANT({name}, {i + 1})',
+                  '#endif']
+    write_atomically(path, '\n'.join(lines) + '\n')
+
+
+def _merge_implicit(stub_dir, implicit):
+    """Grow rsia_model/implicit_messages.h by these includes."""
+    path = os.path.join(stub_dir, IMPLICIT_MESSAGES_HEADER)
+    old = read_text(path) or ''
+    old_includes = set(re.findall(r'#include <([^>]+)>', old)) \
+        if old.startswith(STUB_MARKER) else set()
+    if set(implicit) <= old_includes and old.startswith(STUB_MARKER):
+        return
+    lines = [
+        f'{STUB_MARKER} kind=implicit',
+        '// messages of *_msgs packages the sources name without including',
+        '// them (the real message headers include what their fields use)']
+    lines += [f'#include <{n}>' for n in sorted(old_includes | set(implicit))]
+    write_atomically(path, '\n'.join(lines) + '\n')
+
+
+def _unknown_namespaces(stubs, codes):
+    """Guess what unknown includes declare.
+
+    :returns: ({namespace: (types {name: static members}, objects,
+      constants)}, sorted namespaces the TU declares itself)
+
+
+    For the namespace of each unknown include directory (a package's name is
+    its namespace, by ROS convention), the names the sources use after
+    `namespace::` are declared: CamelCase names (and names used to declare
+    a variable) as catch-all classes, ALL_CAPS names as constants, others as
+    catch-all objects (functions, variables). Templates (`ns::Name<`) are
+    left undeclared. A namespace the sources open themselves, or one with
+    messages of this TU, is left alone (and named in the second result).
+    """
+    namespaces = {guessed_namespace(name) for name, content in stubs.items()
+                  if 'kind=empty' in content.split('\n', 1)[0]} - {None}
+    with_messages = {name.split('/')[0] for name, content in stubs.items()
+                     if 'kind=empty' not in content.split('\n', 1)[0]}
+    result = {}
+    own = []
+    for namespace in sorted(namespaces):
+        opened = re.compile(r'\bnamespace\s+' + namespace + r'\b')
+        if namespace in with_messages or any(
+                opened.search(code) for code in codes):
+            own.append(namespace)
+            continue
+        use = re.compile(
+            r'(?<![\w:])' + namespace + r'\s*::\s*([A-Za-z_]\w*)'
+            r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
+        types, objects, constants, templates = {}, set(), set(), set()
+        for code in codes:
+            for match in use.finditer(code):
+                name, after, member = match.group(1), match.group(2), \
+                    match.group(3)
+                if not member_ok(name) or name == namespace:
+                    continue
+                if after and after.strip() == '<':
+                    templates.add(name)
+                elif member and re.match(r'^[a-z][a-z0-9_]*$', name) and \
+                        CAMEL.match(member):
+                    # ns::inner::Type: a nested namespace, which the
+                    # repairs declare with what is used of it (repair.py)
+                    continue
+                elif member or CAMEL.match(name) or (
+                        after and not name.isupper()):
+                    members = types.setdefault(name, set())
+                    if member and member_ok(member):
+                        members.add(member)
+                elif re.match(r'^[A-Z][A-Z0-9_]+$', name):
+                    constants.add(name)
+                else:
+                    objects.add(name)
+        for name in templates:
+            types.pop(name, None)
+        objects -= set(types) | templates
+        constants -= set(types) | templates
+        if types or objects or constants:
+            result[namespace] = (types, objects, constants)
+    return result, own
+
+
+def _merge_unknown(stub_dir, namespace, names):
+    """Grow rsia_model/unknown/<namespace>.h by these declarations."""
+    types, objects, constants = names
+    path = os.path.join(stub_dir, UNKNOWN_DIR, namespace + '.h')
+    old = read_text(path) or ''
+    if old.startswith(STUB_MARKER):
+        for match in re.finditer(r'^// type (\w+):([\w ]*)$', old, re.M):
+            types.setdefault(match.group(1), set()).update(
+                match.group(2).split())
+        objects |= set(re.findall(r'^// object (\w+)$', old, re.M))
+        constants |= set(re.findall(r'^// constant (\w+)$', old, re.M))
+    objects -= set(types)
+    constants -= set(types) | objects
+    guard = f'RSIA_MODEL_UNKNOWN_{namespace}_H'
+    lines = [
+        f'{STUB_MARKER} kind=unknown: namespace {namespace}',
+        f'// what the analysed sources use of `{namespace}::` (from headers the',
+        '// model mode does not have): catch-all declarations',
+        f'#ifndef {guard}', f'#define {guard}', '',
+        '#include <rsia_model/message.h>', '', f'namespace {namespace}', '{']
+    for name in sorted(types):
+        members = sorted(types[name])
+        # a repair header (repair.py) may have declared it already
+        lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
+                  f'#if !defined({name}) && '
+                  f'!defined(RSIA_REPAIRED__{namespace}__{name})',
+                  f'struct {name} : ::rsia_model::Unknown', '{',
+                  '  using ::rsia_model::Unknown::Unknown;',
+                  '  using ::rsia_model::Unknown::operator=;']
+        for member in members:
+            lines += [f'#ifndef {member}',
+                      f'  static ::rsia_model::Any {member};', '#endif']
+        lines += ['};', '#endif']
+    for name in sorted(objects):
+        lines += [f'// object {name}', f'#ifndef {name}',
+                  f'extern ::rsia_model::Any {name};', '#endif']
+    for i, name in enumerate(sorted(constants)):
+        lines += [f'// constant {name}', f'#ifndef {name}',
+                  f'constexpr int {name} = {i + 1};', '#endif']
+    lines += ['', f'}}  // namespace {namespace}', '', f'#endif  // {guard}', '']
+    content = '\n'.join(lines)
+    if content != old:
+        write_atomically(path, content)

@@ -1,0 +1,47 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The plugins a C++ unit registers: pluginlib, components, BT nodes.
+
+Read from the main file's text with the registration macros, not from the
+AST (see the comment on :data:`EXPORT_MACRO`).
+"""
+
+import re
+
+# plugin registrations, read from the source text: a detailed processing
+# record would show them as macro instantiations, but it triples the number
+# of top-level cursors (every macro of every header) and so the walk time
+EXPORT_MACRO = re.compile(
+    r'\b(?:PLUGINLIB_EXPORT_CLASS|CLASS_LOADER_REGISTER_CLASS)\s*\(\s*'
+    r'([\w:]+(?:\s*<[^;()]*?>)?)\s*,\s*([\w:]+(?:\s*<[^;()]*>)?)\s*\)')
+COMPONENT_MACRO = re.compile(
+    r'\bRCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)')
+# the base recorded for a registered ROS 2 component
+COMPONENT_BASE = 'rclcpp::Node'
+# behavior-tree nodes a plugin library registers for a BT executor
+# (navigation2's bt_navigator): `BT_REGISTER_NODES(factory) { ...
+# factory.registerNodeType<ns::Class>("Name"); }`
+BT_REGISTRATION = re.compile(r'\bBT_REGISTER_NODES\s*\(\s*(\w+)\s*\)')
+BT_NODE_TYPE = re.compile(r'\bregisterNodeType\s*<\s*([\w:]+)\s*>')
+# the base recorded for them (the table's key: plugin_hosts.py)
+BT_NODE_BASE = 'BT::TreeNode'
+
+
+def plugin_exports(main_file):
+    """[class, base] of each plugin a unit's main file registers."""
+    exports = []
+    try:
+        with open(main_file, encoding='utf-8', errors='replace') as h:
+            text = h.read()
+    except OSError:
+        return exports
+    for match in EXPORT_MACRO.finditer(text):
+        exports.append(
+            [match.group(1).lstrip(':'), match.group(2).lstrip(':')])
+    for match in COMPONENT_MACRO.finditer(text):
+        exports.append([match.group(1).lstrip(':'), COMPONENT_BASE])
+    registration = BT_REGISTRATION.search(text)
+    if registration is not None:
+        for match in BT_NODE_TYPE.finditer(text, registration.end()):
+            exports.append([match.group(1).lstrip(':'), BT_NODE_BASE])
+    return exports

@@ -1,0 +1,625 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""What each recognised ROS API does to the facts of a unit.
+
+The walker (:mod:`colcon_rsia.frontend.cpp.walker`) finds a call and its
+role in :mod:`colcon_rsia.frontend.ros_api`; the handler of that role here
+reads the call's arguments into facts: a publisher, a subscriber, a timer,
+a rate, a NodeHandle's namespace, a parameter read... Handlers are named
+after the roles (``_on_<role>``) and dispatched through the walker's
+explicit table (:meth:`RosRoles.handlers`).
+"""
+
+import dataclasses
+import re
+
+import clang.cindex as ci
+from colcon_rsia import model
+from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp.const_eval import evaluate_duration_seconds
+from colcon_rsia.frontend.cpp.const_eval import evaluate_number
+from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
+from colcon_rsia.frontend.cpp.cursors import call_object
+from colcon_rsia.frontend.cpp.cursors import callback_msg_type
+from colcon_rsia.frontend.cpp.cursors import explicit_template_type
+from colcon_rsia.frontend.cpp.cursors import expression_text
+from colcon_rsia.frontend.cpp.cursors import first_handle
+from colcon_rsia.frontend.cpp.cursors import first_template_argument
+from colcon_rsia.frontend.cpp.cursors import is_callable_argument
+from colcon_rsia.frontend.cpp.cursors import is_string
+from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
+from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import same_cursor
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.cursors import written_arguments
+from colcon_rsia.frontend.cpp.strings import string_parts
+from colcon_rsia.model import UNKNOWN_NAMESPACE
+
+CK = ci.CursorKind
+
+_SMART_POINTER = re.compile(r'^(?:std|boost)::(?:shared_ptr|unique_ptr)<')
+
+# the option objects roscpp's subscribe/advertise also take
+_OPTIONS_TYPES = frozenset({'ros::SubscribeOptions', 'ros::AdvertiseOptions'})
+
+
+class RosRoles:
+    """The handlers of the ROS API roles, for one walk."""
+
+    def __init__(self, walker):  # noqa: D107
+        self.walker = walker
+        # the walker's facts: one object for the whole walk
+        self.facts = walker.facts
+
+    def handlers(self):
+        """The walker's handlers for the roles of ros_api."""
+        return {
+            ros_api.PUBLISHER: self._on_publisher,
+            ros_api.SUBSCRIBER: self._on_subscriber,
+            ros_api.TIMER: self._on_timer,
+            ros_api.SERVICE: self._on_service,
+            ros_api.CLIENT: self._on_client,
+            ros_api.PUBLISH: self._on_publish,
+            ros_api.RATE: self._on_rate,
+            ros_api.RATE_SLEEP: self._on_rate_sleep,
+            ros_api.SYNC: self._on_sync,
+            ros_api.REGISTER_CALLBACK: self._on_register_callback,
+            ros_api.ACTION_SERVER: self._on_action_server,
+            ros_api.ACTION_CLIENT: self._on_action_client,
+            ros_api.NODE_HANDLE: self._on_node_handle,
+            ros_api.PRIVATE_HANDLE: self._on_private_handle,
+            ros_api.PUBLIC_HANDLE: self._on_public_handle,
+            ros_api.PARAM_READ: self._on_param_read,
+            ros_api.NODE_NAME: self._on_node_name,
+            ros_api.SUB_NODE: self._on_sub_node,
+            ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
+        }
+
+    def _callbacks(self, arguments, position):
+        if position == ros_api.ALL_CALLABLES:
+            candidates = [a for a in arguments if is_callable_argument(a)]
+        elif position == ros_api.FIRST_CALLBACK:
+            candidates = arguments
+        else:
+            positions = position if isinstance(position, tuple) \
+                else (position,)
+            candidates = [self.walker.argument(arguments, p) for p in positions]
+        found = []
+        for argument in candidates:
+            callback, _ = self.walker.resolve_callback(argument)
+            if callback:
+                found.append(callback)
+        return found
+
+    def _namespace_of(self, call, api=None, arguments=()):
+        """The NodeHandle a create call was made on: USR or marker.
+
+        For an API that takes the NodeHandle as an argument
+        (``message_filters::Subscriber(nh, topic, 1)``), that argument.
+        """
+        obj = call_object(call)
+        if api is not None and api.nh_arg is not None and \
+                api.nh_arg < len(arguments):
+            obj = arguments[api.nh_arg]
+        if obj is None:
+            return None
+        for current in [obj] + list(walk_preorder(obj)):
+            if current.kind == CK.CALL_EXPR and current.referenced is not None:
+                api = ros_api.lookup_call(qualified_name(current.referenced))
+                if api is not None and api.role == ros_api.PRIVATE_HANDLE:
+                    return '~'
+                if api is not None and api.role == ros_api.PUBLIC_HANDLE:
+                    return ''
+        handle = first_handle(obj)
+        return handle.get_usr() if handle is not None else None
+
+    # --- roles (named after ros_api roles) ----------------------------------
+
+    def _on_publisher(self, cursor, ctx, stack, api, name, arguments):
+        if self._wrapped_publisher(cursor, stack, api, arguments):
+            return
+        typed, api, arguments = self._with_options(cursor, api, arguments)
+        topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        if topic is None and name.endswith('::init'):
+            return
+        if topic is None and api.name_arg and len(arguments) <= api.name_arg:
+            return  # a default constructor: the topic comes with init()
+        msg_type = self.walker.table_msg_type(api.msg_type) or \
+            self._type_name(arguments, api) or \
+            self._template_msg_type(typed, name)
+        target = self.walker.target(cursor, stack)
+        for common in self._endpoints(cursor, ctx, api, name, arguments,
+                                      topic, literal, msg_type, target):
+            self.facts.publishers.append(model.PublisherFact(
+                handle_name=target.spelling if target is not None else None,
+                **common))
+        self.walker.string_variables.concatenation(
+            self.facts.publishers[-1:], literal,
+            self.walker.argument(arguments, api.name_arg))
+
+    def _wrapped_publisher(self, cursor, stack, api, arguments):
+        """``RealtimePublisher<M>(pub)`` publishes through `pub`.
+
+        Returns whether the call is such a wrapper (then it makes no
+        publisher of its own; its publish sites count for `pub`).
+        """
+        if api.wraps_arg is None:
+            return False
+        written = written_arguments(arguments)
+        wrapped = self.walker.argument(arguments, api.wraps_arg)
+        if len(written) != 1 or wrapped is None or is_string(wrapped):
+            return False
+        target = self.walker.target(cursor, stack)
+        handle = first_handle(wrapped)
+        if target is not None and handle is not None:
+            self.facts.handle_aliases.append(model.HandleAlias(
+                alias=target.get_usr(), handle=handle.get_usr(),
+                location=self.walker.location(cursor)))
+        return True
+
+    def _argument_msg_type(self, arguments, api):
+        if api.msg_type_arg is None:
+            return None
+        argument = self.walker.argument(arguments, api.msg_type_arg)
+        return normalize_msg_type(argument.type.get_canonical().spelling) \
+            if argument is not None else None
+
+    def _type_name(self, arguments, api):
+        """The message type a generic API names: "pkg/msg/Name"."""
+        if api.type_name_arg is None:
+            return None
+        written, literal = self.walker.topic(
+            self.walker.argument(arguments, api.type_name_arg))
+        if not literal or not re.fullmatch(r'\w+/\w+/\w+', written or ''):
+            return None
+        return written.replace('/', '::')
+
+    def _template_msg_type(self, cursor, name):
+        """The message type from ``<M>`` at the call or in the class."""
+        return normalize_msg_type(
+            explicit_template_type(cursor) or
+            first_template_argument(self._object_type(cursor, name)))
+
+    def _endpoints(self, cursor, ctx, api, name, arguments, topic, literal,
+                   msg_type, target):
+        """The fields shared by publisher and subscriber facts, per topic.
+
+        image_transport's camera APIs also make `<dirname>/camera_info`.
+        """
+        topics = [(topic, msg_type)]
+        if api.camera:
+            topics.append((_camera_info(topic),
+                           self.walker.table_msg_type(ros_api.CAMERA_INFO_MSG)))
+        topic_handle, affixes = self._topic_handle(arguments, api, literal)
+        for each_topic, each_type in topics:
+            yield dict(
+                topic_handle=topic_handle, topic_affixes=affixes,
+                function=ctx.function, api=ros_api.api_label(name),
+                topic=each_topic, topic_is_literal=literal,
+                msg_type=each_type,
+                handle=target.get_usr() if target is not None else None,
+                location=self.walker.location(cursor),
+                nh=self._namespace_of(cursor, api, arguments))
+
+    def _object_type(self, cursor, name):
+        """The class type a constructor or method belongs to.
+
+        Canonical, so that aliases (``using Image = ...``) name the real
+        message; through a smart pointer, the class pointed to.
+        """
+        if name.split('::')[-1] == name.split('::')[-2]:
+            type_ = cursor.type
+        else:
+            obj = call_object(cursor)
+            if obj is None:
+                return ''
+            type_ = obj.type
+        spelling = type_.get_canonical().spelling
+        if _SMART_POINTER.match(spelling):
+            spelling = first_template_argument(spelling) or spelling
+        return spelling
+
+    def _options_call(self, argument):
+        """The create()/init() call that filled a ros::*Options object.
+
+        ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` take the topic, the
+        message type and the callback from ``ops =
+        ros::SubscribeOptions::create<M>(topic, queue, callback, ...)`` or
+        from ``ops.init<M>(topic, queue, callback)`` in the same function.
+        """
+        if argument is None:
+            return None
+        options = re.sub(r'^const |\s*&$', '',
+                         argument.type.get_canonical().spelling)
+        if options not in _OPTIONS_TYPES:
+            return None
+        handle = first_handle(argument)
+        if handle is None:
+            return None
+        fillers = {f'{options}::create', f'{options}::init'}
+        found = None
+        scopes = [handle] + ([handle.semantic_parent]
+                             if handle.kind == CK.VAR_DECL else [])
+        for scope in scopes:
+            for node in walk_preorder(scope):
+                if node.kind != CK.CALL_EXPR or node.referenced is None or \
+                        qualified_name(node.referenced) not in fillers:
+                    continue
+                if scope is handle or same_cursor(
+                        first_handle(call_object(node)), handle):
+                    found = node  # the last one written wins
+            if found is not None:
+                return found
+        return None
+
+    def _with_options(self, cursor, api, arguments):
+        """(call with the endpoint's arguments, api, arguments)."""
+        options = self._options_call(self.walker.argument(arguments, api.name_arg))
+        if options is None:
+            return cursor, api, arguments
+        # create/init(topic, queue_size, callback, ...): a subscription's
+        # callback is the third argument, an advertisement has none
+        return options, dataclasses.replace(
+            api, name_arg=0,
+            callback_arg=2 if api.callback_arg is not None else None), \
+            list(options.get_arguments())
+
+    def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
+        typed, api, arguments = self._with_options(cursor, api, arguments)
+        topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        if topic is None:
+            return  # a default-constructed message_filters::Subscriber
+        callback, declaration = self.walker.resolve_callback(
+            self.walker.argument(arguments, api.callback_arg)) \
+            if api.callback_arg is not None else (None, None)
+        if api.type_name_arg is not None:
+            # generic: the callback takes serialized messages of any type
+            msg_type = self._type_name(arguments, api)
+        else:
+            msg_type = self.walker.table_msg_type(api.msg_type) or \
+                self._template_msg_type(typed, name) or \
+                self._argument_msg_type(arguments, api) or \
+                callback_msg_type(declaration)
+        target = self.walker.target(cursor, stack)
+        if target is None and api.callback_arg is None:
+            target = first_handle(call_object(cursor))
+        for common in self._endpoints(cursor, ctx, api, name, arguments,
+                                      topic, literal, msg_type, target):
+            self.facts.subscribers.append(model.SubscriberFact(
+                callback=callback, **common))
+        self.walker.string_variables.concatenation(
+            self.facts.subscribers[-1:], literal,
+            self.walker.argument(arguments, api.name_arg))
+
+    def _topic_handle(self, arguments, api, literal):
+        """(handle, affixes): where a non-literal topic comes from.
+
+        A variable, or a parameter: ``create_publisher<M>(get_parameter(
+        "topic").as_string(), 10)`` reads the parameter in place, recorded
+        as ``param:<name>``. A variable joined with literals (``topic +
+        "_filtered"``) gives [prefix, suffix] too, so that the value a
+        launch file gives the parameter read into it makes the name.
+        """
+        if literal:
+            return None, None
+        argument = self.walker.argument(arguments, api.name_arg)
+        if argument is None:
+            return None, None
+        for current in [argument] + list(walk_preorder(argument)):
+            if current.kind != CK.CALL_EXPR or current.referenced is None:
+                continue
+            read = ros_api.lookup_call(qualified_name(current.referenced))
+            if read is not None and read.role == ros_api.PARAM_READ:
+                param, is_literal = self.walker.topic(
+                    self.walker.argument(list(current.get_arguments()), 0))
+                if is_literal:
+                    return 'param:' + param, None
+        parts = string_parts(argument)
+        if parts is not None and len(parts) > 1:
+            # `ns + "/pose"` is not the value of `ns` alone
+            variables = [i for i, (kind, _) in enumerate(parts)
+                         if kind == 'variable']
+            if len(variables) != 1:
+                return None, None
+            index = variables[0]
+            return parts[index][1], [
+                ''.join(text for _, text in parts[:index]),
+                ''.join(text for _, text in parts[index + 1:])]
+        handle = first_handle(argument)
+        return (handle.get_usr() if handle is not None else None), None
+
+    def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
+        param, literal = self.walker.topic(self.walker.argument(arguments, 0))
+        if not literal:
+            return
+        written = written_arguments(arguments)
+        if api.returns_value or len(written) == 1 or (
+                name.endswith('::param') and len(written) == 2):
+            # value = nh.param("name", default);
+            # value = node->declare_parameter("name", default);
+            # value = node->get_parameter("name").as_string()
+            target = self.walker.target(cursor, stack)
+            default_argument = written[1] if len(written) > 1 else None
+        else:
+            # nh.param("name", variable, default) / getParam("name", var)
+            target = first_handle(written[1]) if len(written) > 1 else None
+            default_argument = written[2] if len(written) > 2 else None
+        default = None
+        if default_argument is not None:
+            default, is_literal = self.walker.topic(default_argument)
+            default = default if is_literal else None
+        self.facts.param_reads.append(model.ParamRead(
+            function=ctx.function, name=param, default=default,
+            handle=target.get_usr() if target is not None else None,
+            nh='~' if api.node_private else self._namespace_of(cursor),
+            location=self.walker.location(cursor)))
+
+    def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
+        node_name, literal = self.walker.topic(
+            self.walker.argument(arguments, api.name_arg))
+        namespace = None
+        argument = self.walker.argument(arguments, api.namespace_arg) \
+            if api.namespace_arg is not None else None
+        # Node("name", options) has no namespace argument
+        if argument is not None and is_string(argument):
+            namespace, ns_literal = self.walker.topic(argument)
+            namespace = namespace if ns_literal else None
+        name_param = None
+        if not literal:
+            # Base(const std::string & name) : Node(name): the name the
+            # callers of Base pass
+            handle = first_handle(self.walker.argument(arguments, api.name_arg))
+            if handle is not None and handle.kind == CK.PARM_DECL:
+                name_param = handle.get_usr()
+        self.facts.node_names.append(model.NodeNameFact(
+            function=ctx.function, name=node_name if literal else None,
+            namespace=namespace, location=self.walker.location(cursor),
+            name_param=name_param))
+
+    def _on_timed_publisher(self, cursor, ctx, stack, api, name, arguments):
+        """An object publishing from a timer of its own (ROS 2 Updater).
+
+        Recorded as what it does: a timer whose callback (a function made
+        up for it, at the construction) publishes through the object.
+        """
+        if not self.walker.ros2:
+            return  # the ROS 1 Updater publishes only when told to
+        target = self.walker.target(cursor, stack)
+        if target is None:
+            return
+        location = self.walker.location(cursor)
+        # what the real timer calls; the id is unique per object
+        callback = f'{api.label}::update@{location}'
+        self.facts.functions.append(model.Function(
+            id=callback, name=f'{api.label}::update', location=location))
+        period = self.walker.argument(arguments, api.period_arg)
+        seconds = evaluate_number(period) if period is not None \
+            else api.default_period
+        rate_hz = _round(1.0 / seconds) if seconds else None
+        self.facts.timers.append(model.TimerFact(
+            function=ctx.function, api=api.label, callback=callback,
+            period=expression_text(period) if period is not None
+            else str(api.default_period),
+            rate_hz=rate_hz, location=location))
+        self.facts.publish_sites.append(model.PublishSite(
+            function=callback, api=api.label, handle=target.get_usr(),
+            location=location))
+
+    def _on_client(self, cursor, ctx, stack, api, name, arguments):
+        service, _ = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        self.facts.clients.append(model.ClientFact(
+            function=ctx.function, api=name, name=service,
+            location=self.walker.location(cursor)))
+
+    def _on_timer(self, cursor, ctx, stack, api, name, arguments):
+        callback, _ = self.walker.resolve_callback(
+            self.walker.argument(arguments, api.callback_arg))
+        period = self.walker.argument(arguments, api.period_arg)
+        self.facts.timers.append(model.TimerFact(
+            function=ctx.function, api=ros_api.api_label(name),
+            callback=callback,
+            period=expression_text(period) if period is not None else '',
+            rate_hz=_period_rate_hz(period),
+            location=self.walker.location(cursor)))
+
+    def _on_service(self, cursor, ctx, stack, api, name, arguments):
+        argument = self.walker.argument(arguments, api.name_arg)
+        service, literal = self.walker.topic(argument)
+        callback, _ = self.walker.resolve_callback(
+            self.walker.argument(arguments, api.callback_arg))
+        fact = model.ServiceFact(
+            function=ctx.function, api=name, name=service,
+            callback=callback, location=self.walker.location(cursor))
+        self.facts.services.append(fact)
+        handle = first_handle(argument) if not literal else None
+        if handle is not None:
+            self.walker.string_variables.name_from(fact, handle.get_usr())
+
+    def _on_action_server(self, cursor, ctx, stack, api, name, arguments):
+        self._action(cursor, ctx, stack, api, name, arguments, 'server')
+
+    def _on_action_client(self, cursor, ctx, stack, api, name, arguments):
+        self._action(cursor, ctx, stack, api, name, arguments, 'client')
+
+    def _action(self, cursor, ctx, stack, api, name, arguments, role):
+        action, _ = self.walker.topic(self.walker.argument(arguments, api.name_arg)) \
+            if api.name_arg is not None else (None, False)
+        callbacks = self._callbacks(arguments, api.callback_arg) \
+            if api.callback_arg is not None else []
+        is_registration = api.name_arg is None
+        target = first_handle(call_object(cursor)) if is_registration \
+            else self.walker.target(cursor, stack)
+        self.facts.actions.append(model.ActionFact(
+            function=ctx.function, api=ros_api.api_label(name), role=role,
+            name=action, callbacks=callbacks,
+            handle=target.get_usr() if target is not None else None,
+            location=self.walker.location(cursor) if not is_registration
+            else 'registration:' + self.walker.location(cursor)))
+
+    def _on_publish(self, cursor, ctx, stack, api, name, arguments):
+        handle = first_handle(call_object(cursor))
+        self.walker.publish_site(
+            ctx, stack, cursor, name,
+            handle.get_usr() if handle is not None else None)
+
+    def _on_rate(self, cursor, ctx, stack, api, name, arguments):
+        target = self.walker.target(cursor, stack)
+        if target is None:
+            return  # a temporary Rate paces nothing
+        argument = self.walker.argument(arguments, api.period_arg)
+        rate_hz = None
+        if argument is not None:
+            if is_chrono_duration(argument.type):
+                rate_hz = _period_rate_hz(argument)
+            elif 'Duration' in argument.type.spelling:
+                rate_hz = _period_rate_hz(argument)
+            else:
+                rate_hz = evaluate_number(argument)
+        self.facts.rates.append(model.RateObject(
+            handle=target.get_usr(), rate_hz=rate_hz,
+            expression=expression_text(argument) if argument else '',
+            location=self.walker.location(cursor)))
+
+    def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
+        handle = first_handle(call_object(cursor))
+        paced = self.walker.paced_loop(ctx, cursor, handle)
+        if paced is None:
+            return
+        loop_id, loop = paced
+        self.facts.paced_loops.append(model.PacedLoop(
+            loop=loop_id, function=ctx.function,
+            rate_handle=handle.get_usr(), location=self.walker.location(loop),
+            sleep_location=self.walker.location(cursor)))
+
+    def _on_sync(self, cursor, ctx, stack, api, name, arguments):
+        inputs = []
+        for argument in arguments:
+            handle = first_handle(argument)
+            if handle is not None:
+                inputs.append(handle.get_usr())
+        if name.endswith('::connectInput'):
+            target = first_handle(call_object(cursor))
+        else:
+            target = self.walker.target(cursor, stack)
+        self.facts.syncs.append(model.SyncFact(
+            handle=target.get_usr() if target is not None else None,
+            inputs=inputs, location=self.walker.location(cursor)))
+
+    def _on_register_callback(self, cursor, ctx, stack, api, name,
+                              arguments):
+        callback, _ = self.walker.resolve_callback(
+            self.walker.argument(arguments, api.callback_arg))
+        handle = first_handle(call_object(cursor))
+        self.facts.registrations.append(model.Registration(
+            function=ctx.function,
+            handle=handle.get_usr() if handle is not None else None,
+            callback=callback, location=self.walker.location(cursor)))
+
+    def _on_node_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self.walker.target(cursor, stack)
+        if target is None:
+            return
+        namespace = ''
+        written = written_arguments(arguments)
+        named = written and is_string(written[0])
+        parent = first_handle(written[0]) if written and not named else None
+        if parent is not None:
+            namespace = 'ref:' + parent.get_usr()
+            if len(written) > 1:
+                # NodeHandle(parent, "arm"); a sub-namespace not known
+                # is marked so
+                sub, literal = self.walker.topic(written[1])
+                namespace += '|' + (
+                    sub if literal else UNKNOWN_NAMESPACE + (sub or '?'))
+        elif named:
+            # ros::NodeHandle nh("arm") / nh(real_name): a string variable
+            # set once is its literal (see StringVariables.resolve); a name
+            # not known is marked so, never taken for the node's namespace
+            namespace, literal = self.walker.topic(written[0])
+            if not literal:
+                variable = first_handle(written[0])
+                namespace = UNKNOWN_NAMESPACE + (namespace or '?')
+                if variable is not None:
+                    fact = model.NodeHandleFact(
+                        handle=target.get_usr(), namespace=namespace)
+                    self.walker.string_variables.namespace_from(
+                        fact, variable.get_usr())
+                    self.facts.node_handles.append(fact)
+                    return
+        # (ImageTransport(shared_from_this()): a node, not a namespace)
+        self.facts.node_handles.append(model.NodeHandleFact(
+            handle=target.get_usr(), namespace=namespace or ''))
+
+    def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
+        """``node->create_sub_node("arm")``: a handle in a sub-namespace."""
+        target = self.walker.target(cursor, stack)
+        sub, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        if target is None or not literal:
+            return
+        parent = self._namespace_of(cursor)
+        self.facts.node_handles.append(model.NodeHandleFact(
+            handle=target.get_usr(),
+            namespace=f'ref:{parent}|{sub}' if parent else sub))
+
+    def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self.walker.target(cursor, stack)
+        if target is not None:
+            self.facts.node_handles.append(model.NodeHandleFact(
+                handle=target.get_usr(), namespace='~'))
+
+    def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
+        target = self.walker.target(cursor, stack)
+        if target is not None:
+            self.facts.node_handles.append(model.NodeHandleFact(
+                handle=target.get_usr(), namespace=''))
+
+
+def _camera_info(topic):
+    if topic is None:
+        return None
+    head, _, _ = topic.rpartition('/')
+    return f'{head}/camera_info' if head else 'camera_info'
+
+
+_PERIOD_CLASSES = ('Duration', 'WallDuration')
+_RATE_CLASSES = ('Rate', 'WallRate')
+
+
+def _period_rate_hz(argument):
+    """Hz of a period argument (``ros::Duration(0.1)``, ``Rate(10)``, 5.0)."""
+    if argument is None:
+        return None
+    seconds = evaluate_duration_seconds(argument)
+    if seconds:
+        return _round(1.0 / seconds)
+    for current in [argument] + list(walk_preorder(argument)):
+        if current.kind == CK.CALL_EXPR and current.referenced is not None \
+                and qualified_name(current.referenced) == \
+                'rclcpp::Duration::from_seconds':
+            values = [evaluate_number(a) for a in current.get_arguments()]
+            return _round(1.0 / values[0]) if values and values[0] else None
+        if current.kind != CK.CALL_EXPR or current.referenced is None or \
+                current.referenced.kind != CK.CONSTRUCTOR:
+            continue
+        class_name = current.referenced.spelling
+        arguments = list(current.get_arguments())
+        values = [evaluate_number(a) for a in arguments]
+        if class_name in _PERIOD_CLASSES:
+            if len(values) == 1 and values[0]:
+                return _round(1.0 / values[0])
+            if len(arguments) == 1 and is_chrono_duration(arguments[0].type):
+                # rclcpp::Duration from std::chrono::milliseconds(50)
+                seconds = evaluate_duration_seconds(arguments[0])
+                return _round(1.0 / seconds) if seconds else None
+            if len(values) == 2 and None not in values:
+                seconds = values[0] + values[1] * 1e-9
+                return _round(1.0 / seconds) if seconds else None
+            return None
+        if class_name in _RATE_CLASSES and len(values) == 1:
+            return _round(values[0]) if values[0] else None
+    return None
+
+
+def _round(value):
+    # 1/0.1 is 9.999999999999998: keep the rate a person would write
+    return round(value, 6) if value is not None else None

@@ -1,0 +1,779 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""The walk of a translation unit: where it is and what code refers to.
+
+Only cursors whose file lies inside the package are walked (a TU with the
+real ROS headers has ~400k cursors; the package's own code a few thousand).
+The walker visits the package's declarations and function bodies, keeping
+the function, loops and conditions it is in (:class:`_Context`); it records
+functions, calls between them, references, lambdas and the callbacks they
+are registered as. A ROS call is recognised by the qualified name of the
+declaration it calls, looked up in :mod:`colcon_rsia.frontend.ros_api`,
+and handed to the handler of its role (:mod:`.roles`, :mod:`.clocks`);
+calls of the workspace's wrappers go to :mod:`.wrappers`. The answers the
+handlers ask for -- a name argument as written, the callback an argument
+names, the variable a created object is stored in -- are public methods
+here.
+"""
+
+import os
+import re
+
+import clang.cindex as ci
+from colcon_rsia import model
+from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp import clocks
+from colcon_rsia.frontend.cpp import roles
+from colcon_rsia.frontend.cpp import strings
+from colcon_rsia.frontend.cpp import wrappers
+from colcon_rsia.frontend.cpp.const_eval import binary_operator
+from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.cursors import call_object
+from colcon_rsia.frontend.cpp.cursors import child_cursors
+from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
+from colcon_rsia.frontend.cpp.cursors import continue_before
+from colcon_rsia.frontend.cpp.cursors import explicit_template_type
+from colcon_rsia.frontend.cpp.cursors import expression_text
+from colcon_rsia.frontend.cpp.cursors import first_function
+from colcon_rsia.frontend.cpp.cursors import first_handle
+from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
+from colcon_rsia.frontend.cpp.cursors import initializer
+from colcon_rsia.frontend.cpp.cursors import is_callable_argument
+from colcon_rsia.frontend.cpp.cursors import is_duration
+from colcon_rsia.frontend.cpp.cursors import is_logical
+from colcon_rsia.frontend.cpp.cursors import is_string
+from colcon_rsia.frontend.cpp.cursors import is_written
+from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
+from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import REF_KINDS
+from colcon_rsia.frontend.cpp.cursors import same_cursor
+from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
+from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
+from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.every_nth import every_nth
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
+from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
+from colcon_rsia.frontend.cpp.strings import unquote
+
+CK = ci.CursorKind
+
+
+class _MemberInit:
+    """Stands on the expression stack for a constructor's member init."""
+
+    kind = None
+
+    def __init__(self, member):
+        self.member = member
+
+
+def extract_facts(tu, *, package_path, source):
+    """Walk the package's own code in a parsed TU and return its facts.
+
+    :param tu: the parsed translation unit
+    :param str package_path: absolute path of the package source
+    :param str source: the TU's main file, relative to the package
+    :rtype: colcon_rsia.model.TuFacts
+    """
+    walker = _Walker(package_path, model.TuFacts(source=source))
+    walker.walk(tu)
+    walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
+    return walker.facts
+
+
+BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
+
+
+def _overload_candidate(call):
+    """The callee of a call libclang left unresolved, when unambiguous.
+
+    A broken argument (a field a stand-in lacks) leaves the call's
+    overload set unresolved; when every candidate has the same qualified
+    name, the call is still that API.
+    """
+    children = child_cursors(call)
+    if not children:
+        return None
+    for current in [children[0]] + list(walk_preorder(children[0])):
+        if current.kind != CK.OVERLOADED_DECL_REF:
+            continue
+        count = ci.conf.lib.clang_getNumOverloadedDecls(current)
+        candidates = [ci.conf.lib.clang_getOverloadedDecl(current, i)
+                      for i in range(count)]
+        names = {qualified_name(c) for c in candidates}
+        if candidates and len(names) == 1:
+            return candidates[0]
+        return None
+    return None
+
+
+def _made_class(call):
+    """The declaration of X in a ``make_shared<X>(...)`` call, or None."""
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() < 1:
+        return None
+    declaration = made.get_template_argument_type(0).get_declaration()
+    if declaration is None or declaration.kind == CK.NO_DECL_FOUND:
+        return None
+    return declaration
+
+
+class _Walker:
+    """Collects the facts of one TU; see :func:`extract_facts`."""
+
+    def __init__(self, package_path, facts):
+        self.package_path = package_path.rstrip('/') + '/'
+        self.facts = facts
+        self._in_package_cache = {}
+        # (file, offset) of expressions used as a registered callback, so
+        # that they do not also count as a plain function reference
+        self._consumed = set()
+        self._lambdas_in_variables = set()
+        self._registered = set()
+        self.ros2 = False
+        # callables stored in std::function variables/fields:
+        # {variable USR: function ids assigned to it}
+        self._callables = {}
+        # what string variables hold, resolved at the end of the walk
+        self.string_variables = strings.StringVariables(self)
+        # declarations whose walk failed: one line each, the rest goes on
+        self.problems = []
+        # the workspace's wrapper functions this unit calls
+        self._wrappers = wrappers.Summaries(self)
+        # Qt and boost::asio timers, sleep_until loops
+        self._clocks = clocks.OtherClocks(self)
+        # what each role of ros_api does to the facts
+        self._handlers = {
+            **roles.RosRoles(self).handlers(),
+            **self._clocks.handlers(),
+        }
+
+    # --- locations ---------------------------------------------------------
+
+    def in_package(self, cursor):
+        file = cursor.location.file
+        if file is None:
+            return False
+        name = file.name
+        cached = self._in_package_cache.get(name)
+        if cached is None:
+            cached = os.path.abspath(name).startswith(self.package_path)
+            self._in_package_cache[name] = cached
+        return cached
+
+    def is_workspace_declaration(self, cursor):
+        """Whether a declaration is in another package of the workspace.
+
+        Its body is the workspace's code: not a system, model or stand-in
+        header.
+        """
+        file = cursor.location.file
+        if file is None:
+            return False
+        name = os.path.abspath(file.name)
+        return not name.startswith(('/usr/', '/opt/', MODEL_HEADERS_DIR)) \
+            and '/rsia/stubs/' not in name and '/rsia_model/' not in name
+
+    def relpath(self, cursor):
+        name = os.path.abspath(cursor.location.file.name)
+        if name.startswith(self.package_path):
+            return name[len(self.package_path):]
+        return name
+
+    def location(self, cursor):
+        if cursor.location.file is None:
+            return '?:0'
+        return f'{self.relpath(cursor)}:{cursor.location.line}'
+
+    def key(self, cursor):
+        file = cursor.location.file
+        return (file.name if file else '', cursor.extent.start.offset)
+
+    def loop_id(self, cursor):
+        return f'{self.relpath(cursor)}@{cursor.extent.start.offset}'
+
+    # --- declarations ------------------------------------------------------
+
+    def walk(self, tu):
+        self.facts.plugin_exports.extend(plugin_exports(tu.spelling))
+        # a ROS 2 unit: some APIs (diagnostic_updater) keep their ROS 1
+        # names but behave differently
+        self.ros2 = any(
+            c.kind == CK.NAMESPACE and c.spelling == 'rclcpp'
+            for c in tu.cursor.get_children())
+        for cursor in tu.cursor.get_children():
+            if self.in_package(cursor):
+                self._declaration(cursor)
+        if len(self.problems) > MAX_DIAGNOSTICS_PER_TU:
+            lost = len(self.problems) - MAX_DIAGNOSTICS_PER_TU
+            del self.problems[MAX_DIAGNOSTICS_PER_TU:]
+            self.problems.append(f'... and {lost} more declarations skipped')
+        # a lambda stored in a variable and then registered as a callback
+        # is a root, not something its defining function calls
+        self.facts.calls = [
+            c for c in self.facts.calls
+            if not (c.kind == 'ref' and c.callee in self._registered and
+                    c.callee in self._lambdas_in_variables)]
+        self._clocks.finish()
+        self._resolve_stored_callbacks()
+        self.string_variables.resolve()
+
+    def _resolve_stored_callbacks(self):
+        """Replace ``callable:<usr>`` callbacks by what was stored there.
+
+        A callback kept in a ``std::function`` member is registered by
+        naming the member; the function is what the code assigned to it
+        (anywhere in the TU, before or after the registration).
+        """
+        def resolve(callback):
+            if callback and callback.startswith(CALLABLE_PREFIX):
+                stored = self._callables.get(callback[len(CALLABLE_PREFIX):])
+                return sorted(stored)[0] if stored else None
+            return callback
+        for fact in (self.facts.subscribers + self.facts.timers +
+                     self.facts.services + self.facts.registrations):
+            fact.callback = resolve(fact.callback)
+        for fact in self.facts.actions:
+            fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
+
+    def _declaration(self, cursor):
+        try:
+            kind = cursor.kind
+        except ValueError:
+            return  # a cursor kind this libclang binding does not know
+        if kind in SCOPE_KINDS:
+            if kind in CLASS_KINDS:
+                self._class_bases(cursor)
+            for child in cursor.get_children():
+                if self.in_package(child):
+                    self._declaration(child)
+            return
+        if kind in (CK.TYPEDEF_DECL, CK.TYPE_ALIAS_DECL):
+            self._class_alias(cursor)
+            return
+        # what invalid code leaves in the AST may surprise any rule below:
+        # such a declaration loses its own facts, never the unit's
+        try:
+            if kind in FUNCTION_KINDS:
+                if cursor.is_definition():
+                    self._function(cursor)
+            elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
+                self._declared_object(cursor, function=None)
+                self._initialized_string(cursor)
+        except Exception as e:  # noqa: B902
+            self.problems.append(
+                f'{self.location(cursor)}: {cursor.spelling or kind.name} '
+                f'not analysed (internal error: {type(e).__name__}: {e}); '
+                'please report it')
+
+    def _class_bases(self, cursor):
+        """Record the bases of a package class (a plugin inherits methods)."""
+        name = qualified_name(cursor)
+        for child in cursor.get_children():
+            if child.kind != CK.CXX_BASE_SPECIFIER:
+                continue
+            base = child.type.get_declaration()
+            if base is not None and base.kind != CK.NO_DECL_FOUND:
+                base_name = qualified_name(base)
+            else:
+                base_name = re.sub(r'<.*', '', child.type.spelling)
+            if base_name and [name, base_name] not in self.facts.class_bases:
+                self.facts.class_bases.append([name, base_name])
+
+    def _class_alias(self, cursor):
+        """``typedef Controller<Iface> JointController;`` names a class."""
+        target = cursor.underlying_typedef_type.get_canonical()
+        declaration = target.get_declaration()
+        if declaration is None or declaration.kind not in CLASS_KINDS:
+            return
+        # a template's specialisation has the template's qualified name
+        self.facts.class_aliases.append(
+            [qualified_name(cursor), qualified_name(declaration)])
+
+    def _class_id(self, cursor):
+        parent = cursor.semantic_parent
+        if parent is not None and parent.kind in CLASS_KINDS:
+            return parent.get_usr()
+        return None
+
+    def _function(self, cursor):
+        fid = cursor.get_usr()
+        self.facts.functions.append(model.Function(
+            id=fid, name=qualified_name(cursor),
+            location=self.location(cursor),
+            class_id=self._class_id(cursor),
+            params=[c.get_usr() for c in cursor.get_children()
+                    if c.kind == CK.PARM_DECL]))
+        parent = cursor.semantic_parent
+        ctx = _Context(fid, owner=parent if parent is not None and
+                       parent.kind in CLASS_KINDS else None)
+        pending_member = None
+        for child in cursor.get_children():
+            if child.kind == CK.MEMBER_REF:
+                pending_member = child.referenced
+                continue
+            if child.kind in (CK.PARM_DECL, CK.TYPE_REF, CK.NAMESPACE_REF,
+                              CK.TEMPLATE_REF, CK.TEMPLATE_TYPE_PARAMETER,
+                              CK.TEMPLATE_NON_TYPE_PARAMETER):
+                continue
+            stack = [_MemberInit(pending_member)] if pending_member else []
+            if pending_member is not None and _is_callable(pending_member):
+                self._store_callable(pending_member, child)
+            if pending_member is not None:
+                self.string_variables.assignment(pending_member, child)
+            self._visit(child, ctx, stack)
+            pending_member = None
+
+    def _declared_object(self, cursor, function):
+        """A variable or field whose type makes it a publisher/listener."""
+        if cursor.type.kind in (ci.TypeKind.LVALUEREFERENCE,
+                                ci.TypeKind.RVALUEREFERENCE):
+            return
+        spellings = cursor.type.spelling + ' ' + \
+            cursor.type.get_canonical().spelling
+        for class_name, api in ros_api.DECLARED.items():
+            if not re.search(
+                    r'(?<![\w:])' + re.escape(class_name) + r'(?!\w)',
+                    spellings):
+                continue
+            class_id = self._class_id(cursor) if function is None else None
+            for topic in api.implicit_topics:
+                common = dict(
+                    function=function, api=class_name, topic=topic,
+                    topic_is_literal=True,
+                    msg_type=self.table_msg_type(api.msg_type),
+                    handle=cursor.get_usr(), location=self.location(cursor),
+                    class_id=class_id)
+                if api.role == ros_api.DECLARED_PUBLISHER:
+                    self.facts.publishers.append(model.PublisherFact(
+                        handle_name=cursor.spelling, **common))
+                else:
+                    self.facts.subscribers.append(model.SubscriberFact(
+                        callback=None, **common))
+            return
+
+    # --- function bodies ---------------------------------------------------
+
+    def _visit(self, cursor, ctx, stack):
+        kind = cursor.kind
+        if kind == CK.LAMBDA_EXPR:
+            self._lambda(cursor, ctx)
+            return
+        if kind == CK.CALL_EXPR:
+            self._call(cursor, ctx, stack)
+        elif kind in REF_KINDS:
+            self._reference(cursor, ctx, stack)
+        elif kind == CK.VAR_DECL:
+            self._declared_object(cursor, ctx.function)
+            self._copied_handle(cursor)
+            self._initialized_string(cursor)
+            init = initializer(cursor)
+            if init is not None and init.kind == CK.LAMBDA_EXPR:
+                self._lambdas_in_variables.add(self._lambda_id(init))
+            elif init is not None and _is_callable(cursor):
+                self._store_callable(cursor, init)
+        children = child_cursors(cursor)
+        stack.append(cursor)
+        if kind in LOOP_KINDS:
+            ctx.loops.append((self.loop_id(cursor), ctx.conditional, cursor))
+            for child in children:
+                self._visit(child, ctx, stack)
+            ctx.loops.pop()
+        elif children and (
+                kind in (CK.IF_STMT, CK.SWITCH_STMT, CK.CONDITIONAL_OPERATOR,
+                         CK.CXX_TRY_STMT) or
+                kind == CK.BINARY_OPERATOR and is_logical(cursor, children)):
+            # the condition (the try block, the left operand) runs every
+            # time; the branches (the handlers, the right operand) may not
+            self._visit(children[0], ctx, stack)
+            ctx.conditional += 1
+            for child in children[1:]:
+                self._visit(child, ctx, stack)
+            ctx.conditional -= 1
+        else:
+            for child in children:
+                self._visit(child, ctx, stack)
+        stack.pop()
+
+    def _initialized_string(self, variable):
+        init = initializer(variable)
+        if init is not None:
+            self.string_variables.assignment(variable, init)
+
+    def _copied_handle(self, variable):
+        """``auto pub = pub_;``: the local copy publishes through `pub_`.
+
+        So do ``std::weak_ptr<P> weak = pub_;`` and ``auto p = weak.lock();``.
+        """
+        init = initializer(variable)
+        if init is None:
+            return
+        tokens = [t.spelling for t in source_tokens(init)]
+        # a weak_ptr's lock() or a smart pointer's get() is the same object
+        if tokens[-4:] in (['.', 'lock', '(', ')'], ['.', 'get', '(', ')']):
+            tokens = tokens[:-4]
+        # only a plain name (this->pub_, self.pub_): no call, no index
+        if not tokens or any(t in ('(', '[', '{') for t in tokens):
+            return
+        handle = first_handle(init)
+        # the package's own handles: not the fields of a message
+        if handle is not None and handle != variable and \
+                self.in_package(handle):
+            self.facts.handle_aliases.append(model.HandleAlias(
+                alias=variable.get_usr(), handle=handle.get_usr(),
+                location=self.location(variable)))
+
+    def _lambda_id(self, cursor):
+        loc = cursor.location
+        return f'lambda@{self.relpath(cursor)}:{loc.line}:{loc.column}'
+
+    def _lambda(self, cursor, ctx):
+        lid = self._lambda_id(cursor)
+        self.facts.functions.append(model.Function(
+            id=lid, name=f'lambda@{self.location(cursor)}',
+            location=self.location(cursor),
+            class_id=None,
+            params=[c.get_usr() for c in cursor.get_children()
+                    if c.kind == CK.PARM_DECL]))
+        if self.key(cursor) not in self._consumed:
+            self._add_call(ctx, lid, cursor, kind='ref')
+        inner = _Context(lid, owner=ctx.owner)
+        for child in cursor.get_children():
+            if child.kind == CK.COMPOUND_STMT:
+                self._visit(child, inner, [])
+
+    def _add_call(self, ctx, callee, cursor, kind='call'):
+        self.facts.calls.append(model.Call(
+            caller=ctx.function, callee=callee,
+            location=self.location(cursor), loops=ctx.loop_ids(), kind=kind))
+
+    def _reference(self, cursor, ctx, stack):
+        """A function named but not called here: it may be called later."""
+        ref = cursor.referenced
+        if ref is None or ref.kind not in FUNCTION_KINDS or \
+                not self.in_package(ref):
+            return
+        if self.key(cursor) in self._consumed:
+            return
+        for parent in stack[-2:]:
+            if getattr(parent, 'kind', None) == CK.CALL_EXPR and \
+                    same_cursor(parent.referenced, ref):
+                return  # the callee of a call, counted by _call
+        self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
+
+    def _store_callable(self, variable, expression):
+        """Remember what a std::function variable/field is set to."""
+        callback, _ = self.resolve_callback(expression)
+        if callback and not callback.startswith(CALLABLE_PREFIX):
+            self._callables.setdefault(variable.get_usr(), set()).add(
+                callback)
+
+    def _call(self, cursor, ctx, stack):
+        ref = cursor.referenced
+        if ref is None:
+            ref = _overload_candidate(cursor)
+        if ref is None:
+            self._dependent_call(cursor, ctx, stack)
+            return
+        if cursor.spelling == 'operator=':
+            children = child_cursors(cursor)
+            target = first_handle(children[0]) if children else None
+            if target is not None and _is_callable(target):
+                self._store_callable(target, children[-1])
+            elif target is not None and len(children) > 1:
+                self.string_variables.assignment(target, children[-1])
+        if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+            self._add_call(ctx, ref.get_usr(), cursor)
+            self._bind_arguments(ref.get_usr(), cursor.get_arguments(),
+                                 caller=ctx.function)
+            return
+        name = qualified_name(ref)
+        api = ros_api.lookup_call(name)
+        arguments = None
+        if api is None and name in ros_api.FORWARDING_FACTORIES:
+            self._forwarded_package_constructor(cursor, ctx)
+            name, api = self._forwarded_constructor(cursor)
+        if api is None:
+            if ref.kind in FUNCTION_KINDS and \
+                    self.is_workspace_declaration(ref):
+                self._wrappers.record_call(cursor, ctx, stack, ref)
+            return
+        arguments = list(cursor.get_arguments())
+        self._handlers[api.role](cursor, ctx, stack, api, name, arguments)
+
+    def _dependent_call(self, cursor, ctx, stack):
+        """``node->template create_publisher<M>(...)`` in a template.
+
+        On an object of a template parameter's type (``NodeT node``) the
+        call resolves only when the template is instantiated, which the
+        AST does not show: the endpoint-creating methods are recognised by
+        their name (see ros_api.DEPENDENT_METHODS).
+        """
+        name = self.dependent_call_name(cursor)
+        if name is None:
+            return
+        api = ros_api.lookup_call(name)
+        self._handlers[api.role](
+            cursor, ctx, stack, api, name, list(cursor.get_arguments()))
+
+    def dependent_call_name(self, cursor):
+        """The API a call on a template-dependent object names, or None."""
+        children = child_cursors(cursor)
+        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
+            return None
+        # a dependent member has no spelling: the name follows `.`/`->`
+        tokens = [t.spelling for t in source_tokens(children[0])]
+        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
+        if not accesses:
+            return None
+        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
+        if not rest:
+            return None
+        return ros_api.dependent_method(rest[0], ros2=self.ros2)
+
+    def publish_site(self, ctx, stack, cursor, api, handle):
+        self.facts.publish_sites.append(model.PublishSite(
+            function=ctx.function, api=api, handle=handle,
+            location=self.location(cursor), loops=ctx.loop_ids(),
+            every=every_nth(stack + [cursor])))
+
+    def _forwarded_package_constructor(self, cursor, ctx):
+        """make_shared<C>(args) of a package class calls C's constructor.
+
+        The constructor taking as many arguments, else the one with the
+        fewest more (defaulted) parameters: what the arguments bind to,
+        such as the node name a subclass of rclcpp::Node receives
+        (``std::make_shared<Talker>("talker")``).
+        """
+        declaration = _made_class(cursor)
+        if declaration is None or not self.in_package(declaration):
+            return
+        arguments = list(cursor.get_arguments())
+        candidates = []
+        for constructor in declaration.get_children():
+            # a constructor template (`template <class NodeT> C(NodeT)`)
+            if constructor.kind != CK.CONSTRUCTOR and not (
+                    constructor.kind == CK.FUNCTION_TEMPLATE and
+                    constructor.spelling == declaration.spelling):
+                continue
+            extra = sum(1 for p in constructor.get_children()
+                        if p.kind == CK.PARM_DECL) - len(arguments)
+            if extra >= 0:
+                candidates.append((extra, len(candidates), constructor))
+        if candidates:
+            constructor = min(candidates)[2]
+            self._add_call(ctx, constructor.get_usr(), cursor)
+            self._bind_arguments(constructor.get_usr(), arguments,
+                                 caller=ctx.function)
+
+    def _forwarded_constructor(self, cursor):
+        """make_shared<X>(args) reads like X's constructor.
+
+        X is read from the type made (``shared_ptr<X>``), so that an alias
+        (``using Sync = message_filters::Synchronizer<P>``) and a template
+        argument of X do not hide it.
+        """
+        declaration = _made_class(cursor)
+        if declaration is not None:
+            class_name = qualified_name(declaration)
+        else:
+            class_name = explicit_template_type(cursor)
+        if not class_name:
+            return None, None
+        class_name = re.sub(r'<.*', '', class_name).strip()
+        class_name = re.sub(r'^(?:class|struct)\s+', '', class_name)
+        short = class_name.split('::')[-1]
+        name = f'{class_name}::{short}'
+        return name, ros_api.lookup_call(name)
+
+    # --- argument helpers --------------------------------------------------
+
+    def topic(self, argument):
+        """Return (topic as written, is it a literal)."""
+        if argument is None:
+            return None, False
+        literals = []
+        has_variable = False
+        for current in [argument] + list(walk_preorder(argument)):
+            if current.kind == CK.STRING_LITERAL:
+                literals.append(current)
+            elif current.kind in REF_KINDS and current.referenced is not None \
+                    and current.referenced.kind in HANDLE_KINDS:
+                has_variable = True
+            elif current.kind == CK.CALL_EXPR and \
+                    current.referenced is not None and \
+                    current.referenced.kind in VALUE_FUNCTION_KINDS:
+                # get_parameter("topic").as_string(): a value, not a name
+                has_variable = True
+        if len(literals) == 1 and not has_variable:
+            text = literals[0].spelling
+            return unquote(text), True
+        text = expression_text(argument)
+        return (text or None), False
+
+    def argument(self, arguments, position):
+        by_type = {
+            ros_api.FIRST_STRING: is_string,
+            ros_api.FIRST_CALLABLE: is_callable_argument,
+            ros_api.FIRST_DURATION: is_duration,
+        }.get(position)
+        if by_type is not None:
+            return next((a for a in arguments if by_type(a)), None)
+        if isinstance(position, int) and position < len(arguments):
+            argument = arguments[position]
+            return argument if is_written(argument) else None
+        return None
+
+    def _bind_arguments(self, callee, arguments, first_index=0,
+                        caller=None):
+        """Record what a call passes to a package function's parameters.
+
+        Handles, and string literals (a node name passed to a base class).
+        """
+        for index, argument in enumerate(arguments, start=first_index):
+            if caller is not None and is_string(argument):
+                value, literal = self.topic(argument)
+                if literal:
+                    self.facts.string_arguments.append(model.StringArgument(
+                        caller=caller, callee=callee, index=index,
+                        value=value))
+                    continue
+            handle = first_handle(argument)
+            if handle is not None and self.in_package(handle):
+                self.facts.bindings.append(model.ParamBinding(
+                    callee=callee, index=index, handle=handle.get_usr()))
+
+    def _bound_arguments(self, argument):
+        """Handles bound by boost::bind / std::bind to the callback."""
+        for current in [argument] + list(walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind != CK.CALL_EXPR or current.referenced is None or \
+                    qualified_name(current.referenced) not in BIND_FUNCTIONS:
+                continue
+            bound = list(current.get_arguments())
+            if not bound:
+                return
+            target = first_function(bound[0])
+            if target is None or not self.in_package(target):
+                return
+            rest = bound[1:]
+            # a bound method's first argument is the object, not a parameter
+            if target.kind == CK.CXX_METHOD and not target.is_static_method():
+                rest = rest[1:]
+            self._bind_arguments(target.get_usr(), rest)
+            return
+
+    def resolve_callback(self, argument):
+        """Return (function id, declaration cursor) of a callback argument."""
+        if argument is None:
+            return None, None
+        self._bound_arguments(argument)
+        for current in [argument] + list(walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind == CK.LAMBDA_EXPR:
+                self._consumed.add(self.key(current))
+                lid = self._lambda_id(current)
+                self._registered.add(lid)
+                return lid, current
+            if current.kind not in REF_KINDS:
+                continue
+            ref = current.referenced
+            if ref is None:
+                continue
+            if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+                self._consumed.add(self.key(current))
+                self._registered.add(ref.get_usr())
+                return ref.get_usr(), ref
+            if ref.kind == CK.VAR_DECL:
+                for child in ref.get_children():
+                    if child.kind == CK.LAMBDA_EXPR:
+                        lid = self._lambda_id(child)
+                        self._registered.add(lid)
+                        return lid, child
+            if ref.kind in HANDLE_KINDS and _is_callable(ref):
+                # resolved at the end of the walk: see _resolve_stored_callbacks
+                return CALLABLE_PREFIX + ref.get_usr(), None
+        return None, None
+
+    def target(self, cursor, stack):
+        """The variable/field a created object is stored in, or None."""
+        start = cursor.extent.start.offset
+        for parent in reversed(stack):
+            if isinstance(parent, _MemberInit):
+                return parent.member
+            kind = parent.kind
+            if kind == CK.VAR_DECL:
+                return parent
+            if kind in STATEMENT_KINDS:
+                return None
+            if kind == CK.CALL_EXPR:
+                children = child_cursors(parent)
+                if parent.spelling == 'operator=' and children:
+                    return first_handle(children[0])
+                obj = call_object(parent)
+                if obj is not None and obj.extent.end.offset <= start:
+                    # x.reset(new ...), v.push_back(nh.advertise(...))
+                    return first_handle(obj)
+            if kind == CK.BINARY_OPERATOR:
+                children = child_cursors(parent)
+                if children and binary_operator(parent, children[0]) == '=':
+                    return first_handle(children[0])
+        return None
+
+    def table_msg_type(self, msg_type):
+        """A message type the API table spells the ROS 1 way, for this unit.
+
+        ROS 2 spells ``sensor_msgs::Image`` as ``sensor_msgs::msg::Image``.
+        """
+        if not msg_type or not self.ros2 or '::msg::' in msg_type:
+            return msg_type
+        package, _, name = msg_type.partition('::')
+        return f'{package}::msg::{name}'
+
+    def paced_loop(self, ctx, sleep, clock):
+        """(loop id, loop cursor) a sleep on `clock` paces, or None.
+
+        It paces its innermost loop when it runs on every iteration and
+        its clock (a Rate, a deadline) outlives the iteration.
+        """
+        if clock is None or not ctx.loops:
+            return None
+        loop_id, conditional_at_entry, loop = ctx.loops[-1]
+        if ctx.conditional != conditional_at_entry:
+            return None  # a sleep that may be skipped does not pace
+        if continue_before(loop, sleep):
+            return None  # an iteration may end before the sleep
+        declared = clock.extent.start
+        if declared.file is not None and loop.extent.start.file is not None \
+                and declared.file.name == loop.extent.start.file.name and \
+                loop.extent.start.offset <= declared.offset \
+                <= loop.extent.end.offset:
+            return None  # a clock made anew in every iteration never adapts
+        return loop_id, loop
+
+
+class _Context:
+    """Where the walk is inside one function body."""
+
+    def __init__(self, function, owner=None):
+        self.function = function
+        # the class of a method (a lambda's: its enclosing method's)
+        self.owner = owner
+        # (loop id, conditional depth at the loop, loop cursor)
+        self.loops = []
+        self.conditional = 0
+
+    def loop_ids(self):
+        return [loop_id for loop_id, _, _ in self.loops]
+
+
+CALLABLE_PREFIX = 'callable:'
+_CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
+
+
+def _is_callable(cursor):
+    """A variable/field holding a callable: std::function, bind results."""
+    return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))
