@@ -199,11 +199,8 @@ class OtherClocks:
             handle=deadline.get_usr(),
             rate_hz=_hz(_period_seconds(step, 1.0)), expression=expression_text(step),
             location=self.walker.location(step)))
-        self.walker.facts.paced_loops.append(model.PacedLoop(
-            loop=loop_id, function=ctx.function,
-            rate_handle=deadline.get_usr(),
-            location=self.walker.location(loop),
-            sleep_location=self.walker.location(cursor)))
+        self.walker.record_paced_loop(
+            ctx, loop_id=loop_id, loop=loop, clock=deadline, sleep=cursor)
 
     # --- the end of the unit -----------------------------------------------
 

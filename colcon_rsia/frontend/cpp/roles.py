@@ -486,10 +486,8 @@ class RosRoles:
         if paced is None:
             return
         loop_id, loop = paced
-        self.facts.paced_loops.append(model.PacedLoop(
-            loop=loop_id, function=ctx.function,
-            rate_handle=handle.get_usr(), location=self.walker.location(loop),
-            sleep_location=self.walker.location(cursor)))
+        self.walker.record_paced_loop(
+            ctx, loop_id=loop_id, loop=loop, clock=handle, sleep=cursor)
 
     def _on_sync(self, cursor, ctx, stack, api, name, arguments):
         inputs = []

@@ -5,7 +5,8 @@
 Only cursors whose file lies inside the package are walked (a TU with the
 real ROS headers has ~400k cursors; the package's own code a few thousand).
 The walker visits the package's declarations and function bodies, keeping
-the function, loops and conditions it is in (:class:`_Context`); it records
+the function, loops and conditions it is in (a recorder's
+:class:`~colcon_rsia.frontend.recorder.Context`); it records
 functions, calls between them, references, lambdas and the callbacks they
 are registered as. A ROS call is recognised by the qualified name of the
 declaration it calls, looked up in :mod:`colcon_rsia.frontend.ros_api`,
@@ -21,6 +22,7 @@ import re
 
 import clang.cindex as ci
 from colcon_rsia import model
+from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import clocks
 from colcon_rsia.frontend.cpp import roles
@@ -308,8 +310,9 @@ class _Walker:
             params=[c.get_usr() for c in cursor.get_children()
                     if c.kind == CK.PARM_DECL]))
         parent = cursor.semantic_parent
-        ctx = _Context(fid, owner=parent if parent is not None and
-                       parent.kind in CLASS_KINDS else None)
+        owner = parent if parent is not None and \
+            parent.kind in CLASS_KINDS else None
+        ctx = recorder.Context(fid, owner=owner)
         pending_member = None
         for child in cursor.get_children():
             if child.kind == CK.MEMBER_REF:
@@ -378,10 +381,9 @@ class _Walker:
         children = child_cursors(cursor)
         stack.append(cursor)
         if kind in LOOP_KINDS:
-            ctx.loops.append((self.loop_id(cursor), ctx.conditional, cursor))
-            for child in children:
-                self._visit(child, ctx, stack)
-            ctx.loops.pop()
+            with ctx.loop(self.loop_id(cursor), cursor):
+                for child in children:
+                    self._visit(child, ctx, stack)
         elif children and (
                 kind in (CK.IF_STMT, CK.SWITCH_STMT, CK.CONDITIONAL_OPERATOR,
                          CK.CXX_TRY_STMT) or
@@ -389,10 +391,9 @@ class _Walker:
             # the condition (the try block, the left operand) runs every
             # time; the branches (the handlers, the right operand) may not
             self._visit(children[0], ctx, stack)
-            ctx.conditional += 1
-            for child in children[1:]:
-                self._visit(child, ctx, stack)
-            ctx.conditional -= 1
+            with ctx.branch():
+                for child in children[1:]:
+                    self._visit(child, ctx, stack)
         else:
             for child in children:
                 self._visit(child, ctx, stack)
@@ -440,7 +441,7 @@ class _Walker:
                     if c.kind == CK.PARM_DECL]))
         if self.key(cursor) not in self._consumed:
             self._add_call(ctx, lid, cursor, kind='ref')
-        inner = _Context(lid, owner=ctx.owner)
+        inner = recorder.Context(lid, owner=ctx.owner)
         for child in cursor.get_children():
             if child.kind == CK.COMPOUND_STMT:
                 self._visit(child, inner, [])
@@ -736,38 +737,30 @@ class _Walker:
     def paced_loop(self, ctx, sleep, clock):
         """(loop id, loop cursor) a sleep on `clock` paces, or None.
 
-        It paces its innermost loop when it runs on every iteration and
-        its clock (a Rate, a deadline) outlives the iteration.
+        The rule is the recorder's (:func:`recorder.paced_loop`); this
+        answers its questions about the C++ syntax.
         """
-        if clock is None or not ctx.loops:
+        if clock is None:
             return None
-        loop_id, conditional_at_entry, loop = ctx.loops[-1]
-        if ctx.conditional != conditional_at_entry:
-            return None  # a sleep that may be skipped does not pace
-        if continue_before(loop, sleep):
-            return None  # an iteration may end before the sleep
-        declared = clock.extent.start
-        if declared.file is not None and loop.extent.start.file is not None \
-                and declared.file.name == loop.extent.start.file.name and \
-                loop.extent.start.offset <= declared.offset \
-                <= loop.extent.end.offset:
-            return None  # a clock made anew in every iteration never adapts
-        return loop_id, loop
+        return recorder.paced_loop(
+            ctx, continue_before=lambda loop: continue_before(loop, sleep),
+            made_in_loop=lambda loop: _declared_in(clock, loop))
+
+    def record_paced_loop(self, ctx, *, loop_id, loop, clock, sleep):
+        """Record that `loop` runs at the pace of the `clock` handle."""
+        recorder.record_paced_loop(
+            self.facts, ctx, loop_id=loop_id, clock=clock.get_usr(),
+            loop_location=self.location(loop),
+            sleep_location=self.location(sleep))
 
 
-class _Context:
-    """Where the walk is inside one function body."""
-
-    def __init__(self, function, owner=None):
-        self.function = function
-        # the class of a method (a lambda's: its enclosing method's)
-        self.owner = owner
-        # (loop id, conditional depth at the loop, loop cursor)
-        self.loops = []
-        self.conditional = 0
-
-    def loop_ids(self):
-        return [loop_id for loop_id, _, _ in self.loops]
+def _declared_in(declaration, loop):
+    """Whether a declaration lies inside a loop's source range."""
+    declared = declaration.extent.start
+    return declared.file is not None and \
+        loop.extent.start.file is not None and \
+        declared.file.name == loop.extent.start.file.name and \
+        loop.extent.start.offset <= declared.offset <= loop.extent.end.offset
 
 
 CALLABLE_PREFIX = 'callable:'
