@@ -355,6 +355,8 @@ CALLS = {
     # at that period (see frontend/clocks.py)
     'std::this_thread::sleep_until': Api(DEADLINE_SLEEP),
     'boost::this_thread::sleep_until': Api(DEADLINE_SLEEP),
+    # ROS 2's clock (Jazzy+): sleeps until a rclcpp::Time
+    'rclcpp::Clock::sleep_until': Api(DEADLINE_SLEEP),
     # nodelet handles
     'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),

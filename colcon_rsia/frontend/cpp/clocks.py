@@ -32,9 +32,9 @@ import re
 import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.cpp.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
-from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
+from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
+from colcon_rsia.frontend.cpp.const_eval import hz_of
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -51,11 +51,6 @@ QT_TIMEOUT_SIGNAL = 'QTimer::timeout'
 QT_TIMER_EVENT = 'timerEvent'
 _SLOT_MACRO = re.compile(r'\bSLOT\s*\(\s*(\w+)\s*\(')
 _SIGNAL_MACRO = re.compile(r'\bSIGNAL\s*\(\s*(\w+)\s*\(')
-# boost::posix_time durations: class name -> seconds per count
-_POSIX_DURATIONS = {
-    'hours': 3600.0, 'minutes': 60.0, 'seconds': 1.0,
-    'milliseconds': 1e-3, 'microseconds': 1e-6,
-}
 
 
 @dataclass
@@ -142,7 +137,7 @@ class OtherClocks:
         if seconds is None and _is_time_point(period):
             return  # an absolute deadline says nothing of a period
         self._periods.setdefault(timer.get_usr(), set()).add(
-            (expression_text(period), _hz(seconds)))
+            (expression_text(period), hz_of(seconds)))
 
     def _on_single_shot(self, cursor, ctx, stack, api, name, arguments):
         timer = first_handle(call_object(cursor))
@@ -164,7 +159,7 @@ class OtherClocks:
         self.walker.facts.timers.append(model.TimerFact(
             function=ctx.function, api=name, callback=method.get_usr(),
             period=expression_text(period) if period is not None else '',
-            rate_hz=_hz(seconds), location=self.walker.location(cursor)))
+            rate_hz=hz_of(seconds), location=self.walker.location(cursor)))
 
     # --- boost::asio ---------------------------------------------------------
 
@@ -197,7 +192,7 @@ class OtherClocks:
             return  # a deadline that never moves
         self.walker.facts.rates.append(model.RateObject(
             handle=deadline.get_usr(),
-            rate_hz=_hz(_period_seconds(step, 1.0)), expression=expression_text(step),
+            rate_hz=hz_of(_period_seconds(step, 1.0)), expression=expression_text(step),
             location=self.walker.location(step)))
         self.walker.record_paced_loop(
             ctx, loop_id=loop_id, loop=loop, clock=deadline, sleep=cursor)
@@ -245,11 +240,6 @@ class OtherClocks:
         rates = {hz for _, hz in periods}
         text = ' | '.join(written for written, _ in periods)
         return text, rates.pop() if len(rates) == 1 else None
-
-
-def _hz(seconds):
-    # 1/0.1 is 9.999999999999998: keep the rate a person would write
-    return round(1.0 / seconds, 6) if seconds else None
 
 
 def _is_timeout(signal, written):
@@ -303,17 +293,16 @@ def _called_functions(lambda_expression):
 def _period_seconds(argument, unit):
     """Seconds of a period argument, or None when not a constant.
 
-    A std::chrono or boost::posix_time duration, a bare number counting
-    `unit` seconds, or the duration added to a time point
-    (``expires_at(expiry() + 50ms)``).
+    A duration of any clock library, a bare number counting `unit`
+    seconds, or the duration added to a time point (``expires_at(expiry()
+    + 50ms)``).
     """
-    if is_chrono_duration(argument.type):
-        return evaluate_duration_seconds(argument)
     added = _added_duration(argument)
     if added is not None:
         return _period_seconds(added, unit)
-    if 'posix_time' in argument.type.get_canonical().spelling:
-        return _posix_seconds(argument)
+    seconds = evaluate_period_seconds(argument)
+    if seconds is not None:
+        return seconds
     value = evaluate_number(argument)
     return value * unit if value is not None else None
 
@@ -332,21 +321,6 @@ def _added_duration(expression):
 def _is_time_point(argument):
     canonical = argument.type.get_canonical().spelling
     return 'time_point' in canonical or 'ptime' in canonical
-
-
-def _posix_seconds(argument):
-    """Seconds of ``boost::posix_time::seconds(2)`` and its kin."""
-    for current in [argument] + list(walk_preorder(argument)):
-        if current.kind != CK.CALL_EXPR or current.referenced is None or \
-                current.referenced.kind != CK.CONSTRUCTOR:
-            continue
-        unit = _POSIX_DURATIONS.get(current.referenced.spelling)
-        # (the real constructors take a defaulted enable_if argument too)
-        arguments = list(current.get_arguments())
-        count = evaluate_number(arguments[0]) if arguments else None
-        if unit is not None and count is not None:
-            return count * unit
-    return None
 
 
 def _advance(loop, deadline):

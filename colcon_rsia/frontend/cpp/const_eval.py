@@ -339,3 +339,67 @@ def evaluate_duration_seconds(cursor, depth=0):
         # implicit conversions, parentheses, temporaries
         return evaluate_duration_seconds(children[0], depth + 1)
     return None
+
+
+# classes made of (seconds), (seconds, nanoseconds) or a std::chrono
+# duration: ros::Duration, ros::WallDuration, rclcpp::Duration
+_PERIOD_CLASSES = ('Duration', 'WallDuration')
+# boost::posix_time durations: class name -> seconds per count
+_POSIX_DURATIONS = {
+    'hours': 3600.0, 'minutes': 60.0, 'seconds': 1.0,
+    'milliseconds': 1e-3, 'microseconds': 1e-6,
+}
+
+
+def evaluate_period_seconds(cursor):
+    """Seconds of a constant period of any clock library, or None.
+
+    std::chrono durations, ``ros::Duration(0.1)``, ``rclcpp::Duration(s,
+    ns)`` or from a chrono duration, ``rclcpp::Duration::from_seconds(x)``
+    and ``boost::posix_time::seconds(2)`` and its kin; the first duration
+    made in the expression decides.
+    """
+    if cursor is None:
+        return None
+    seconds = evaluate_duration_seconds(cursor)
+    if seconds:
+        return seconds
+    for current in cursor.walk_preorder():
+        referenced = current.referenced \
+            if current.kind == CK.CALL_EXPR else None
+        if referenced is None:
+            continue
+        arguments = list(current.get_arguments())
+        parent = referenced.semantic_parent
+        if referenced.spelling == 'from_seconds' and parent is not None and \
+                parent.spelling == 'Duration':
+            return evaluate_number(arguments[0]) if arguments else None
+        if referenced.kind != CK.CONSTRUCTOR:
+            continue
+        name = referenced.spelling
+        if name in _POSIX_DURATIONS:
+            # (the real constructors take a defaulted enable_if argument)
+            count = evaluate_number(arguments[0]) if arguments else None
+            return count * _POSIX_DURATIONS[name] \
+                if count is not None else None
+        if name in _PERIOD_CLASSES:
+            return _period_object_seconds(arguments)
+    return None
+
+
+def _period_object_seconds(arguments):
+    values = [evaluate_number(a) for a in arguments]
+    if len(values) == 1 and values[0]:
+        return values[0]
+    if len(arguments) == 1 and is_chrono_duration(arguments[0].type):
+        # rclcpp::Duration from std::chrono::milliseconds(50)
+        return evaluate_duration_seconds(arguments[0])
+    if len(values) == 2 and None not in values:
+        return values[0] + values[1] * 1e-9
+    return None
+
+
+def hz_of(seconds):
+    """The rate of a period, as a person would write it (None for none)."""
+    # 1/0.1 is 9.999999999999998
+    return round(1.0 / seconds, 6) if seconds else None

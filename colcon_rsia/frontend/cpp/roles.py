@@ -16,8 +16,9 @@ import re
 import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.cpp.const_eval import evaluate_duration_seconds
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
+from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
+from colcon_rsia.frontend.cpp.const_eval import hz_of
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
@@ -395,7 +396,7 @@ class RosRoles:
         period = self.walker.argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
-        rate_hz = _round(1.0 / seconds) if seconds else None
+        rate_hz = hz_of(seconds)
         self.facts.timers.append(model.TimerFact(
             function=ctx.function, api=api.label, callback=callback,
             period=expression_text(period) if period is not None
@@ -579,7 +580,6 @@ def _camera_info(topic):
     return f'{head}/camera_info' if head else 'camera_info'
 
 
-_PERIOD_CLASSES = ('Duration', 'WallDuration')
 _RATE_CLASSES = ('Rate', 'WallRate')
 
 
@@ -587,33 +587,17 @@ def _period_rate_hz(argument):
     """Hz of a period argument (``ros::Duration(0.1)``, ``Rate(10)``, 5.0)."""
     if argument is None:
         return None
-    seconds = evaluate_duration_seconds(argument)
+    seconds = evaluate_period_seconds(argument)
     if seconds:
-        return _round(1.0 / seconds)
+        return hz_of(seconds)
+    # a Rate given where a period goes: its Hz
     for current in [argument] + list(walk_preorder(argument)):
-        if current.kind == CK.CALL_EXPR and current.referenced is not None \
-                and qualified_name(current.referenced) == \
-                'rclcpp::Duration::from_seconds':
-            values = [evaluate_number(a) for a in current.get_arguments()]
-            return _round(1.0 / values[0]) if values and values[0] else None
         if current.kind != CK.CALL_EXPR or current.referenced is None or \
-                current.referenced.kind != CK.CONSTRUCTOR:
+                current.referenced.kind != CK.CONSTRUCTOR or \
+                current.referenced.spelling not in _RATE_CLASSES:
             continue
-        class_name = current.referenced.spelling
-        arguments = list(current.get_arguments())
-        values = [evaluate_number(a) for a in arguments]
-        if class_name in _PERIOD_CLASSES:
-            if len(values) == 1 and values[0]:
-                return _round(1.0 / values[0])
-            if len(arguments) == 1 and is_chrono_duration(arguments[0].type):
-                # rclcpp::Duration from std::chrono::milliseconds(50)
-                seconds = evaluate_duration_seconds(arguments[0])
-                return _round(1.0 / seconds) if seconds else None
-            if len(values) == 2 and None not in values:
-                seconds = values[0] + values[1] * 1e-9
-                return _round(1.0 / seconds) if seconds else None
-            return None
-        if class_name in _RATE_CLASSES and len(values) == 1:
+        values = [evaluate_number(a) for a in current.get_arguments()]
+        if len(values) == 1:
             return _round(values[0]) if values[0] else None
     return None
 

@@ -8,6 +8,9 @@
 //   rate_loop 2 Hz
 // - heartbeat, from a loop paced by sleep_for: no adaptive rate, and the node
 //   subscribes, so dependent
+// - status, from a loop sleeping on the node's clock until a deadline it
+//   advances by rclcpp::Duration::from_seconds(0.25) every pass: rate_loop
+//   4 Hz
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -33,6 +36,7 @@ public:
     temperature_pub_ = create_publisher<sensor_msgs::msg::Temperature>("temperature", 10);
     summary_pub_ = create_publisher<std_msgs::msg::String>("summary", 10);
     heartbeat_pub_ = create_publisher<std_msgs::msg::Empty>("heartbeat", 1);
+    status_pub_ = create_publisher<std_msgs::msg::String>("status", 1);
     mode_sub_ = create_subscription<std_msgs::msg::String>(
       "mode", 10,
       [this](std_msgs::msg::String::ConstSharedPtr msg) {fast_ = msg->data == "fast";});
@@ -41,6 +45,7 @@ public:
     imu_thread_ = std::thread([this]() {imuLoop();});
     temperature_thread_ = std::thread(&RateLoops::temperatureLoop, this);
     heartbeat_thread_ = std::thread(&RateLoops::heartbeatLoop, this);
+    status_thread_ = std::thread(&RateLoops::statusLoop, this);
   }
 
   ~RateLoops() override
@@ -49,6 +54,7 @@ public:
     imu_thread_.join();
     temperature_thread_.join();
     heartbeat_thread_.join();
+    status_thread_.join();
   }
 
   void publishSummary()
@@ -98,17 +104,29 @@ private:
     }
   }
 
+  void statusLoop()
+  {
+    auto next = get_clock()->now();
+    while (rclcpp::ok()) {
+      next = next + rclcpp::Duration::from_seconds(0.25);
+      status_pub_->publish(std_msgs::msg::String());
+      get_clock()->sleep_until(next);
+    }
+  }
+
   std::atomic<bool> fast_{false};
   rclcpp::Publisher<sensor_msgs::msg::BatteryState>::SharedPtr battery_pub_;
   rclcpp::Publisher<sensor_msgs::msg::Imu>::SharedPtr imu_pub_;
   rclcpp::Publisher<sensor_msgs::msg::Temperature>::SharedPtr temperature_pub_;
   rclcpp::Publisher<std_msgs::msg::String>::SharedPtr summary_pub_;
   rclcpp::Publisher<std_msgs::msg::Empty>::SharedPtr heartbeat_pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr status_pub_;
   rclcpp::Subscription<std_msgs::msg::String>::SharedPtr mode_sub_;
   std::thread battery_thread_;
   std::thread imu_thread_;
   std::thread temperature_thread_;
   std::thread heartbeat_thread_;
+  std::thread status_thread_;
 };
 
 int main(int argc, char ** argv)
