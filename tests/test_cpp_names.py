@@ -154,3 +154,64 @@ def test_a_nodehandle_given_as_an_argument_sets_the_namespace(tmp_path):
         ('imu', '~')]
     assert [(p.topic, p.namespace) for p in node.publishers] == [
         ('level', '')]
+
+
+HELPERS_OF_THE_PACKAGE = r"""
+#include <ros/ros.h>
+#include <std_msgs/Empty.h>
+#include <std_msgs/String.h>
+#include <memory>
+#include <string>
+#include <utility>
+
+// a helper class that subscribes with what its user gives it
+class CommandInput
+{
+public:
+  template <typename CallbackT>
+  CommandInput(ros::NodeHandle& nh, const std::string& topic,
+               CallbackT&& callback)
+  {
+    sub_ = nh.subscribe<std_msgs::String>(
+        topic, 1, std::forward<CallbackT>(callback));
+  }
+
+private:
+  ros::Subscriber sub_;
+};
+
+void advertiseStatus(ros::NodeHandle& nh, const std::string& name,
+                     ros::Publisher& out)
+{
+  out = nh.advertise<std_msgs::Empty>(name, 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "commander");
+  ros::NodeHandle nh;
+  ros::Publisher echo = nh.advertise<std_msgs::String>("echo", 1);
+  auto input = std::make_unique<CommandInput>(
+      nh, "commands",
+      [&echo](const std_msgs::String::ConstPtr& msg) { echo.publish(*msg); });
+  ros::Publisher status;
+  advertiseStatus(nh, "status", status);
+  ros::spin();
+}
+"""
+
+
+def test_helpers_of_the_package_take_what_their_callers_pass(tmp_path):
+    # the topic and the callback are parameters of the helper: the one
+    # call in the unit gives "commands" and the lambda of main (line 38)
+    summary = analyse_source(tmp_path, 'commander', HELPERS_OF_THE_PACKAGE)
+    [node] = summary.nodes
+    assert [(s.topic, s.topic_is_literal, s.callback)
+            for s in node.subscribers] == [
+        ('commands', True, 'lambda@src/commander.cpp:38')]
+    assert sorted((p.topic, p.topic_is_literal)
+                  for p in node.publishers) == [
+        ('echo', True), ('status', True)]
+    # echo is published from the subscription's callback
+    echo = next(p for p in node.publishers if p.topic == 'echo')
+    assert echo.label == 'dependent'

@@ -53,6 +53,32 @@ class NodeFacts:
     host_roots: Dict[str, str] = field(default_factory=dict)
 
 
+def _most_resolved(endpoints):
+    """Each call site as resolved as one of the units saw it.
+
+    A helper in a header (a subscription made from its parameters) is
+    walked by every unit that includes it; those that also see its callers
+    resolve the topic and callback they pass, the others keep the
+    parameter's name: those copies go where a resolved one exists.
+    """
+    sites = {}
+    for endpoint in endpoints:
+        sites.setdefault(
+            (endpoint.function, endpoint.location, endpoint.api), []).append(
+                endpoint)
+    kept = []
+    for endpoint in endpoints:
+        others = sites[(endpoint.function, endpoint.location, endpoint.api)]
+        if not endpoint.topic_is_literal and \
+                any(o.topic_is_literal for o in others):
+            continue
+        if getattr(endpoint, 'callback', True) is None and any(
+                o.callback for o in others if o.topic == endpoint.topic):
+            continue
+        kept.append(endpoint)
+    return kept
+
+
 def unique(items):
     """Drop repeated facts (a header's functions appear in every TU)."""
     seen = set()
@@ -126,8 +152,10 @@ def node_facts(facts, function_ids):
     result = NodeFacts(functions=functions)
     result.calls = unique(
         c for c in facts.calls if c.caller in functions)
-    result.publishers = unique(p for p in facts.publishers if owned(p))
-    result.subscribers = unique(s for s in facts.subscribers if owned(s))
+    result.publishers = _most_resolved(
+        unique(p for p in facts.publishers if owned(p)))
+    result.subscribers = _most_resolved(
+        unique(s for s in facts.subscribers if owned(s)))
     result.timers = unique(t for t in facts.timers if owned(t))
     result.services = unique(s for s in facts.services if owned(s))
     result.actions = unique(a for a in facts.actions if owned(a))

@@ -465,9 +465,9 @@ class _Walker:
                 return  # the callee of a call, counted by _call
         self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
 
-    def _store_callable(self, variable, expression):
+    def _store_callable(self, variable, expression, consume=True):
         """Remember what a std::function variable/field is set to."""
-        callback, _ = self.resolve_callback(expression)
+        callback, _ = self.resolve_callback(expression, consume=consume)
         if callback and not callback.startswith(CALLABLE_PREFIX):
             self._callables.setdefault(variable.get_usr(), set()).add(
                 callback)
@@ -490,6 +490,7 @@ class _Walker:
             self._add_call(ctx, ref.get_usr(), cursor)
             self._bind_arguments(ref.get_usr(), cursor.get_arguments(),
                                  caller=ctx.function)
+            self._bind_parameters(ref, list(cursor.get_arguments()))
             return
         name = qualified_name(ref)
         api = ros_api.lookup_call(name)
@@ -569,6 +570,27 @@ class _Walker:
             self._add_call(ctx, constructor.get_usr(), cursor)
             self._bind_arguments(constructor.get_usr(), arguments,
                                  caller=ctx.function)
+            self._bind_parameters(constructor, arguments)
+
+    def _bind_parameters(self, callee, arguments):
+        """A package function's parameters hold what its callers pass.
+
+        A helper that makes a subscription from its parameters
+        (``TwistSubscriber(node, "cmd_vel", qos, callback)``) gets its
+        topic as a string variable set by the callers (one literal in
+        every call of the unit: that name) and its callback as a stored
+        callable; the argument stays a plain reference of the caller.
+        """
+        definition = callee.get_definition() or callee
+        params = [c for c in definition.get_children()
+                  if c.kind == CK.PARM_DECL]
+        for param, argument in zip(params, arguments):
+            if not is_written(argument):
+                continue
+            if is_string(param):
+                self.string_variables.assignment(param, argument)
+            elif is_callable_argument(argument):
+                self._store_callable(param, argument, consume=False)
 
     def _forwarded_constructor(self, cursor):
         """make_shared<X>(args) reads like X's constructor.
@@ -667,17 +689,22 @@ class _Walker:
             self._bind_arguments(target.get_usr(), rest)
             return
 
-    def resolve_callback(self, argument):
-        """Return (function id, declaration cursor) of a callback argument."""
+    def resolve_callback(self, argument, consume=True):
+        """Return (function id, declaration cursor) of a callback argument.
+
+        With `consume`, the argument is registered with an API: it is a
+        root of its own, not something the calling function calls.
+        """
         if argument is None:
             return None, None
         self._bound_arguments(argument)
         for current in [argument] + list(walk_preorder(
                 argument, stop=frozenset({CK.LAMBDA_EXPR}))):
             if current.kind == CK.LAMBDA_EXPR:
-                self._consumed.add(self.key(current))
                 lid = self._lambda_id(current)
-                self._registered.add(lid)
+                if consume:
+                    self._consumed.add(self.key(current))
+                    self._registered.add(lid)
                 return lid, current
             if current.kind not in REF_KINDS:
                 continue
@@ -685,8 +712,9 @@ class _Walker:
             if ref is None:
                 continue
             if ref.kind in FUNCTION_KINDS and self.in_package(ref):
-                self._consumed.add(self.key(current))
-                self._registered.add(ref.get_usr())
+                if consume:
+                    self._consumed.add(self.key(current))
+                    self._registered.add(ref.get_usr())
                 return ref.get_usr(), ref
             if ref.kind == CK.VAR_DECL:
                 for child in ref.get_children():
@@ -694,8 +722,11 @@ class _Walker:
                         lid = self._lambda_id(child)
                         self._registered.add(lid)
                         return lid, child
-            if ref.kind in HANDLE_KINDS and _is_callable(ref):
-                # resolved at the end of the walk: see _resolve_stored_callbacks
+            if ref.kind in HANDLE_KINDS and _is_callable(ref) or \
+                    ref.kind == CK.PARM_DECL:
+                # resolved at the end of the walk: see
+                # _resolve_stored_callbacks (a parameter: what the callers
+                # pass, see _bind_parameters)
                 return CALLABLE_PREFIX + ref.get_usr(), None
         return None, None
 
