@@ -101,9 +101,12 @@ def executables_from_codemodel(cmake_build_dir):
     for target in targets.values():
         if target.get('type') != 'EXECUTABLE':
             continue
+        # generated sources (moc's, a parameter library's) are the build's,
+        # not code of the package
         sources = [
             os.path.normpath(os.path.join(source_dir, s['path']))
-            for s in target.get('sources', []) if 'path' in s]
+            for s in target.get('sources', [])
+            if 'path' in s and not s.get('isGenerated')]
         sources = [s for s in sources if is_cxx_source(s)]
         if not sources:
             continue
