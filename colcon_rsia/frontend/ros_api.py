@@ -161,6 +161,18 @@ def _asio_timer(timer_class):
     }
 
 
+def _polling_subscriber(polling_class):
+    """A polling subscriber: an input the node reads when it runs.
+
+    It has no callback: (node, topic, qos) to the constructor or to the
+    static create_subscription.
+    """
+    short = polling_class.rsplit('::', 1)[1]
+    api = Api(SUBSCRIBER, name_arg=FIRST_STRING, label=polling_class)
+    return {f'{polling_class}::{short}': api,
+            f'{polling_class}::create_subscription': api}
+
+
 IT = 'image_transport::ImageTransport::'
 
 CALLS = {
@@ -357,6 +369,10 @@ CALLS = {
     'boost::this_thread::sleep_until': Api(DEADLINE_SLEEP),
     # ROS 2's clock (Jazzy+): sleeps until a rclcpp::Time
     'rclcpp::Clock::sleep_until': Api(DEADLINE_SLEEP),
+    # Autoware's utilities (a library outside Autoware's source workspace)
+    **_polling_subscriber('autoware_utils::InterProcessPollingSubscriber'),
+    **_polling_subscriber(
+        'autoware::universe_utils::InterProcessPollingSubscriber'),
     # nodelet handles
     'nodelet::Nodelet::getNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),

@@ -63,6 +63,12 @@ from colcon_rsia.frontend.cpp.strings import unquote
 CK = ci.CursorKind
 
 
+# the children of a field that are no part of its initializer
+_NOT_INITIALIZERS = frozenset({
+    CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF, CK.MEMBER_REF,
+    CK.ANNOTATE_ATTR, CK.VISIBILITY_ATTR})
+
+
 class _MemberInit:
     """Stands on the expression stack for a constructor's member init."""
 
@@ -265,6 +271,8 @@ class _Walker:
             elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
                 self._declared_object(cursor, function=None)
                 self._initialized_string(cursor)
+                if kind == CK.FIELD_DECL:
+                    self._member_initializer(cursor)
         except Exception as e:  # noqa: B902
             self.problems.append(
                 f'{self.location(cursor)}: {cursor.spelling or kind.name} '
@@ -300,6 +308,28 @@ class _Walker:
         if parent is not None and parent.kind in CLASS_KINDS:
             return parent.get_usr()
         return None
+
+    def _member_initializer(self, field):
+        """``Poller<M> odom_{this, "odom"};``: what a constructor runs.
+
+        A default member initializer runs in every constructor of the
+        class that does not set the member itself; it is walked as part
+        of the first constructor the class declares (none declared: no
+        function of the package runs it).
+        """
+        owner = field.semantic_parent
+        constructor = next(
+            (c for c in owner.get_children() if c.kind == CK.CONSTRUCTOR),
+            None) if owner is not None else None
+        if constructor is None:
+            return
+        ctx = recorder.Context(constructor.get_usr(), owner=owner)
+        for child in field.get_children():
+            if child.kind in _NOT_INITIALIZERS:
+                continue
+            if _is_callable(field):
+                self._store_callable(field, child)
+            self._visit(child, ctx, [_MemberInit(field)])
 
     def _function(self, cursor):
         fid = cursor.get_usr()
@@ -493,6 +523,9 @@ class _Walker:
             self._bind_parameters(ref, list(cursor.get_arguments()))
             return
         name = qualified_name(ref)
+        if name.startswith(REPAIRED_PREFIX) or \
+                ref.spelling == REPAIRED_CONSTRUCTOR:
+            name = _repaired_call_name(cursor, ref) or name
         api = ros_api.lookup_call(name)
         arguments = None
         if api is None and name in ros_api.FORWARDING_FACTORIES:
@@ -795,6 +828,45 @@ def _declared_in(declaration, loop):
 
 
 CALLABLE_PREFIX = 'callable:'
+# what the model mode's repairs declare an unknown library's classes and
+# members with (model_headers/rsia_model/message.h)
+REPAIRED_PREFIX = 'rsia_model::'
+# the constructor the repaired classes inherit (`using Unknown::Unknown`)
+REPAIRED_CONSTRUCTOR = 'Unknown'
+
+
+def _repaired_call_name(call, ref):
+    """The API a call into a repaired stand-in names, as written.
+
+    A class of a library that is neither installed nor modelled is
+    declared by the repairs as a ``rsia_model::Unknown`` whose members are
+    ``rsia_model::Any`` objects: ``Poller<M>::create_subscription(...)``
+    then calls ``Any::operator()`` and ``Poller<M>{node, "t"}`` the
+    inherited ``Unknown`` constructor. The name the code wrote
+    (``ns::Poller::create_subscription``, ``ns::Poller::Poller``) is what
+    the API table knows.
+    """
+    if ref.kind in (CK.CONSTRUCTOR, CK.FUNCTION_TEMPLATE) and \
+            ref.spelling == REPAIRED_CONSTRUCTOR:
+        made = call.type.get_canonical().get_declaration()
+        if made is None or made.kind not in CLASS_KINDS or \
+                qualified_name(made).startswith(REPAIRED_PREFIX):
+            return None
+        return f'{qualified_name(made)}::{made.spelling}'
+    if ref.spelling != 'operator()':
+        return None
+    for current in walk_preorder(call):
+        if current.kind in REF_KINDS:
+            member = current.referenced
+            if member is not None and member.kind in (
+                    CK.VAR_DECL, CK.FIELD_DECL) and \
+                    member.semantic_parent is not None and \
+                    member.semantic_parent.kind in CLASS_KINDS:
+                return qualified_name(member)
+            return None
+    return None
+
+
 _CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
 
 

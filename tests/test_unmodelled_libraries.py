@@ -1,0 +1,71 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""APIs of a library that is neither installed nor modelled.
+
+The model mode's repairs declare such a library's classes from clang's
+errors; a call the API table names is still read by the name the code
+wrote. Expectations written by hand from the code below.
+"""
+
+from conftest import analyse_source
+
+POLLING = r"""
+#include <chrono>
+#include <memory>
+
+#include <autoware_utils/ros/polling_subscriber.hpp>
+#include <nav_msgs/msg/odometry.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Poller : public rclcpp::Node
+{
+public:
+  Poller()
+  : Node("poller")
+  {
+    kinematics_ = autoware_utils::InterProcessPollingSubscriber<
+      nav_msgs::msg::Odometry>::create_subscription(
+      this, "~/input/kinematics", 1);
+    pub_ = create_publisher<std_msgs::msg::String>("out", 1);
+    timer_ = create_wall_timer(std::chrono::milliseconds(100), [this]() {
+        auto kinematics = kinematics_->take_data();
+        auto odometry = odometry_.take_data();
+        pub_->publish(std_msgs::msg::String());
+      });
+  }
+
+private:
+  autoware_utils::InterProcessPollingSubscriber<nav_msgs::msg::Odometry>::
+  SharedPtr kinematics_;
+  // a default member initializer: run by the constructor
+  autoware_utils::InterProcessPollingSubscriber<nav_msgs::msg::Odometry>
+  odometry_{this, "~/input/odometry"};
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Poller>());
+}
+"""
+
+
+def test_polling_subscribers_of_an_unmodelled_library_are_inputs(tmp_path):
+    summary = analyse_source(tmp_path, 'poller', POLLING)
+    [node] = summary.nodes
+    # both forms: the static create_subscription and the constructor of
+    # a member; a polling subscription calls nothing
+    assert sorted((s.topic, s.msg_type, s.api, s.callback)
+                  for s in node.subscribers) == [
+        ('~/input/kinematics', 'nav_msgs::msg::Odometry',
+         'autoware_utils::InterProcessPollingSubscriber', None),
+        ('~/input/odometry', 'nav_msgs::msg::Odometry',
+         'autoware_utils::InterProcessPollingSubscriber', None),
+    ]
+    # the data are taken in the 100 ms timer: its rate, not the inputs'
+    [out] = node.publishers
+    assert (out.topic, out.label, out.pattern, out.rate_hz) == \
+        ('out', 'independent', 'timer', 10.0)
