@@ -273,3 +273,85 @@ def continue_before(loop, sleep):
             continue  # an inner loop's continue is its own
         todo.extend(child_cursors(current))
     return False
+
+
+def overload_candidate(call):
+    """The callee of a call libclang left unresolved, when unambiguous.
+
+    A broken argument (a field a stand-in lacks) leaves the call's
+    overload set unresolved; when every candidate has the same qualified
+    name, the call is still that API.
+    """
+    children = child_cursors(call)
+    if not children:
+        return None
+    for current in [children[0]] + list(walk_preorder(children[0])):
+        if current.kind != CK.OVERLOADED_DECL_REF:
+            continue
+        count = ci.conf.lib.clang_getNumOverloadedDecls(current)
+        candidates = [ci.conf.lib.clang_getOverloadedDecl(current, i)
+                      for i in range(count)]
+        names = {qualified_name(c) for c in candidates}
+        if candidates and len(names) == 1:
+            return candidates[0]
+        return None
+    return None
+
+
+def made_class(call):
+    """The declaration of X in a ``make_shared<X>(...)`` call, or None."""
+    made = call.type.get_canonical()
+    if made.get_num_template_arguments() < 1:
+        return None
+    declaration = made.get_template_argument_type(0).get_declaration()
+    if declaration is None or declaration.kind == CK.NO_DECL_FOUND:
+        return None
+    return declaration
+
+
+def declared_in(declaration, loop):
+    """Whether a declaration lies inside a loop's source range."""
+    declared = declaration.extent.start
+    return declared.file is not None and \
+        loop.extent.start.file is not None and \
+        declared.file.name == loop.extent.start.file.name and \
+        loop.extent.start.offset <= declared.offset <= loop.extent.end.offset
+
+
+# what the model mode's repairs declare an unknown library's classes and
+# members with (model_headers/rsia_model/message.h)
+REPAIRED_PREFIX = 'rsia_model::'
+# the constructor the repaired classes inherit (`using Unknown::Unknown`)
+REPAIRED_CONSTRUCTOR = 'Unknown'
+
+
+def repaired_call_name(call, ref):
+    """The API a call into a repaired stand-in names, as written.
+
+    A class of a library that is neither installed nor modelled is
+    declared by the repairs as a ``rsia_model::Unknown`` whose members are
+    ``rsia_model::Any`` objects: ``Poller<M>::create_subscription(...)``
+    then calls ``Any::operator()`` and ``Poller<M>{node, "t"}`` the
+    inherited ``Unknown`` constructor. The name the code wrote
+    (``ns::Poller::create_subscription``, ``ns::Poller::Poller``) is what
+    the API table knows.
+    """
+    if ref.kind in (CK.CONSTRUCTOR, CK.FUNCTION_TEMPLATE) and \
+            ref.spelling == REPAIRED_CONSTRUCTOR:
+        made = call.type.get_canonical().get_declaration()
+        if made is None or made.kind not in CLASS_KINDS or \
+                qualified_name(made).startswith(REPAIRED_PREFIX):
+            return None
+        return f'{qualified_name(made)}::{made.spelling}'
+    if ref.spelling != 'operator()':
+        return None
+    for current in walk_preorder(call):
+        if current.kind in REF_KINDS:
+            member = current.referenced
+            if member is not None and member.kind in (
+                    CK.VAR_DECL, CK.FIELD_DECL) and \
+                    member.semantic_parent is not None and \
+                    member.semantic_parent.kind in CLASS_KINDS:
+                return qualified_name(member)
+            return None
+    return None

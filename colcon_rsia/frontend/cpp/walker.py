@@ -34,6 +34,7 @@ from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cpp.cursors import continue_before
+from colcon_rsia.frontend.cpp.cursors import declared_in
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_function
@@ -47,8 +48,13 @@ from colcon_rsia.frontend.cpp.cursors import is_logical
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
+from colcon_rsia.frontend.cpp.cursors import made_class
+from colcon_rsia.frontend.cpp.cursors import overload_candidate
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
+from colcon_rsia.frontend.cpp.cursors import repaired_call_name
+from colcon_rsia.frontend.cpp.cursors import REPAIRED_CONSTRUCTOR
+from colcon_rsia.frontend.cpp.cursors import REPAIRED_PREFIX
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
 from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
@@ -93,40 +99,6 @@ def extract_facts(tu, *, package_path, source):
 
 
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
-
-
-def _overload_candidate(call):
-    """The callee of a call libclang left unresolved, when unambiguous.
-
-    A broken argument (a field a stand-in lacks) leaves the call's
-    overload set unresolved; when every candidate has the same qualified
-    name, the call is still that API.
-    """
-    children = child_cursors(call)
-    if not children:
-        return None
-    for current in [children[0]] + list(walk_preorder(children[0])):
-        if current.kind != CK.OVERLOADED_DECL_REF:
-            continue
-        count = ci.conf.lib.clang_getNumOverloadedDecls(current)
-        candidates = [ci.conf.lib.clang_getOverloadedDecl(current, i)
-                      for i in range(count)]
-        names = {qualified_name(c) for c in candidates}
-        if candidates and len(names) == 1:
-            return candidates[0]
-        return None
-    return None
-
-
-def _made_class(call):
-    """The declaration of X in a ``make_shared<X>(...)`` call, or None."""
-    made = call.type.get_canonical()
-    if made.get_num_template_arguments() < 1:
-        return None
-    declaration = made.get_template_argument_type(0).get_declaration()
-    if declaration is None or declaration.kind == CK.NO_DECL_FOUND:
-        return None
-    return declaration
 
 
 class _Walker:
@@ -505,7 +477,7 @@ class _Walker:
     def _call(self, cursor, ctx, stack):
         ref = cursor.referenced
         if ref is None:
-            ref = _overload_candidate(cursor)
+            ref = overload_candidate(cursor)
         if ref is None:
             self._dependent_call(cursor, ctx, stack)
             return
@@ -525,7 +497,7 @@ class _Walker:
         name = qualified_name(ref)
         if name.startswith(REPAIRED_PREFIX) or \
                 ref.spelling == REPAIRED_CONSTRUCTOR:
-            name = _repaired_call_name(cursor, ref) or name
+            name = repaired_call_name(cursor, ref) or name
         api = ros_api.lookup_call(name)
         arguments = None
         if api is None and name in ros_api.FORWARDING_FACTORIES:
@@ -583,7 +555,7 @@ class _Walker:
         such as the node name a subclass of rclcpp::Node receives
         (``std::make_shared<Talker>("talker")``).
         """
-        declaration = _made_class(cursor)
+        declaration = made_class(cursor)
         if declaration is None or not self.in_package(declaration):
             return
         arguments = list(cursor.get_arguments())
@@ -632,7 +604,7 @@ class _Walker:
         (``using Sync = message_filters::Synchronizer<P>``) and a template
         argument of X do not hide it.
         """
-        declaration = _made_class(cursor)
+        declaration = made_class(cursor)
         if declaration is not None:
             class_name = qualified_name(declaration)
         else:
@@ -808,7 +780,7 @@ class _Walker:
             return None
         return recorder.paced_loop(
             ctx, continue_before=lambda loop: continue_before(loop, sleep),
-            made_in_loop=lambda loop: _declared_in(clock, loop))
+            made_in_loop=lambda loop: declared_in(clock, loop))
 
     def record_paced_loop(self, ctx, *, loop_id, loop, clock, sleep):
         """Record that `loop` runs at the pace of the `clock` handle."""
@@ -818,55 +790,7 @@ class _Walker:
             sleep_location=self.location(sleep))
 
 
-def _declared_in(declaration, loop):
-    """Whether a declaration lies inside a loop's source range."""
-    declared = declaration.extent.start
-    return declared.file is not None and \
-        loop.extent.start.file is not None and \
-        declared.file.name == loop.extent.start.file.name and \
-        loop.extent.start.offset <= declared.offset <= loop.extent.end.offset
-
-
 CALLABLE_PREFIX = 'callable:'
-# what the model mode's repairs declare an unknown library's classes and
-# members with (model_headers/rsia_model/message.h)
-REPAIRED_PREFIX = 'rsia_model::'
-# the constructor the repaired classes inherit (`using Unknown::Unknown`)
-REPAIRED_CONSTRUCTOR = 'Unknown'
-
-
-def _repaired_call_name(call, ref):
-    """The API a call into a repaired stand-in names, as written.
-
-    A class of a library that is neither installed nor modelled is
-    declared by the repairs as a ``rsia_model::Unknown`` whose members are
-    ``rsia_model::Any`` objects: ``Poller<M>::create_subscription(...)``
-    then calls ``Any::operator()`` and ``Poller<M>{node, "t"}`` the
-    inherited ``Unknown`` constructor. The name the code wrote
-    (``ns::Poller::create_subscription``, ``ns::Poller::Poller``) is what
-    the API table knows.
-    """
-    if ref.kind in (CK.CONSTRUCTOR, CK.FUNCTION_TEMPLATE) and \
-            ref.spelling == REPAIRED_CONSTRUCTOR:
-        made = call.type.get_canonical().get_declaration()
-        if made is None or made.kind not in CLASS_KINDS or \
-                qualified_name(made).startswith(REPAIRED_PREFIX):
-            return None
-        return f'{qualified_name(made)}::{made.spelling}'
-    if ref.spelling != 'operator()':
-        return None
-    for current in walk_preorder(call):
-        if current.kind in REF_KINDS:
-            member = current.referenced
-            if member is not None and member.kind in (
-                    CK.VAR_DECL, CK.FIELD_DECL) and \
-                    member.semantic_parent is not None and \
-                    member.semantic_parent.kind in CLASS_KINDS:
-                return qualified_name(member)
-            return None
-    return None
-
-
 _CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
 
 
