@@ -25,8 +25,11 @@ ALLOWED = {
     'environment_variables': set(),
     # reading files of an untrusted workspace: for every layer
     'safe_files': {'environment_variables'},
-    'frontend': {'model', 'environment_variables', 'safe_files'},
-    'launch': {'safe_files'},
+    # the arithmetic of Python expressions: for both readers of Python
+    'python_arithmetic': set(),
+    'frontend': {'model', 'environment_variables', 'safe_files',
+                 'python_arithmetic'},
+    'launch': {'safe_files', 'python_arithmetic'},
     'package': {'model', 'frontend', 'environment_variables', 'safe_files'},
     'system': {'model', 'launch', 'package.store', 'safe_files'},
     'report': {'model', 'system', 'package.store', 'safe_files'},

@@ -17,6 +17,7 @@ import ast
 import builtins
 import os
 
+from colcon_rsia import python_arithmetic
 from colcon_rsia.launch import safe_eval
 from colcon_rsia.launch.common import location
 from colcon_rsia.launch.ir import Action
@@ -292,7 +293,7 @@ class Interpreter(Statements, Expressions, LibraryCalls):
         if isinstance(op, ast.Pow):
             if abs(right) > MAX_POWER if isinstance(right, (int, float)) else True:
                 return self.unknown(node, 'power not interpreted')
-        function = _BINARY.get(type(op))
+        function = python_arithmetic.OPERATORS.get(type(op))
         if function is None:
             return self.unknown(node, 'operator not interpreted')
         try:
@@ -316,15 +317,5 @@ class Interpreter(Statements, Expressions, LibraryCalls):
         return self.unknown(node, f'call of a {type(func).__name__} not '
                             'interpreted')
 
-
-_BINARY = {
-    ast.Add: lambda a, b: a + b,
-    ast.Sub: lambda a, b: a - b,
-    ast.Mult: lambda a, b: a * b,
-    ast.Div: lambda a, b: a / b,
-    ast.FloorDiv: lambda a, b: a // b,
-    ast.Mod: lambda a, b: a % b,
-    ast.Pow: lambda a, b: a ** b,
-}
 
 _PYTHON_BUILTINS = frozenset(dir(builtins))

@@ -11,9 +11,9 @@ Python's ``eval``.
 """
 
 import ast
-import math
 import operator
 
+from colcon_rsia import python_arithmetic
 from colcon_rsia.launch.notes import shorten
 
 
@@ -27,21 +27,8 @@ MAX_EXPRESSION_LENGTH = 2000
 # nesting depth of the evaluated tree: expressions nest a few levels; at
 # two Python frames a level the stack stays well below its limit of 1000
 MAX_DEPTH = 100
-# longest string an expression may build ('x' * 10 ** 9 must not run)
-MAX_STRING_LENGTH = 100000
-# largest magnitude of a number an expression may build: about the largest
-# float, beyond which arithmetic overflows or big integers get slow
-MAX_NUMBER = 10 ** 308
-
-_BINARY = {
-    ast.Add: operator.add,
-    ast.Sub: operator.sub,
-    ast.Mult: operator.mul,
-    ast.Div: operator.truediv,
-    ast.FloorDiv: operator.floordiv,
-    ast.Mod: operator.mod,
-    ast.Pow: operator.pow,
-}
+# the strings and numbers an expression may build: the limits of
+# colcon_rsia.python_arithmetic, shared with the Python front end
 
 _COMPARE = {
     ast.Eq: operator.eq,
@@ -92,13 +79,10 @@ def to_text(value):
 
 
 def _check(value):
-    if isinstance(value, str) and len(value) > MAX_STRING_LENGTH:
-        raise Unresolved('the expression builds a string that is too long')
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        if isinstance(value, float) and math.isnan(value):
-            return value
-        if abs(value) > MAX_NUMBER:
-            raise Unresolved('the expression builds a number that is too large')
+    try:
+        python_arithmetic.check(value)
+    except python_arithmetic.Refused as e:
+        raise Unresolved(str(e))
     if not isinstance(value, _SCALARS):
         raise Unresolved('the expression builds an unsupported value')
     return value
@@ -130,7 +114,7 @@ class _Evaluator:
         return self.lookup(node.id)
 
     def _bin_op(self, node, depth):
-        if type(node.op) not in _BINARY:
+        if type(node.op) not in python_arithmetic.OPERATORS:
             raise Unresolved('operator not supported in expressions')
         left = self.eval(node.left, depth)
         right = self.eval(node.right, depth)
@@ -211,7 +195,7 @@ _NODE_HANDLERS = {
 
 
 def binary(op, left, right):
-    """``left <op> right`` of two scalars, within the limits above.
+    """``left <op> right`` of two scalars (:mod:`colcon_rsia.python_arithmetic`).
 
     The one arithmetic of launch files: ``$(eval …)``,
     ``PythonExpression`` and the Python launch interpreter use it.
@@ -220,36 +204,7 @@ def binary(op, left, right):
     :raises Unresolved: an operator not supported, a value too large, or
       an operation that fails
     """
-    function = _BINARY.get(type(op))
-    if function is None:
-        raise Unresolved('operator not supported in expressions')
-    if isinstance(op, ast.Mod) and isinstance(left, str):
-        raise Unresolved('string formatting is not supported')
-    if isinstance(op, ast.Mult):
-        _check_repeat(left, right)
-        _check_repeat(right, left)
-    if isinstance(op, ast.Pow):
-        _check_power(left, right)
     try:
-        return _check(function(left, right))
-    except (TypeError, ValueError, ArithmeticError) as e:
-        raise Unresolved(f'the expression fails: {e}')
-
-
-def _check_repeat(text, count):
-    if isinstance(text, str) and isinstance(count, int):
-        if count > 0 and len(text) * count > MAX_STRING_LENGTH:
-            raise Unresolved('the expression builds a string that is too long')
-
-
-def _check_power(base, exponent):
-    if not all(isinstance(v, (int, float)) for v in (base, exponent)):
-        return
-    if base in (0, 1, -1) or exponent == 0:
-        return
-    try:
-        magnitude = abs(float(exponent)) * math.log10(abs(float(base)))
-    except (OverflowError, ValueError):
-        raise Unresolved('the power is too large')
-    if magnitude > 308:
-        raise Unresolved('the power is too large')
+        return python_arithmetic.binary(op, left, right)
+    except python_arithmetic.Refused as e:
+        raise Unresolved(str(e))

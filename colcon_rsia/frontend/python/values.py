@@ -9,6 +9,7 @@ import ast
 import re
 import string
 
+from colcon_rsia import python_arithmetic
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend.python.scopes import load_module
 from colcon_rsia.frontend.python.scopes import lookup
@@ -608,26 +609,14 @@ class Project:
 
 
 def _arithmetic(op, left, right):
+    """A number from two, by the rules and limits launch files have too."""
     if left is None or right is None:
         return None
     try:
-        if isinstance(op, ast.Add):
-            return left + right
-        if isinstance(op, ast.Sub):
-            return left - right
-        if isinstance(op, ast.Mult):
-            return left * right
-        if isinstance(op, ast.Div):
-            return left / right
-        if isinstance(op, ast.FloorDiv):
-            return left // right
-        if isinstance(op, ast.Mod):
-            return left % right
-        if isinstance(op, ast.Pow) and abs(right) <= 64:
-            return left ** right
-    except (ArithmeticError, ValueError, TypeError):
+        value = python_arithmetic.binary(op, left, right)
+    except python_arithmetic.Refused:
         return None
-    return None
+    return value if isinstance(value, (int, float)) else None
 
 
 def round_number(value):
