@@ -100,6 +100,9 @@ class OtherClocks:
         written = expression_text(cursor)
         if sender is None or not _is_timeout(arguments[1], written):
             return
+        sender_class = _class_of(arguments[0])
+        if sender_class is None or qualified_name(sender_class) != 'QTimer':
+            return  # another class's timeout() signal is no clock
         callback = self._slot(arguments, written)
         if callback is None:
             return
