@@ -40,7 +40,7 @@ SUB_NODE = 'sub_node'              # returns a handle in a sub-namespace
 CLIENT = 'client'                  # a service client
 # publishes from a timer of its own (ROS 2 diagnostic_updater::Updater)
 TIMED_PUBLISHER = 'timed_publisher'
-# clocks beyond ROS (see frontend/clocks.py)
+# clocks beyond ROS (see frontend/cpp/clocks.py)
 SIGNAL_CONNECT = 'signal_connect'  # QObject::connect: a QTimer's timeout()
 TIMER_PERIOD = 'timer_period'      # sets the period of a timer object
 TIMER_SINGLE_SHOT = 'timer_single_shot'  # a QTimer that fires once
@@ -364,7 +364,7 @@ CALLS = {
     **_asio_timer('boost::asio::basic_waitable_timer'),
     **_asio_timer('boost::asio::basic_deadline_timer'),
     # a loop sleeping until a deadline it advances by a fixed period runs
-    # at that period (see frontend/clocks.py)
+    # at that period (see frontend/cpp/clocks.py)
     'std::this_thread::sleep_until': Api(DEADLINE_SLEEP),
     'boost::this_thread::sleep_until': Api(DEADLINE_SLEEP),
     # ROS 2's clock (Jazzy+): sleeps until a rclcpp::Time
