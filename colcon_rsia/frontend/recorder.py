@@ -76,6 +76,16 @@ def paced_loop(context, *, made_in_loop, continue_before):
     return loop_id, loop
 
 
+def round_rate(hz):
+    """A rate as a person would write it: 1/0.1 is 10, not 9.99…."""
+    return round(float(hz), 6) if hz is not None else None
+
+
+def rate_of_period(seconds):
+    """The rate of a period in seconds (None for none or zero)."""
+    return round_rate(1.0 / seconds) if seconds else None
+
+
 def record_paced_loop(facts, context, *, loop_id, clock, loop_location,
                       sleep_location):
     """The fact that a loop runs at the pace of `clock` (a handle)."""

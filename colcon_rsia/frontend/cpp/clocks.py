@@ -31,10 +31,10 @@ import re
 
 import clang.cindex as ci
 from colcon_rsia import model
+from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
-from colcon_rsia.frontend.cpp.const_eval import hz_of
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -140,7 +140,7 @@ class OtherClocks:
         if seconds is None and _is_time_point(period):
             return  # an absolute deadline says nothing of a period
         self._periods.setdefault(timer.get_usr(), set()).add(
-            (expression_text(period), hz_of(seconds)))
+            (expression_text(period), recorder.rate_of_period(seconds)))
 
     def _on_single_shot(self, cursor, ctx, stack, api, name, arguments):
         timer = first_handle(call_object(cursor))
@@ -162,7 +162,7 @@ class OtherClocks:
         self.walker.facts.timers.append(model.TimerFact(
             function=ctx.function, api=name, callback=method.get_usr(),
             period=expression_text(period) if period is not None else '',
-            rate_hz=hz_of(seconds), location=self.walker.location(cursor)))
+            rate_hz=recorder.rate_of_period(seconds), location=self.walker.location(cursor)))
 
     # --- boost::asio ---------------------------------------------------------
 
@@ -195,7 +195,8 @@ class OtherClocks:
             return  # a deadline that never moves
         self.walker.facts.rates.append(model.RateObject(
             handle=deadline.get_usr(),
-            rate_hz=hz_of(_period_seconds(step, 1.0)), expression=expression_text(step),
+            rate_hz=recorder.rate_of_period(_period_seconds(step, 1.0)),
+            expression=expression_text(step),
             location=self.walker.location(step)))
         self.walker.record_paced_loop(
             ctx, loop_id=loop_id, loop=loop, clock=deadline, sleep=cursor)

@@ -397,9 +397,3 @@ def _period_object_seconds(arguments):
     if len(values) == 2 and None not in values:
         return values[0] + values[1] * 1e-9
     return None
-
-
-def hz_of(seconds):
-    """The rate of a period, as a person would write it (None for none)."""
-    # 1/0.1 is 9.999999999999998
-    return round(1.0 / seconds, 6) if seconds else None

@@ -15,10 +15,10 @@ import re
 
 import clang.cindex as ci
 from colcon_rsia import model
+from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
-from colcon_rsia.frontend.cpp.const_eval import hz_of
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
@@ -396,7 +396,7 @@ class RosRoles:
         period = self.walker.argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
-        rate_hz = hz_of(seconds)
+        rate_hz = recorder.rate_of_period(seconds)
         self.facts.timers.append(model.TimerFact(
             function=ctx.function, api=api.label, callback=callback,
             period=expression_text(period) if period is not None
@@ -589,7 +589,7 @@ def _period_rate_hz(argument):
         return None
     seconds = evaluate_period_seconds(argument)
     if seconds:
-        return hz_of(seconds)
+        return recorder.rate_of_period(seconds)
     # a Rate given where a period goes: its Hz
     for current in [argument] + list(walk_preorder(argument)):
         if current.kind != CK.CALL_EXPR or current.referenced is None or \
@@ -598,10 +598,5 @@ def _period_rate_hz(argument):
             continue
         values = [evaluate_number(a) for a in current.get_arguments()]
         if len(values) == 1:
-            return _round(values[0]) if values[0] else None
+            return recorder.round_rate(values[0]) if values[0] else None
     return None
-
-
-def _round(value):
-    # 1/0.1 is 9.999999999999998: keep the rate a person would write
-    return round(value, 6) if value is not None else None

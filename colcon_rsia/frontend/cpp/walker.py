@@ -69,12 +69,6 @@ from colcon_rsia.frontend.cpp.strings import unquote
 CK = ci.CursorKind
 
 
-# the children of a field that are no part of its initializer
-_NOT_INITIALIZERS = frozenset({
-    CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF, CK.MEMBER_REF,
-    CK.ANNOTATE_ATTR, CK.VISIBILITY_ATTR})
-
-
 class _MemberInit:
     """Stands on the expression stack for a constructor's member init."""
 
@@ -242,9 +236,10 @@ class _Walker:
                     self._function(cursor)
             elif kind in (CK.FIELD_DECL, CK.VAR_DECL):
                 self._declared_object(cursor, function=None)
-                self._initialized_string(cursor)
                 if kind == CK.FIELD_DECL:
                     self._member_initializer(cursor)
+                else:
+                    self._initialized_string(cursor)
         except Exception as e:  # noqa: B902
             self.problems.append(
                 f'{self.location(cursor)}: {cursor.spelling or kind.name} '
@@ -289,19 +284,30 @@ class _Walker:
         of the first constructor the class declares (none declared: no
         function of the package runs it).
         """
+        init = initializer(field)
+        if init is None:
+            return
         owner = field.semantic_parent
         constructor = next(
             (c for c in owner.get_children() if c.kind == CK.CONSTRUCTOR),
             None) if owner is not None else None
-        if constructor is None:
+        ctx = recorder.Context(constructor.get_usr(), owner=owner) \
+            if constructor is not None else None
+        self._initialize_member(field, init, ctx)
+
+    def _initialize_member(self, member, expression, ctx):
+        """A member set to an expression by the constructor `ctx` runs.
+
+        Its init list, or the member's default initializer (`ctx` None:
+        no constructor of the package runs it, only its string value is
+        noted).
+        """
+        self.string_variables.assignment(member, expression)
+        if ctx is None:
             return
-        ctx = recorder.Context(constructor.get_usr(), owner=owner)
-        for child in field.get_children():
-            if child.kind in _NOT_INITIALIZERS:
-                continue
-            if _is_callable(field):
-                self._store_callable(field, child)
-            self._visit(child, ctx, [_MemberInit(field)])
+        if _is_callable(member):
+            self._store_callable(member, expression)
+        self._visit(expression, ctx, [_MemberInit(member)])
 
     def _function(self, cursor):
         fid = cursor.get_usr()
@@ -324,12 +330,10 @@ class _Walker:
                               CK.TEMPLATE_REF, CK.TEMPLATE_TYPE_PARAMETER,
                               CK.TEMPLATE_NON_TYPE_PARAMETER):
                 continue
-            stack = [_MemberInit(pending_member)] if pending_member else []
-            if pending_member is not None and _is_callable(pending_member):
-                self._store_callable(pending_member, child)
             if pending_member is not None:
-                self.string_variables.assignment(pending_member, child)
-            self._visit(child, ctx, stack)
+                self._initialize_member(pending_member, child, ctx)
+            else:
+                self._visit(child, ctx, [])
             pending_member = None
 
     def _declared_object(self, cursor, function):
@@ -489,10 +493,7 @@ class _Walker:
             elif target is not None and len(children) > 1:
                 self.string_variables.assignment(target, children[-1])
         if ref.kind in FUNCTION_KINDS and self.in_package(ref):
-            self._add_call(ctx, ref.get_usr(), cursor)
-            self._bind_arguments(ref.get_usr(), cursor.get_arguments(),
-                                 caller=ctx.function)
-            self._bind_parameters(ref, list(cursor.get_arguments()))
+            self._package_call(ctx, ref, cursor, list(cursor.get_arguments()))
             return
         name = qualified_name(ref)
         if name.startswith(REPAIRED_PREFIX) or \
@@ -571,11 +572,14 @@ class _Walker:
             if extra >= 0:
                 candidates.append((extra, len(candidates), constructor))
         if candidates:
-            constructor = min(candidates)[2]
-            self._add_call(ctx, constructor.get_usr(), cursor)
-            self._bind_arguments(constructor.get_usr(), arguments,
-                                 caller=ctx.function)
-            self._bind_parameters(constructor, arguments)
+            self._package_call(ctx, min(candidates)[2], cursor, arguments)
+
+    def _package_call(self, ctx, callee, cursor, arguments):
+        """A call of the package's function (or constructor) `callee`."""
+        self._add_call(ctx, callee.get_usr(), cursor)
+        self._bind_arguments(callee.get_usr(), arguments,
+                             caller=ctx.function)
+        self._bind_parameters(callee, arguments)
 
     def _bind_parameters(self, callee, arguments):
         """A package function's parameters hold what its callers pass.

@@ -619,11 +619,6 @@ def _arithmetic(op, left, right):
     return value if isinstance(value, (int, float)) else None
 
 
-def round_number(value):
-    """A rate or period as a person would write it (1/0.1 is 10, not 9.99…)."""
-    return round(float(value), 6) if value is not None else None
-
-
 def call_argument(call, spec):
     """The argument written for (position, keyword), or None."""
     if spec is None:

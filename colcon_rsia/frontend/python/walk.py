@@ -26,7 +26,6 @@ from colcon_rsia.frontend.python.values import FUNC
 from colcon_rsia.frontend.python.values import MAX_DEPTH
 from colcon_rsia.frontend.python.values import PARTIAL
 from colcon_rsia.frontend.python.values import Project
-from colcon_rsia.frontend.python.values import round_number
 from colcon_rsia.frontend.python.values import STUB
 
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
@@ -572,9 +571,9 @@ class _Extractor(Roles):
             return None
         if unit == python_api.HZ:
             hz = self.project.number(expr, context.scope)
-            return round_number(hz) if hz and hz > 0 else None
+            return recorder.round_rate(hz) if hz and hz > 0 else None
         seconds = self._seconds(expr, context)
-        return round_number(1.0 / seconds) if seconds else None
+        return recorder.rate_of_period(seconds)
 
     def _seconds(self, expr, context):
         if isinstance(expr, ast.Call):
