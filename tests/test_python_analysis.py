@@ -209,6 +209,55 @@ def test_setup_cfg_entry_points_and_install_programs(tmp_path):
         [('relay.py', 'relay')]
 
 
+def test_uninstalled_ros_scripts_are_nodes_run_from_source(tmp_path):
+    """A plotting tool nobody installs is still a node its author runs."""
+    package = tmp_path / 'tools_pkg'
+    node_script = (
+        '#!/usr/bin/env python3\n'
+        'import rclpy\n'
+        'from rclpy.node import Node\n'
+        'from std_msgs.msg import Float32\n\n\n'
+        'class Plotter(Node):\n'
+        '    def __init__(self):\n'
+        "        super().__init__('speed_plotter')\n"
+        '        self.create_subscription(\n'
+        "            Float32, 'speed', self.on_speed, 10)\n\n"
+        '    def on_speed(self, msg):\n'
+        '        pass\n\n\n'
+        "if __name__ == '__main__':\n"
+        '    rclpy.init()\n'
+        '    rclpy.spin(Plotter())\n')
+    _write(package, {
+        'package.xml': (
+            '<package format="3"><name>tools_pkg</name><export>'
+            '<build_type>ament_cmake</build_type></export></package>'),
+        'CMakeLists.txt': 'project(tools_pkg)\n',
+        'script/plot_speed.py': node_script,
+        # no shebang: imported, never run by itself
+        'script/plot_lib.py': node_script.split('\n', 1)[1],
+        # a shebang and a guard, but no ROS: a tool, not a node
+        'script/convert.py': (
+            "#!/usr/bin/env python3\nif __name__ == '__main__':\n"
+            '    print(1)\n'),
+        # the tests' scripts and a Python package's modules are not nodes
+        'test/fake_publisher.py': node_script,
+        'tools_pkg/__init__.py': '',
+        'tools_pkg/cli.py': node_script,
+    })
+    layout = find_python_nodes(str(package))
+    assert [(n.executable, n.installed) for n in layout.nodes] == \
+        [('plot_speed.py', False)]
+    summary = _analyse(package, tmp_path / 'build')
+    (node,) = summary['nodes']
+    assert (node['id'], node['name']) == \
+        ('tools_pkg/plot_speed.py', 'speed_plotter')
+    assert [(s['topic'], s['callback']) for s in node['subscribers']] == \
+        [('speed', 'Plotter.on_speed')]
+    assert summary['diagnostics'] == [
+        'script/plot_speed.py: note: not installed; analysed as the node '
+        "'plot_speed.py' run from the source tree"]
+
+
 def _write(root, files):
     for relative, text in files.items():
         path = root / relative

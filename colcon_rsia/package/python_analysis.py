@@ -72,6 +72,11 @@ def build_python_summary(*, name, path):
                     f"executable '{spec.executable}': entry function "
                     f"'{spec.function}' not found in {unit.source}")
             entries.add(entry)
+        if not spec.installed:
+            summary.diagnostics.append(
+                f'{os.path.relpath(spec.path, path)}: note: not installed; '
+                f"analysed as the node '{spec.executable}' run from the "
+                'source tree')
         seeds = {f.id for f in unit.functions}
         # only the modules the node loads: a subclass another node imports
         # must not add its overrides to this one

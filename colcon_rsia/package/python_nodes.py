@@ -11,6 +11,11 @@
   executable is ``name``, the entry function ``func`` of that module.
 * ament_cmake (ament_cmake_python): scripts installed with
   ``install(PROGRAMS …)``.
+* Any build type: a script nothing installs (a plotting or checking tool
+  run as ``python3 script/tool.py``) is still a program of the package
+  when it has a python shebang, a ``__main__`` guard and starts ROS
+  (``rclpy.init``, ``rospy.init_node``); the executable is the file name
+  and the node says it is not installed.
 
 The package's modules (for imports between them) are the Python packages
 (directories with ``__init__.py``) at the top of the package and under
@@ -53,6 +58,7 @@ class PythonNode:
     module: str                     # the entry module's dotted name
     path: str                       # its file (absolute)
     function: Optional[str] = None  # console_scripts: the entry function
+    installed: bool = True          # False: run from the source tree
 
 
 @dataclass
@@ -100,6 +106,12 @@ def find_python_nodes(package_path):
         if layout.build_type == 'catkin':
             for path in _script_files(package_path):
                 scripts.setdefault(path, os.path.basename(path))
+    known = set(scripts) | {n.path for n in layout.nodes}
+    uninstalled = {
+        path: os.path.basename(path)
+        for path in _uninstalled_ros_scripts(package_path)
+        if path not in known}
+    scripts.update(uninstalled)
     for path, executable in sorted(scripts.items()):
         module = script_module_name(path)
         if layout.modules.setdefault(module, path) != path:
@@ -108,7 +120,8 @@ def find_python_nodes(package_path):
             module = os.path.relpath(path, package_path).replace(os.sep, '/')
             layout.modules[module] = path
         layout.nodes.append(PythonNode(
-            executable=executable, module=module, path=path))
+            executable=executable, module=module, path=path,
+            installed=path not in uninstalled))
     names = [n.executable for n in layout.nodes]
     for name in sorted({n for n in names if names.count(n) > 1}):
         layout.problems.append(
@@ -172,6 +185,40 @@ def _script_files(package_path):
         for entry in entries:
             path = os.path.join(base, entry)
             if os.path.isfile(path) and _has_python_shebang(path):
+                found.append(path)
+    return found
+
+
+# a script's own entry: ``if __name__ == '__main__':``
+_MAIN_GUARD = re.compile(
+    rb'^if\s+__name__\s*==\s*[\'"]__main__[\'"]\s*:', re.MULTILINE)
+# it starts ROS itself, so it is a node and not a tool around one
+_STARTS_ROS = re.compile(rb'\b(rclpy\.init|rospy\.init_node)\s*\(')
+# scripts larger than this are not read for the guard (never a node script)
+_MAX_SCRIPT_BYTES = 1 << 20
+
+
+def _uninstalled_ros_scripts(package_path):
+    """Python programs anywhere in the package that start a ROS node."""
+    found = []
+    for dirpath, dirnames, filenames in os.walk(package_path):
+        # a Python package's files are modules, not scripts
+        dirnames[:] = sorted(
+            d for d in dirnames
+            if d not in SKIPPED_DIRECTORIES and not d.startswith('.') and
+            not os.path.isfile(os.path.join(dirpath, d, '__init__.py')))
+        for filename in sorted(filenames):
+            path = os.path.join(dirpath, filename)
+            # scripts are `tool.py` or `tool`, never `tool.cpp`
+            if not (filename.endswith('.py') or '.' not in filename) or \
+                    os.path.islink(path) or not os.path.isfile(path) or \
+                    not _has_python_shebang(path):
+                continue
+            try:
+                text = safe_files.read_head(path, _MAX_SCRIPT_BYTES)
+            except OSError:
+                continue
+            if _MAIN_GUARD.search(text) and _STARTS_ROS.search(text):
                 found.append(path)
     return found
 
