@@ -933,3 +933,74 @@ def test_the_workspaces_own_copy_of_a_modelled_library_wins(tmp_path):
     assert arguments.index(str(library / 'include')) < model
     # and its includes are followed there: what they lack is stood in
     assert (tmp_path / 'stubs' / 'acme_rt' / 'handler.hpp').is_file()
+
+
+def test_call_sites_of_a_helper_defined_in_another_file(tmp_path):
+    """A call of the package's helper is understood where the helper is.
+
+    ``listener.subscribe(*node)`` creates a subscription in another file
+    of the package: it is recorded there, and the call is understood
+    through its call edge; a call of a same-named function that makes no
+    endpoint stays a blind spot.
+    """
+    package = tmp_path / 'acme_watch'
+    files = {
+        'include/acme_watch/listener.hpp': (
+            '#include <rclcpp/rclcpp.hpp>\n'
+            '#include <std_msgs/msg/string.hpp>\n'
+            'namespace acme_watch {\n'
+            'class Listener {\n'
+            'public:\n'
+            '  void subscribe(rclcpp::Node & node);\n'
+            '  void advertise(const std::string & what);\n'
+            'private:\n'
+            '  void on_status(const std_msgs::msg::String & msg);\n'
+            '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;\n'
+            '};\n'
+            '}  // namespace acme_watch\n'),
+        'src/listener.cpp': (
+            '#include "acme_watch/listener.hpp"\n'
+            'namespace acme_watch {\n'
+            'void Listener::subscribe(rclcpp::Node & node)\n'
+            '{\n'
+            '  sub_ = node.create_subscription<std_msgs::msg::String>(\n'
+            '    "status", 1, [this](const std_msgs::msg::String & m) {\n'
+            '      on_status(m); });\n'
+            '}\n'
+            'void Listener::advertise(const std::string & what)\n'
+            '{\n'
+            '  RCLCPP_INFO(rclcpp::get_logger("w"), "%s", what.c_str());\n'
+            '}\n'
+            'void Listener::on_status(const std_msgs::msg::String &) {}\n'
+            '}  // namespace acme_watch\n'),
+        'src/watcher.cpp': (
+            '#include "acme_watch/listener.hpp"\n'
+            'int main(int argc, char ** argv)\n'
+            '{\n'
+            '  rclcpp::init(argc, argv);\n'
+            '  auto node = std::make_shared<rclcpp::Node>("watcher");\n'
+            '  acme_watch::Listener listener;\n'
+            '  listener.subscribe(*node);\n'
+            '  listener.advertise("ready");\n'
+            '  rclcpp::spin(node);\n'
+            '}\n'),
+        'CMakeLists.txt': (
+            'cmake_minimum_required(VERSION 3.8)\n'
+            'project(acme_watch)\n'
+            'include_directories(include)\n'
+            'add_library(listener src/listener.cpp)\n'
+            'add_executable(watcher src/watcher.cpp)\n'
+            'target_link_libraries(watcher listener)\n'),
+    }
+    for relative, text in files.items():
+        (package / relative).parent.mkdir(parents=True, exist_ok=True)
+        (package / relative).write_text(text)
+    summary = analysis.analyze_package(
+        name='acme_watch', path=str(package), build_base=str(tmp_path / 'b'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+    recorded = sorted((c.file, c.line, c.role, c.recorded)
+                      for c in summary.coverage.call_sites)
+    assert recorded == [
+        ('src/listener.cpp', 5, 'subscriber', 'node'),
+        ('src/watcher.cpp', 7, 'subscriber', 'node'),
+        ('src/watcher.cpp', 8, 'publisher', 'none')]

@@ -84,6 +84,11 @@ def call_site_coverage(sites, *, nodes, units):
     in_nodes = match_sites(sites, _endpoint_lines(nodes))
     rest = [s for s in sites if s not in in_nodes]
     in_units = match_sites(rest, _endpoint_lines(units))
+    rest = [s for s in rest if s not in in_units]
+    through_node, through_unit = _through_package_functions(
+        rest, nodes, units)
+    in_nodes |= through_node
+    in_units |= through_unit
     read = {file for unit in units for file in unit.files}
     result = []
     for site in sites:
@@ -94,6 +99,78 @@ def call_site_coverage(sites, *, nodes, units):
             file=site.file, line=site.line, role=site.role, api=site.api,
             recorded=recorded))
     return result
+
+
+# calls of calls: deeper chains of the package's own functions are not
+# followed to an endpoint
+MAX_CALL_DEPTH = 3
+
+
+def _through_package_functions(sites, nodes, units):
+    """Sites that call a package function which makes the endpoint.
+
+    ``sub_graph_.subscribe(*this, 1)`` of a helper class defined in another
+    file of the package: the subscription is recorded where the helper
+    makes it, and the call site is understood through the call edge.
+    Returns ({sites whose endpoint is in a node}, {only in a unit}).
+    """
+    if not sites:
+        return set(), set()
+    # {function: {(role, location)}} made in its own body
+    made = collections.defaultdict(set)
+    for unit in units:
+        for role, facts in ((PUBLISHER, unit.publishers),
+                            (SUBSCRIBER, unit.subscribers)):
+            for fact in facts:
+                if fact.function:
+                    made[fact.function].add((role, fact.location))
+    calls = collections.defaultdict(set)
+    for unit in units:
+        for call in unit.calls:
+            if call.kind == 'call':
+                calls[call.caller].add(call.callee)
+
+    def reached(function):
+        found, frontier, seen = set(), {function}, {function}
+        for _ in range(MAX_CALL_DEPTH):
+            for current in frontier:
+                found |= made.get(current, set())
+            frontier = {c for f in frontier for c in calls.get(f, ())} - seen
+            seen |= frontier
+        return found
+
+    in_nodes = {(role, f.location) for node in nodes
+                for role, facts in ((PUBLISHER, node.publishers),
+                                    (SUBSCRIBER, node.subscribers))
+                for f in facts}
+    # {(file, role): [(line, endpoints the call makes)]}
+    call_lines = collections.defaultdict(list)
+    for unit in units:
+        for call in unit.calls:
+            if call.kind != 'call' or call.callee not in made and \
+                    call.callee not in calls:
+                continue
+            file, _, line = call.location.rpartition(':')
+            if not line.isdigit():
+                continue
+            endpoints = reached(call.callee)
+            for role in (PUBLISHER, SUBSCRIBER):
+                own = {e for e in endpoints if e[0] == role}
+                if own:
+                    call_lines[(file, role)].append((int(line), own))
+    through_node, through_unit = set(), set()
+    for site in sites:
+        candidates = [
+            endpoints for line, endpoints in call_lines.get(
+                (site.file, site.role), ())
+            if abs(line - site.line) <= LINE_SLACK]
+        if not candidates:
+            continue
+        if any(e in in_nodes for endpoints in candidates for e in endpoints):
+            through_node.add(site)
+        else:
+            through_unit.add(site)
+    return through_node, through_unit
 
 
 def package_call_sites(path, *, python):
