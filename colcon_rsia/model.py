@@ -285,6 +285,25 @@ _UNIT_COUNTS = ('errors', 'package_errors', 'repair_rounds')
 
 
 @dataclass
+class WrapperSummary:
+    """What calling a function of the package does, for other packages.
+
+    A function defined in a ``.cpp`` of a library package
+    (``DiagGraphSubscription::subscribe(rclcpp::Node &, size_t)``) whose
+    body other packages never see: its summary
+    (:mod:`colcon_rsia.frontend.cpp.wrappers`) travels in
+    ``<build base>/<pkg>/rsia/wrappers.json`` to the packages analysed
+    after it. ``endpoints`` are the fields of ``wrappers.Endpoint``.
+    """
+
+    usr: str
+    name: str                      # qualified name
+    arity: int                     # its parameters
+    endpoints: List[dict] = field(default_factory=list)
+    publishes_members: List[str] = field(default_factory=list)
+
+
+@dataclass
 class TuFacts:
     """Everything a front end found in one translation unit."""
 
@@ -313,6 +332,9 @@ class TuFacts:
     # type aliases of classes: what a plugin class inherits its methods from
     class_bases: List[List[str]] = field(default_factory=list)
     class_aliases: List[List[str]] = field(default_factory=list)
+    # summaries of the unit's functions that make endpoints, for the
+    # other packages calling them
+    wrappers: List[WrapperSummary] = field(default_factory=list)
     # the package's own files the unit read (its source and headers)
     files: List[str] = field(default_factory=list)
     diagnostics: List[str] = field(default_factory=list)
@@ -337,7 +359,7 @@ class TuFacts:
             'node_handles': NodeHandleFact, 'bindings': ParamBinding,
             'param_reads': ParamRead, 'node_names': NodeNameFact,
             'clients': ClientFact, 'handle_aliases': HandleAlias,
-            'string_arguments': StringArgument,
+            'string_arguments': StringArgument, 'wrappers': WrapperSummary,
         }
         kwargs = {}
         for f in fields(cls):

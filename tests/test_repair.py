@@ -261,10 +261,11 @@ def test_a_failing_unit_loses_only_itself(tmp_path, monkeypatch):
         '{\n  nh.advertise<std_msgs::String>("status", 1);\n}\n')
     original = cpp.extract_facts
 
-    def failing(tu, *, package_path, source):
+    def failing(tu, *, package_path, source, **others):
         if source == 'src/other.cpp':
             raise RuntimeError('boom')
-        return original(tu, package_path=package_path, source=source)
+        return original(tu, package_path=package_path, source=source,
+                        **others)
     monkeypatch.setattr(cpp, 'extract_facts', failing)
     summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
     assert [n.id for n in summary.nodes] == ['acme_vision/detector_node']

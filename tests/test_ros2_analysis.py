@@ -152,10 +152,11 @@ def test_hosts_in_a_launch_file_load_the_plugins_their_parameters_name(
     planner = next(n for n in graph['nodes']
                    if n['id'] == '/planner_server/Straight')
     assert planner['name'] == '/planner_server'
-    # the relay's remapped output is the controller's command input
+    # the relay's remapped output is the controller's command input; two
+    # more topics come from helpers compiled into rsia_ros2_common
     assert endpoints['/velocity_relay'][0] == {
         '/odometry_controller/cmd_vel', '/relay_status', '/debug/relayed',
-        '/relay_mode'}
+        '/relay_mode', '/graph_announcements', '/relay_gauge'}
 
 
 def test_a_host_periodic_edge_stops_the_rate_impact(ros2_build_base):

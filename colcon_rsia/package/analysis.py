@@ -147,7 +147,9 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     units, diagnostics = parse_units(
         entries, package_path=path, resource_dir=resource_dir,
         cache=store.cache_dir(build_base) if use_cache else None,
-        jobs=jobs or default_jobs())
+        jobs=jobs or default_jobs(),
+        wrappers=store.read_workspace_wrappers(
+            build_base, workspace_package_dirs))
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units)
     summary.coverage = _coverage(path, units, summary.nodes)
@@ -157,7 +159,17 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
     store.write_summary(build_base, summary)
+    store.write_wrappers(build_base, path, _exported_wrappers(units))
     return summary
+
+
+def _exported_wrappers(units):
+    """The package's wrapper summaries, once each (headers are shared)."""
+    unique = {}
+    for file in sorted(units):
+        for wrapper in units[file].wrappers:
+            unique.setdefault(wrapper.usr, wrapper)
+    return [unique[usr] for usr in sorted(unique)]
 
 
 def _unknown_namespace_notes(nodes):
@@ -267,15 +279,20 @@ def _inside(file, directory):
     return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
 
 
-def parse_units(entries, *, package_path, resource_dir, cache, jobs):
-    """Parse the TUs in a thread pool; return (facts by file, messages)."""
+def parse_units(entries, *, package_path, resource_dir, cache, jobs,
+                wrappers=()):
+    """Parse the TUs in a thread pool; return (facts by file, messages).
+
+    :param wrappers: the model.WrapperSummary of the workspace's other
+      packages, for the calls of functions whose body is out of sight
+    """
     hidden = _unsafe_includes(entries, package_path)
 
     def work(entry):
         try:
             check_stop()
             return _unit_facts(
-                entry, package_path, resource_dir, cache, hidden)
+                entry, package_path, resource_dir, cache, hidden, wrappers)
         except Interrupted:
             raise
         except Exception as e:  # noqa: B902
@@ -305,12 +322,15 @@ def _unsafe_includes(entries, package_path):
         skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
 
 
-def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
+def _unit_facts(entry, package_path, resource_dir, cache, hidden=None,
+                wrappers=()):
     """Facts of one TU, from the cache when nothing it reads changed.
 
     :param hidden: {file: why} of files libclang is given as empty
+    :param wrappers: the other packages' wrapper summaries (parse_units)
     """
     hidden = hidden or {}
+    wrappers_digest = store.wrappers_digest(wrappers)
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
     try:
         safe_files.check_file(entry.file, roots=[package_path])
@@ -324,7 +344,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
     cache_file = None
     if cache is not None:
         cache_file = unit_cache_file(cache, entry)
-        cached = read_cached_facts(cache_file, entry)
+        cached = read_cached_facts(cache_file, entry, wrappers_digest)
         if cached is not None:
             return cached, list(cached.diagnostics)
     # imported here: libclang is needed only when something is parsed
@@ -344,7 +364,10 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
                 set(hidden) | {os.path.realpath(h) for h in hidden})])
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
-    facts = cpp.extract_facts(tu, package_path=package_path, source=relative)
+    from colcon_rsia.frontend.cpp.wrappers import ExternalWrappers
+    facts = cpp.extract_facts(
+        tu, package_path=package_path, source=relative,
+        external_wrappers=ExternalWrappers(wrappers) if wrappers else None)
     facts.diagnostics = [
         f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)
     ] + facts.diagnostics
@@ -366,7 +389,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None):
     if cache_file is not None:
         # stand-ins only grow as other TUs are prepared: not an input
         inputs = [i for i in includes if f'/{store.RSIA_DIRNAME}/stubs/' not in i]
-        write_cached_facts(cache_file, entry, [entry.file] + inputs, facts)
+        write_cached_facts(cache_file, entry, [entry.file] + inputs, facts,
+                           wrappers_digest)
     return facts, list(facts.diagnostics)
 
 

@@ -59,18 +59,23 @@ def _frontend_digest():
     return _FRONTEND_DIGEST[0]
 
 
-def _cache_key(entry):
+def _cache_key(entry, wrappers):
     return {'tool': __version__, 'schema': model.FACTS_SCHEMA,
             'frontend': _frontend_digest(),
-            'arguments': entry.arguments, 'directory': entry.directory}
+            'arguments': entry.arguments, 'directory': entry.directory,
+            'wrappers': wrappers}
 
 
-def read_cached_facts(cache_file, entry):
-    """The cached facts of a unit, or None when any input changed."""
+def read_cached_facts(cache_file, entry, wrappers=None):
+    """The cached facts of a unit, or None when any input changed.
+
+    :param wrappers: the digest of the other packages' wrapper summaries
+      the unit was walked with (store.wrappers_digest)
+    """
     try:
         with open(cache_file, encoding='utf-8') as h:
             data = json.load(h)
-        if data['key'] != _cache_key(entry):
+        if data['key'] != _cache_key(entry, wrappers):
             return None
         for path, stamp in data['inputs'].items():
             if _file_stamp(path) != stamp:
@@ -80,10 +85,10 @@ def read_cached_facts(cache_file, entry):
         return None  # no cache, or one we cannot trust: parse again
 
 
-def write_cached_facts(cache_file, entry, inputs, facts):
+def write_cached_facts(cache_file, entry, inputs, facts, wrappers=None):
     """Cache a unit's facts with the stamps of the files it read."""
     data = {
-        'key': _cache_key(entry),
+        'key': _cache_key(entry, wrappers),
         'inputs': {p: _file_stamp(p) for p in inputs},
         'facts': facts.to_dict()}
     try:

@@ -2,11 +2,14 @@
 # Licensed under the Apache License, Version 2.0
 """Summary files under the build base: paths, atomic writes, reading."""
 
+from dataclasses import asdict
+import hashlib
 import json
 import os
 
 from colcon_rsia import safe_files
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.model import WrapperSummary
 from colcon_rsia.safe_files import display
 from colcon_rsia.safe_files import max_file_bytes
 from colcon_rsia.safe_files import read_bytes
@@ -139,3 +142,64 @@ def find_summaries(build_base):
         if os.path.isfile(path):
             found[name] = path
     return found
+
+
+# --- the wrappers a package offers the packages analysed after it ---------
+
+WRAPPERS_FILENAME = 'wrappers.json'
+WRAPPERS_SCHEMA = 'colcon-rsia/wrappers@1'
+
+
+def write_wrappers(package_build_base, package_path, wrappers):
+    """Store the summaries of a package's wrapper functions (or none)."""
+    path = os.path.join(package_build_base, RSIA_DIRNAME, WRAPPERS_FILENAME)
+    if not wrappers:
+        try:
+            os.unlink(path)
+        except OSError:
+            pass
+        return
+    write_json_atomically(path, {
+        'schema': WRAPPERS_SCHEMA, 'path': package_path,
+        'wrappers': [asdict(w) for w in wrappers]})
+
+
+def read_workspace_wrappers(package_build_base, package_dirs):
+    """The wrapper summaries the workspace's other packages stored.
+
+    Every package's output is a sibling of this one's under the build base;
+    a file whose package is no longer in the workspace (``package_dirs``)
+    or that cannot be read is left out: its calls give no facts, as before
+    its package was analysed.
+    """
+    build_base = os.path.dirname(os.path.abspath(package_build_base))
+    own = os.path.basename(os.path.abspath(package_build_base))
+    wanted = {os.path.abspath(d) for d in package_dirs}
+    found = []
+    try:
+        names = sorted(os.listdir(build_base))
+    except OSError:
+        return found
+    for name in names:
+        path = os.path.join(build_base, name, RSIA_DIRNAME, WRAPPERS_FILENAME)
+        if name == own or not os.path.isfile(path):
+            continue
+        try:
+            data = json.loads(read_bytes(path).decode('utf-8'))
+            if data.get('schema') != WRAPPERS_SCHEMA or \
+                    data.get('path') not in wanted:
+                continue
+            found.extend(WrapperSummary(**w) for w in data['wrappers'])
+        except (OSError, ValueError, KeyError, TypeError, AttributeError,
+                RecursionError):
+            continue
+    return found
+
+
+def wrappers_digest(wrappers):
+    """A digest of wrapper summaries: the units calling them depend on it."""
+    if not wrappers:
+        return None
+    return hashlib.sha1(json.dumps(
+        sorted((asdict(w) for w in wrappers), key=lambda w: w['usr']),
+        sort_keys=True).encode()).hexdigest()

@@ -355,3 +355,30 @@ def repaired_call_name(call, ref):
                 return qualified_name(member)
             return None
     return None
+
+
+def base_class_names(cursor):
+    """The qualified names of a class's direct bases, without arguments."""
+    names = []
+    for child in cursor.get_children():
+        if child.kind != CK.CXX_BASE_SPECIFIER:
+            continue
+        base = child.type.get_declaration()
+        if base is not None and base.kind != CK.NO_DECL_FOUND:
+            names.append(qualified_name(base))
+        else:
+            names.append(re.sub(r'<.*', '', child.type.spelling))
+    return [name for name in names if name]
+
+
+def aliased_class(cursor):
+    """The class ``typedef Controller<Iface> JointController;`` names.
+
+    A template's specialisation has the template's qualified name; None
+    when the alias names no class.
+    """
+    declaration = cursor.underlying_typedef_type.get_canonical() \
+        .get_declaration()
+    if declaration is None or declaration.kind not in CLASS_KINDS:
+        return None
+    return declaration

@@ -30,6 +30,8 @@ from colcon_rsia.frontend.cpp import strings
 from colcon_rsia.frontend.cpp import wrappers
 from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.cursors import aliased_class
+from colcon_rsia.frontend.cpp.cursors import base_class_names
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -78,15 +80,18 @@ class _MemberInit:
         self.member = member
 
 
-def extract_facts(tu, *, package_path, source):
+def extract_facts(tu, *, package_path, source, external_wrappers=None):
     """Walk the package's own code in a parsed TU and return its facts.
 
     :param tu: the parsed translation unit
     :param str package_path: absolute path of the package source
     :param str source: the TU's main file, relative to the package
+    :param external_wrappers: the wrappers.ExternalWrappers of the
+      workspace's other packages, for calls of functions with no body here
     :rtype: colcon_rsia.model.TuFacts
     """
-    walker = _Walker(package_path, model.TuFacts(source=source))
+    walker = _Walker(package_path, model.TuFacts(source=source),
+                     external_wrappers=external_wrappers)
     walker.walk(tu)
     walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
     return walker.facts
@@ -98,7 +103,7 @@ BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
 class _Walker:
     """Collects the facts of one TU; see :func:`extract_facts`."""
 
-    def __init__(self, package_path, facts):
+    def __init__(self, package_path, facts, external_wrappers=None):
         self.package_path = package_path.rstrip('/') + '/'
         self.facts = facts
         self._in_package_cache = {}
@@ -116,7 +121,9 @@ class _Walker:
         # declarations whose walk failed: one line each, the rest goes on
         self.problems = []
         # the workspace's wrapper functions this unit calls
-        self._wrappers = wrappers.Summaries(self)
+        self._wrappers = wrappers.Summaries(self, external_wrappers)
+        # {function id: definition} of the package's functions walked
+        self._definitions = {}
         # Qt and boost::asio timers, sleep_until loops
         self._clocks = clocks.OtherClocks(self)
         # what each role of ros_api does to the facts
@@ -194,6 +201,7 @@ class _Walker:
         self._clocks.finish()
         self._resolve_stored_callbacks()
         self.string_variables.resolve()
+        self.facts.wrappers = self._wrappers.exported(self._definitions)
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
@@ -220,13 +228,20 @@ class _Walker:
             return  # a cursor kind this libclang binding does not know
         if kind in SCOPE_KINDS:
             if kind in CLASS_KINDS:
-                self._class_bases(cursor)
+                # what a plugin class inherits its methods from
+                name = qualified_name(cursor)
+                self.facts.class_bases.extend(
+                    [name, base] for base in base_class_names(cursor)
+                    if [name, base] not in self.facts.class_bases)
             for child in cursor.get_children():
                 if self.in_package(child):
                     self._declaration(child)
             return
         if kind in (CK.TYPEDEF_DECL, CK.TYPE_ALIAS_DECL):
-            self._class_alias(cursor)
+            declaration = aliased_class(cursor)
+            if declaration is not None:
+                self.facts.class_aliases.append(
+                    [qualified_name(cursor), qualified_name(declaration)])
             return
         # what invalid code leaves in the AST may surprise any rule below:
         # such a declaration loses its own facts, never the unit's
@@ -245,30 +260,6 @@ class _Walker:
                 f'{self.location(cursor)}: {cursor.spelling or kind.name} '
                 f'not analysed (internal error: {type(e).__name__}: {e}); '
                 'please report it')
-
-    def _class_bases(self, cursor):
-        """Record the bases of a package class (a plugin inherits methods)."""
-        name = qualified_name(cursor)
-        for child in cursor.get_children():
-            if child.kind != CK.CXX_BASE_SPECIFIER:
-                continue
-            base = child.type.get_declaration()
-            if base is not None and base.kind != CK.NO_DECL_FOUND:
-                base_name = qualified_name(base)
-            else:
-                base_name = re.sub(r'<.*', '', child.type.spelling)
-            if base_name and [name, base_name] not in self.facts.class_bases:
-                self.facts.class_bases.append([name, base_name])
-
-    def _class_alias(self, cursor):
-        """``typedef Controller<Iface> JointController;`` names a class."""
-        target = cursor.underlying_typedef_type.get_canonical()
-        declaration = target.get_declaration()
-        if declaration is None or declaration.kind not in CLASS_KINDS:
-            return
-        # a template's specialisation has the template's qualified name
-        self.facts.class_aliases.append(
-            [qualified_name(cursor), qualified_name(declaration)])
 
     def _class_id(self, cursor):
         parent = cursor.semantic_parent
@@ -311,6 +302,7 @@ class _Walker:
 
     def _function(self, cursor):
         fid = cursor.get_usr()
+        self._definitions[fid] = cursor
         self.facts.functions.append(model.Function(
             id=fid, name=qualified_name(cursor),
             location=self.location(cursor),

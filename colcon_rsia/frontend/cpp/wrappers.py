@@ -18,8 +18,15 @@ or an expression; the message type as a concrete type or the wrapper's
 template argument; callbacks passed as a parameter; publish calls in the
 wrapper; endpoints stored in a member of a helper object and published
 through by its other methods; wrappers calling wrappers (a few levels).
+
+A wrapper defined in a ``.cpp`` of a library package is out of sight of
+the units of other packages: its package exports the summary
+(:meth:`Summaries.exported`, stored as ``wrappers.json``), and the
+packages analysed after it (colcon's dependency order) read it back
+(:class:`ExternalWrappers`) for the calls whose callee has no body here.
 """
 
+from dataclasses import asdict
 from dataclasses import dataclass
 from typing import Optional
 
@@ -29,6 +36,7 @@ from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
+from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
@@ -72,18 +80,48 @@ class Summary:
 EMPTY = Summary([], set())
 
 
+class ExternalWrappers:
+    """The wrapper summaries other packages of the workspace exported."""
+
+    def __init__(self, summaries=()):  # noqa: D107
+        self._by_usr = {}
+        by_name = {}
+        for summary in summaries:
+            converted = Summary(
+                [Endpoint(**e) for e in summary.endpoints],
+                set(summary.publishes_members))
+            self._by_usr[summary.usr] = converted
+            by_name.setdefault((summary.name, summary.arity), []).append(
+                converted)
+        # a parameter type that is a stand-in in one package and a model
+        # class in another changes the USR: the name and arity still tell,
+        # when they name one function only
+        self._by_name = {k: v[0] for k, v in by_name.items() if len(v) == 1}
+
+    def find(self, declaration):
+        """The summary of a declared function with no body here, or EMPTY."""
+        found = self._by_usr.get(declaration.get_usr())
+        if found is None and self._by_name:
+            arity = sum(1 for c in declaration.get_children()
+                        if c.kind == CK.PARM_DECL)
+            found = self._by_name.get((qualified_name(declaration), arity))
+        return found or EMPTY
+
+
 class Summaries:
     """Wrapper summaries of one unit, computed once per wrapper."""
 
-    def __init__(self, walker):  # noqa: D107
+    def __init__(self, walker, external=None):  # noqa: D107
         self.walker = walker
+        self.external = external
         self._done = {}
 
     def of(self, declaration, depth=0):
         """The summary of the function a call refers to."""
         definition = _definition(declaration)
         if definition is None:
-            return EMPTY
+            return self.external.find(declaration) \
+                if self.external is not None else EMPTY
         key = definition.get_usr() or str(definition.location)
         if key not in self._done:
             # a recursive wrapper meets its own (empty) summary
@@ -91,6 +129,41 @@ class Summaries:
             if depth <= MAX_DEPTH:
                 self._done[key] = self._summarise(definition, depth)
         return self._done[key]
+
+    def exported(self, definitions):
+        """Summaries of the unit's functions that make or publish endpoints.
+
+        :param definitions: {function id: definition cursor} of the
+          package's functions the walk met; those with endpoint facts or
+          publish sites are summarised (``main`` is nobody's wrapper)
+        """
+        facts = self.walker.facts
+        candidates = {f.function for f in facts.publishers + facts.subscribers
+                      + facts.publish_sites if f.function}
+        result = []
+        for function in sorted(candidates & set(definitions)):
+            definition = definitions[function]
+            if definition.spelling == 'main':
+                continue
+            try:
+                summary = self.of(definition)
+            except Exception as e:  # noqa: B902
+                # what invalid code leaves may surprise the summary: the
+                # function's callers lose its facts, the unit keeps its own
+                self.walker.problems.append(
+                    f'{self.walker.location(definition)}: '
+                    f'{definition.spelling} not summarised for other '
+                    f'packages (internal error: {type(e).__name__}: {e})')
+                continue
+            if not summary.endpoints and not summary.publishes_members:
+                continue
+            result.append(model.WrapperSummary(
+                usr=function, name=qualified_name(definition),
+                arity=sum(1 for c in definition.get_children()
+                          if c.kind == CK.PARM_DECL),
+                endpoints=[asdict(e) for e in summary.endpoints],
+                publishes_members=sorted(summary.publishes_members)))
+        return result
 
     def _summarise(self, definition, depth):
         params = {p.get_usr(): i for i, p in enumerate(
@@ -107,6 +180,14 @@ class Summaries:
             elif pending is not None:
                 initialised[_key(child)] = pending
                 pending = None
+        # and members the body assigns (`pub_ = node->create_publisher(…)`)
+        for node in walk_preorder(definition):
+            if node.kind == CK.CALL_EXPR and node.spelling == 'operator=':
+                children = child_cursors(node)
+                field = first_handle(children[0]) if len(children) > 1 \
+                    else None
+                if field is not None and field.kind == CK.FIELD_DECL:
+                    initialised[_key(children[-1])] = field
         # the body and the initialisers alike
         nodes = [c for c in definition.get_children()
                  if c.kind not in (CK.PARM_DECL, CK.TYPE_REF,

@@ -1,0 +1,77 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Helpers compiled into another package's library, read at their calls.
+
+rsia_ros2_common's GraphListener and make_gauge have their bodies in its
+src/graph_listener.cpp; rsia_ros2_wrapped sees only their declarations.
+The expectations of the relay itself are in
+test_workspaces/ros2/expected/rsia_ros2_wrapped.yaml; these tests check
+how the summaries travel: in dependency order, with the cache, and only
+from packages of the workspace.
+"""
+
+import shutil
+
+from colcon_rsia.package import analysis
+from conftest import WORKSPACES
+
+SRC = WORKSPACES / 'ros2' / 'src'
+
+
+def _workspace(tmp_path):
+    for package in ('rsia_ros2_common', 'rsia_ros2_wrapped'):
+        shutil.copytree(SRC / package, tmp_path / 'src' / package)
+    return tmp_path / 'src'
+
+
+def _analyse(src, build, package, package_dirs):
+    return analysis.analyze_package(
+        name=package, path=str(src / package), build_base=str(build / package),
+        jobs=1, header_mode='model',
+        workspace_package_dirs=[str(src / d) for d in package_dirs])
+
+
+def _relay_topics(summary):
+    (node,) = summary.nodes
+    return ({p.topic for p in node.publishers},
+            {s.topic for s in node.subscribers})
+
+
+def test_a_library_helper_changed_changes_its_callers_facts(tmp_path):
+    src = _workspace(tmp_path)
+    build = tmp_path / 'build'
+    both = ('rsia_ros2_common', 'rsia_ros2_wrapped')
+    _analyse(src, build, 'rsia_ros2_common', both)
+    publishers, subscribers = _relay_topics(
+        _analyse(src, build, 'rsia_ros2_wrapped', both))
+    assert {'graph_announcements', 'relay_gauge'} <= publishers
+    assert subscribers == {'cmd_vel_in', 'graph_updates'}
+
+    # the helper's body changes; the relay's own files do not, and its
+    # cached facts must not hide the change
+    helper = src / 'rsia_ros2_common' / 'src' / 'graph_listener.cpp'
+    helper.write_text(helper.read_text().replace(
+        '"graph_updates"', '"graph_changes"'))
+    _analyse(src, build, 'rsia_ros2_common', both)
+    _, subscribers = _relay_topics(
+        _analyse(src, build, 'rsia_ros2_wrapped', both))
+    assert subscribers == {'cmd_vel_in', 'graph_changes'}
+
+
+def test_summaries_stored_for_another_source_tree_are_not_read(tmp_path):
+    src = _workspace(tmp_path)
+    build = tmp_path / 'build'
+    # the build base holds the output of a package of the same name from
+    # another source tree (a workspace moved or switched): stale output
+    old = tmp_path / 'old'
+    shutil.copytree(src / 'rsia_ros2_common', old / 'rsia_ros2_common')
+    _analyse(old, build, 'rsia_ros2_common', ('rsia_ros2_common',))
+    assert (build / 'rsia_ros2_common' / 'rsia' / 'wrappers.json').is_file()
+    publishers, subscribers = _relay_topics(_analyse(
+        src, build, 'rsia_ros2_wrapped',
+        ('rsia_ros2_common', 'rsia_ros2_wrapped')))
+    # the header's wrappers are read from this tree; the library's
+    # helpers are unknown until this tree's rsia_ros2_common is analysed
+    assert 'relay_status' in publishers
+    assert not {'graph_announcements', 'relay_gauge'} & publishers
+    assert subscribers == {'cmd_vel_in'}
