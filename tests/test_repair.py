@@ -1005,3 +1005,22 @@ def test_call_sites_of_a_helper_defined_in_another_file(tmp_path):
         ('src/listener.cpp', 5, 'subscriber', 'node'),
         ('src/watcher.cpp', 7, 'subscriber', 'node'),
         ('src/watcher.cpp', 8, 'publisher', 'none')]
+
+
+def test_facts_pair_with_the_call_sites_whose_expression_they_start():
+    """A fact is located where its call starts, before the callee's name.
+
+    ``twist_sub_ = Poller<M, P>::`` on line 13 and ``create_subscription(``
+    on line 15 are a fact at 13 and a site at 15; the next call, written the same way over
+    two lines, is a fact at 16 and a site at 17. Nearest-first per site
+    would give the first site the fact of the second.
+    """
+    from colcon_rsia.package.call_sites import CallSite
+    from colcon_rsia.package.coverage import match_sites
+    sites = [CallSite('src/node.cpp', line, 'subscriber', 'create_subscription')
+             for line in (15, 17, 18)]
+    lines = {('src/node.cpp', 'subscriber'): [13, 16, 18]}
+    assert match_sites(sites, lines) == set(sites)
+    # a fact no site is near stays unmatched, and a site without one too
+    assert match_sites(sites, {('src/node.cpp', 'subscriber'): [9, 18]}) == \
+        {sites[2]}

@@ -51,8 +51,12 @@ def _endpoint_lines(holders):
 def match_sites(sites, lines):
     """The call sites matched one to one with a recorded line.
 
-    A site takes the fact on its own line first, else the nearest within
-    :data:`LINE_SLACK` lines.
+    A site takes the fact on its own line first. The others are paired
+    nearest first, across all sites, within :data:`LINE_SLACK` lines: a
+    fact is recorded where its call expression starts, at or before the
+    line of the callee's name (``pub_ = Class<M, P>::`` on one line,
+    ``create_publisher(`` on the next), so a fact before the site is nearer than one
+    after it at the same distance.
     """
     free = {key: collections.Counter(value) for key, value in lines.items()}
     matched = set()
@@ -61,15 +65,20 @@ def match_sites(sites, lines):
         if candidates and candidates[site.line] > 0:
             candidates[site.line] -= 1
             matched.add(site)
-    for site in sites:
+    pairs = []
+    for number, site in enumerate(sites):
         if site in matched:
             continue
-        candidates = free.get((site.file, site.role)) or {}
-        near = sorted((abs(line - site.line), line)
-                      for line, count in candidates.items()
-                      if count > 0 and abs(line - site.line) <= LINE_SLACK)
-        if near:
-            candidates[near[0][1]] -= 1
+        for line in free.get((site.file, site.role)) or {}:
+            distance = abs(line - site.line)
+            if distance <= LINE_SLACK:
+                after = line > site.line
+                pairs.append((distance + after * 0.5, number, line))
+    for _, number, line in sorted(pairs):
+        site = sites[number]
+        candidates = free[(site.file, site.role)]
+        if site not in matched and candidates[line] > 0:
+            candidates[line] -= 1
             matched.add(site)
     return matched
 
