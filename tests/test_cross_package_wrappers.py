@@ -10,6 +10,7 @@ how the summaries travel: in dependency order, with the cache, and only
 from packages of the workspace.
 """
 
+import json
 import shutil
 
 from colcon_rsia.package import analysis
@@ -75,3 +76,20 @@ def test_summaries_stored_for_another_source_tree_are_not_read(tmp_path):
     assert 'relay_status' in publishers
     assert not {'graph_announcements', 'relay_gauge'} & publishers
     assert subscribers == {'cmd_vel_in'}
+
+
+def test_a_wrappers_file_of_another_version_is_no_crash(tmp_path):
+    src = _workspace(tmp_path)
+    build = tmp_path / 'build'
+    both = ('rsia_ros2_common', 'rsia_ros2_wrapped')
+    _analyse(src, build, 'rsia_ros2_common', both)
+    stored = build / 'rsia_ros2_common' / 'rsia' / 'wrappers.json'
+    data = json.loads(stored.read_text())
+    for wrapper in data['wrappers']:
+        for endpoint in wrapper['endpoints']:
+            endpoint['queue_param'] = 2   # a field this version lacks
+    stored.write_text(json.dumps(data))
+    summary = _analyse(src, build, 'rsia_ros2_wrapped', both)
+    assert not [d for d in summary.diagnostics if 'internal error' in d]
+    publishers, _ = _relay_topics(summary)
+    assert 'relay_status' in publishers and 'relay_gauge' not in publishers

@@ -287,12 +287,14 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs,
       packages, for the calls of functions whose body is out of sight
     """
     hidden = _unsafe_includes(entries, package_path)
+    digest = store.wrappers_digest(wrappers)
 
     def work(entry):
         try:
             check_stop()
             return _unit_facts(
-                entry, package_path, resource_dir, cache, hidden, wrappers)
+                entry, package_path, resource_dir, cache, hidden,
+                wrappers=wrappers, wrappers_digest=digest)
         except Interrupted:
             raise
         except Exception as e:  # noqa: B902
@@ -322,15 +324,15 @@ def _unsafe_includes(entries, package_path):
         skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
 
 
-def _unit_facts(entry, package_path, resource_dir, cache, hidden=None,
-                wrappers=()):
+def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
+                wrappers=(), wrappers_digest=None):
     """Facts of one TU, from the cache when nothing it reads changed.
 
     :param hidden: {file: why} of files libclang is given as empty
-    :param wrappers: the other packages' wrapper summaries (parse_units)
+    :param wrappers: the other packages' wrapper summaries (parse_units),
+      and ``wrappers_digest`` theirs (store.wrappers_digest)
     """
     hidden = hidden or {}
-    wrappers_digest = store.wrappers_digest(wrappers)
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
     try:
         safe_files.check_file(entry.file, roots=[package_path])

@@ -87,9 +87,12 @@ class ExternalWrappers:
         self._by_usr = {}
         by_name = {}
         for summary in summaries:
-            converted = Summary(
-                [Endpoint(**e) for e in summary.endpoints],
-                set(summary.publishes_members))
+            try:
+                converted = Summary(
+                    [Endpoint(**e) for e in summary.endpoints],
+                    set(summary.publishes_members))
+            except TypeError:
+                continue  # a file of another version: as if not analysed
             self._by_usr[summary.usr] = converted
             by_name.setdefault((summary.name, summary.arity), []).append(
                 converted)
