@@ -202,6 +202,8 @@ class _Walker:
         self._resolve_stored_callbacks()
         self.string_variables.resolve()
         self.facts.wrappers = self._wrappers.exported(self._definitions)
+        # cursors keep their unit's AST alive: not past the walk
+        self._definitions.clear()
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
