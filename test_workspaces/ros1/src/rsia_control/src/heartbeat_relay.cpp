@@ -1,15 +1,17 @@
 // Every endpoint is made through rsia_common's wrappers: a heartbeat per
 // received pose (a helper object whose beat() publishes), and the relay
-// state published from main's 2 Hz Rate loop through a latched publisher.
+// state published from main's 2 Hz Rate loop through a latched publisher
+// and through a StatusBoard, whose body is compiled into rsia_common.
 #include <geometry_msgs/PoseStamped.h>
 #include <ros/ros.h>
+#include <rsia_common/status_board.h>
 #include <rsia_common/topics.h>
 #include <std_msgs/String.h>
 
 class HeartbeatRelay
 {
 public:
-  explicit HeartbeatRelay(ros::NodeHandle& nh) : heartbeat_(nh, "heartbeat")
+  explicit HeartbeatRelay(ros::NodeHandle& nh) : heartbeat_(nh, "heartbeat"), board_(nh, "relay_board")
   {
     state_pub_ = rsia_common::advertiseLatched<std_msgs::String>(nh, "relay_state");
     pose_sub_ = rsia_common::subscribeTo(nh, "pose", &HeartbeatRelay::onPose, this);
@@ -20,6 +22,7 @@ public:
     std_msgs::String state;
     state.data = received_ > 0 ? "receiving" : "waiting";
     state_pub_.publish(state);
+    board_.post(state.data);
   }
 
 private:
@@ -31,6 +34,7 @@ private:
 
   int received_ = 0;
   rsia_common::Heartbeat heartbeat_;
+  rsia_common::StatusBoard board_;
   ros::Publisher state_pub_;
   ros::Subscriber pose_sub_;
 };
