@@ -253,13 +253,15 @@ def _own_include_dirs(path):
 def _model_entries(entries, path, workspace_package_dirs, stub_dir):
     from colcon_rsia.frontend.cpp.model_mode import repair
     from colcon_rsia.frontend.cpp.model_mode import prepare_model_arguments
+    from colcon_rsia.frontend.cpp.model_mode.include_scan import FileCache
     model_entries = []
+    files = FileCache()
     for entry in entries:
         arguments = prepare_model_arguments(
             source=entry.file, arguments=entry.arguments,
             package_path=path,
             workspace_package_dirs=list(workspace_package_dirs),
-            stub_dir=stub_dir, directory=entry.directory)
+            stub_dir=stub_dir, directory=entry.directory, files=files)
         # what clang's errors show missing is declared there (repair.py)
         header = repair.repair_header(stub_dir, entry.file)
         repair.ensure_repair_header(
@@ -460,8 +462,9 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         repairs = repair.repairs_from_diagnostics(
             errors, read_line,
             texts=[text_of(f) for f in sorted({e[1] for e in errors})],
-            declared=repair.declared_names(
-                text_of(f) for f in sorted(own_files)),
+            declared=set().union(*(
+                repair.file_declarations(f, text_of(f))
+                for f in sorted(own_files))),
             stand_in=lambda relative: os.path.isfile(
                 os.path.join(stub_dir, relative)))
         if not repair.add_repairs(header, relative, repairs):

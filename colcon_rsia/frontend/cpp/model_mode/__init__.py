@@ -42,6 +42,7 @@ from colcon_rsia.frontend.cpp.model_mode.arguments import is_inside
 from colcon_rsia.frontend.cpp.model_mode.arguments import real_path
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_LIBRARIES
+from colcon_rsia.frontend.cpp.model_mode.include_scan import FileCache
 from colcon_rsia.frontend.cpp.model_mode.include_scan import Scanner
 from colcon_rsia.frontend.cpp.model_mode.source_names import code_only
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
@@ -52,7 +53,8 @@ from colcon_rsia.frontend.cpp.model_mode.stubs import write_stand_ins
 
 
 def prepare_model_arguments(*, source, arguments, package_path,
-                            workspace_package_dirs, stub_dir, directory=None):
+                            workspace_package_dirs, stub_dir, directory=None,
+                            files=None):
     """Return the libclang arguments of the model mode for one TU.
 
     Keeps ``-D``, ``-U``, ``-std`` and the include directories inside the
@@ -72,8 +74,11 @@ def prepare_model_arguments(*, source, arguments, package_path,
       never inside a package's source directory)
     :param str directory: the compile command's directory, for relative
       include directories (default: the current directory)
+    :param files: an include_scan.FileCache shared by the units of the
+      package (default: one for this unit)
     :rtype: list
     """
+    files = files or FileCache()
     roots = [real_path(package_path)] + [real_path(d) for d in workspace_package_dirs]
     stub_dir = os.path.abspath(stub_dir)
     if any(is_inside(real_path(stub_dir), root) for root in roots):
@@ -86,7 +91,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
     # (a wrapper's body is read there)
     for package_dir in workspace_package_dirs:
         include = os.path.join(real_path(package_dir), 'include')
-        if os.path.isdir(include) and ('-I', include) not in search:
+        if files.isdir(include) and ('-I', include) not in search:
             kept += ['-I', include]
             search.append(('-I', include))
     # the workspace's own copy of a library the model stands for (a
@@ -94,10 +99,10 @@ def prepare_model_arguments(*, source, arguments, package_path,
     # headers win there, the model everywhere else
     own_first = [(option, directory) for option, directory in search
                  if option != '-iquote' and any(
-                     os.path.isdir(os.path.join(directory, top))
+                     files.isdir(os.path.join(directory, top))
                      for top in MODEL_LIBRARIES)]
     scanner = Scanner(roots=roots, search=search, stub_dir=stub_dir,
-                      before_model=[d for _, d in own_first])
+                      before_model=[d for _, d in own_first], files=files)
     scanner.scan(os.path.abspath(source))
     # the sources as code: no comments, literals or include lines
     codes = [code_only(text) for text in scanner.user_texts]

@@ -43,10 +43,37 @@ _model_includes_cache = {}
 _system_dirs_cache = []
 
 
+class FileCache:
+    """Whether paths are files or directories, asked once.
+
+    The units of one package search the same include directories for the
+    same headers (hundreds of directories in a large workspace): one cache
+    serves them all. Only for the time of one package's preparation: the
+    stand-ins written meanwhile are outside the directories searched.
+    """
+
+    def __init__(self):  # noqa: D107
+        self._isfile = {}
+        self._isdir = {}
+
+    def isfile(self, path):  # noqa: D102
+        found = self._isfile.get(path)
+        if found is None:
+            found = self._isfile[path] = os.path.isfile(path)
+        return found
+
+    def isdir(self, path):  # noqa: D102
+        found = self._isdir.get(path)
+        if found is None:
+            found = self._isdir[path] = os.path.isdir(path)
+        return found
+
+
 class Scanner:
     """Follows the includes of a source through the files we can read."""
 
-    def __init__(self, *, roots, search, stub_dir, before_model=()):  # noqa: D107
+    def __init__(self, *, roots, search, stub_dir,  # noqa: D107
+                 before_model=(), files=None):
         self.roots = roots
         self.search = search
         self.stub_dir = stub_dir
@@ -60,7 +87,7 @@ class Scanner:
         # system header this machine lacks)
         self.missing = {}
         self.user_texts = []
-        self._isfile = {}
+        self.files = files or FileCache()
         # whether the package's own code includes a ROS 2 header (the dual
         # model headers include ROS 2 ones behind #ifdef: theirs never count)
         self.ros2 = False
@@ -124,11 +151,7 @@ class Scanner:
         return None
 
     def _exists(self, path):
-        found = self._isfile.get(path)
-        if found is None:
-            found = os.path.isfile(path)
-            self._isfile[path] = found
-        return found
+        return self.files.isfile(path)
 
     @staticmethod
     def _is_system(name):

@@ -395,6 +395,24 @@ def declared_names(texts):
     return names
 
 
+_file_declarations = {}
+
+
+def file_declarations(path, text):
+    """declared_names of one file, read once per content.
+
+    Every repair round of every unit asks for the names of the package's
+    headers it includes: the same headers, the same text, again and again.
+    """
+    key = (path, len(text), hash(text))
+    found = _file_declarations.get(key)
+    if found is None:
+        found = frozenset(declared_names([text]))
+        with _shared_lock:
+            _file_declarations[key] = found
+    return found
+
+
 _model_texts = []
 
 
