@@ -79,7 +79,8 @@ def prepare_model_arguments(*, source, arguments, package_path,
     :rtype: list
     """
     files = files or FileCache()
-    roots = [real_path(package_path)] + [real_path(d) for d in workspace_package_dirs]
+    roots = [files.realpath(package_path)] + \
+        [files.realpath(d) for d in workspace_package_dirs]
     stub_dir = os.path.abspath(stub_dir)
     if any(is_inside(real_path(stub_dir), root) for root in roots):
         raise ValueError(
@@ -90,7 +91,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
     # headers, outside the sources: their sources' include/ stand for them
     # (a wrapper's body is read there)
     for package_dir in workspace_package_dirs:
-        include = os.path.join(real_path(package_dir), 'include')
+        include = os.path.join(files.realpath(package_dir), 'include')
         if files.isdir(include) and ('-I', include) not in search:
             kept += ['-I', include]
             search.append(('-I', include))

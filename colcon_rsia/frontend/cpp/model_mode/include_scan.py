@@ -55,6 +55,15 @@ class FileCache:
     def __init__(self):  # noqa: D107
         self._isfile = {}
         self._isdir = {}
+        self._real = {}
+        # {(search directories, include name): the file it finds}
+        self.found = {}
+
+    def realpath(self, path):  # noqa: D102
+        found = self._real.get(path)
+        if found is None:
+            found = self._real[path] = real_path(path)
+        return found
 
     def isfile(self, path):  # noqa: D102
         found = self._isfile.get(path)
@@ -88,6 +97,10 @@ class Scanner:
         self.missing = {}
         self.user_texts = []
         self.files = files or FileCache()
+        # the directories an include searches after its own (keys of
+        # files.found)
+        self._angle_dirs = tuple(self.angle_dirs)
+        self._quote_dirs = tuple(self.quote_dirs) + self._angle_dirs
         # whether the package's own code includes a ROS 2 header (the dual
         # model headers include ROS 2 ones behind #ifdef: theirs never count)
         self.ros2 = False
@@ -133,17 +146,25 @@ class Scanner:
     def _scannable(self, path):
         if path.startswith(MODEL_HEADERS_DIR + os.sep):
             return True
-        real = real_path(path)
+        real = self.files.realpath(path)
         return any(is_inside(real, root) for root in self.roots)
 
     def resolve(self, name, quoted, including_dir):
         """The file an include finds in the model or source directories."""
         if os.path.isabs(name):
             return name if self._exists(name) else None
-        dirs = []
         if quoted:
-            dirs = [including_dir] + self.quote_dirs
-        dirs += self.angle_dirs
+            found = self._first(name, [including_dir])
+            if found is not None:
+                return found
+            key = (self._quote_dirs, name)
+        else:
+            key = (self._angle_dirs, name)
+        if key not in self.files.found:
+            self.files.found[key] = self._first(name, key[0])
+        return self.files.found[key]
+
+    def _first(self, name, dirs):
         for directory in dirs:
             candidate = os.path.normpath(os.path.join(directory, name))
             if self._exists(candidate):
