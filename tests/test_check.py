@@ -96,12 +96,13 @@ def test_one_bag_each_topic_against_its_prediction(system_workspace,
 def test_two_bags_around_a_change(system_workspace, tmp_path, storage):
     before = write_bag(tmp_path / 'before', {
         '/odom': 50.0, '/base_status': 5.0, '/plan': 5.0,
-        '/filter_stats': 1.0}, storage)
+        '/filter_stats': 1.0, '/rosout': 6.0}, storage)
     # base_driver changed: its odometry halves (predicted: it may); the
-    # planner's timer-paced /plan also changes, which the model rules out
+    # planner's timer-paced /plan also changes, which the model rules out;
+    # the log lines on /rosout come from no analysed node's code
     after = write_bag(tmp_path / 'after', {
         '/odom': 25.0, '/base_status': 5.0, '/plan': 2.0,
-        '/filter_stats': 1.0}, storage)
+        '/filter_stats': 1.0, '/rosout': 4.0}, storage)
     args = ['--bag', str(before), '--bag', str(after),
             '--changed', 'sysbot_drivers/base_driver']
     result = json.loads(_check(
@@ -115,6 +116,8 @@ def test_two_bags_around_a_change(system_workspace, tmp_path, storage):
     assert miss['topic'] == '/plan'
     assert any('sysbot_navigation/planner -> /plan' in edge
                for edge in miss['kept_by']), miss
+    assert result['changes_outside_the_model'] == [
+        {'topic': '/rosout', 'before_hz': 6.0, 'after_hz': 4.0}]
     # base_driver's own /base_status could have changed; it did not
     assert [t['topic'] for t in result['predicted_but_unchanged']] == \
         ['/base_status']

@@ -66,13 +66,17 @@ def check_two(system, before, after, changed, *,
     """The check@1 result of two bags around a change of `changed`.
 
     A topic changed when both bags measure it and the rates differ by
-    more than the tolerance, or when only one bag has it.
+    more than the tolerance, or when only one bag has it. A change of a
+    topic no analysed node publishes (``/rosout``, which every node's client
+    library feeds with its log lines) says nothing about the model's edges:
+    it is listed apart, never as unexpected.
     """
     predicted = predict_rates(system)
     changes, kept = what_if(system, changed=changed, model_name=model_name)
     may_change = {c['topic'] for c in changes}
     topics = []
     unexpected = []
+    outside = []
     unchanged_predicted = []
     for name in sorted(set(before) | set(after) | set(predicted)):
         old = before[name].hz if name in before else None
@@ -88,7 +92,10 @@ def check_two(system, before, after, changed, *,
             'name': name, 'before_hz': _round(old), 'after_hz': _round(new),
             'predicted_hz': rate.hz if rate is not None else None,
             'status': status, 'predicted_to_change': name in may_change})
-        if status == CHANGED and name not in may_change:
+        if status == CHANGED and rate is None:
+            outside.append({'topic': name, 'before_hz': _round(old),
+                            'after_hz': _round(new)})
+        elif status == CHANGED and name not in may_change:
             unexpected.append({
                 'topic': name, 'before_hz': _round(old),
                 'after_hz': _round(new),
@@ -100,6 +107,7 @@ def check_two(system, before, after, changed, *,
     result = _result(topics, tolerance, changed=sorted(changed))
     result['model'] = model_name
     result['unexpected_changes'] = unexpected
+    result['changes_outside_the_model'] = outside
     result['predicted_but_unchanged'] = unchanged_predicted
     return result
 
@@ -116,7 +124,8 @@ def _result(topics, tolerance, changed):
         'schema': CHECK_SCHEMA, 'tolerance': tolerance,
         'changed': changed, 'topics': topics,
         'counts': dict(sorted(counts.items())),
-        'unexpected_changes': [], 'predicted_but_unchanged': []}
+        'unexpected_changes': [], 'changes_outside_the_model': [],
+        'predicted_but_unchanged': []}
 
 
 def check_to_text(result):
@@ -145,6 +154,11 @@ def check_to_text(result):
             lines.append(f"  unexpected change of {miss['topic']}: "
                          f"{_hz(miss['before_hz'])} -> "
                          f"{_hz(miss['after_hz'])} ({kept})")
+        for topic in result['changes_outside_the_model']:
+            lines.append(f"  changed outside the model: {topic['topic']} "
+                         f"({_hz(topic['before_hz'])} -> "
+                         f"{_hz(topic['after_hz'])}; no analysed node "
+                         'publishes it)')
         for topic in result['predicted_but_unchanged']:
             lines.append(f'  predicted to change, unchanged: '
                          f"{topic['topic']} ({_hz(topic['after_hz'])})")
