@@ -243,6 +243,9 @@ def test_uninstalled_ros_scripts_are_nodes_run_from_source(tmp_path):
         'test/fake_publisher.py': node_script,
         'tools_pkg/__init__.py': '',
         'tools_pkg/cli.py': node_script,
+        # a package inside this one: its scripts are its own
+        'nested_pkg/package.xml': '<package><name>nested_pkg</name></package>',
+        'nested_pkg/scripts/talker.py': node_script,
     })
     layout = find_python_nodes(str(package))
     assert [(n.executable, n.installed) for n in layout.nodes] == \

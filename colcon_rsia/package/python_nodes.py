@@ -202,11 +202,13 @@ def _uninstalled_ros_scripts(package_path):
     """Python programs anywhere in the package that start a ROS node."""
     found = []
     for dirpath, dirnames, filenames in os.walk(package_path):
-        # a Python package's files are modules, not scripts
+        # a Python package's files are modules, not scripts; a package
+        # nested in this one has its own scripts
         dirnames[:] = sorted(
             d for d in dirnames
             if d not in SKIPPED_DIRECTORIES and not d.startswith('.') and
-            not os.path.isfile(os.path.join(dirpath, d, '__init__.py')))
+            not os.path.isfile(os.path.join(dirpath, d, '__init__.py')) and
+            not os.path.exists(os.path.join(dirpath, d, 'package.xml')))
         for filename in sorted(filenames):
             path = os.path.join(dirpath, filename)
             # scripts are `tool.py` or `tool`, never `tool.cpp`
