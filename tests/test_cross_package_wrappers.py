@@ -93,3 +93,106 @@ def test_a_wrappers_file_of_another_version_is_no_crash(tmp_path):
     assert not [d for d in summary.diagnostics if 'internal error' in d]
     publishers, _ = _relay_topics(summary)
     assert 'relay_status' in publishers and 'relay_gauge' not in publishers
+
+
+LIFECYCLE_BASE = r"""
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "rclcpp_lifecycle/lifecycle_node.hpp"
+
+namespace acme_common
+{
+// the workspace's own LifecycleNode: its endpoints all have depth 10
+class LifecycleNode : public rclcpp_lifecycle::LifecycleNode
+{
+public:
+  explicit LifecycleNode(const std::string & name)
+  : rclcpp_lifecycle::LifecycleNode(name) {}
+
+  template<typename MessageT>
+  typename rclcpp_lifecycle::LifecyclePublisher<MessageT>::SharedPtr
+  create_publisher(const std::string & topic)
+  {
+    return rclcpp_lifecycle::LifecycleNode::create_publisher<MessageT>(
+      topic, rclcpp::QoS(10));
+  }
+
+  template<typename MessageT, typename CallbackT>
+  typename rclcpp::Subscription<MessageT>::SharedPtr
+  create_subscription(const std::string & topic, CallbackT && callback)
+  {
+    return rclcpp_lifecycle::LifecycleNode::create_subscription<MessageT>(
+      topic, rclcpp::QoS(10), std::forward<CallbackT>(callback));
+  }
+};
+}  // namespace acme_common
+"""
+
+PLANNER = r"""
+#include <memory>
+#include "acme_common/lifecycle_node.hpp"
+#include "geometry_msgs/msg/pose_stamped.hpp"
+#include "nav_msgs/msg/path.hpp"
+
+class Planner : public acme_common::LifecycleNode
+{
+public:
+  Planner() : acme_common::LifecycleNode("planner")
+  {
+    plan_pub_ = create_publisher<nav_msgs::msg::Path>("plan");
+    goal_sub_ = create_subscription<geometry_msgs::msg::PoseStamped>(
+      "goal", [this](geometry_msgs::msg::PoseStamped::ConstSharedPtr) {
+        plan_pub_->publish(nav_msgs::msg::Path());
+      });
+  }
+
+private:
+  rclcpp_lifecycle::LifecyclePublisher<nav_msgs::msg::Path>::SharedPtr plan_pub_;
+  rclcpp::Subscription<geometry_msgs::msg::PoseStamped>::SharedPtr goal_sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<Planner>();
+  rclcpp::spin(node->get_node_base_interface());
+}
+"""
+
+
+def test_a_lifecycle_node_subclass_of_another_package_wraps_the_api(
+        tmp_path):
+    """create_publisher<M>(topic) of the workspace's LifecycleNode subclass.
+
+    The node calls its base's overrides, defined in another package's
+    header: each is read through, the topic and message type are the
+    node's own, and the publisher, published only from the goal
+    subscription's callback, is dependent.
+    """
+    src = tmp_path / 'src'
+    files = {
+        'acme_common/include/acme_common/lifecycle_node.hpp': LIFECYCLE_BASE,
+        'acme_common/CMakeLists.txt': 'project(acme_common)\n',
+        'acme_planner/src/planner.cpp': PLANNER,
+        'acme_planner/CMakeLists.txt': (
+            'cmake_minimum_required(VERSION 3.8)\nproject(acme_planner)\n'
+            'add_executable(planner src/planner.cpp)\n'),
+    }
+    for relative, text in files.items():
+        (src / relative).parent.mkdir(parents=True, exist_ok=True)
+        (src / relative).write_text(text)
+    both = ('acme_common', 'acme_planner')
+    summary = _analyse(src, tmp_path / 'build', 'acme_planner', both)
+    (node,) = summary.nodes
+    assert [(p.topic, p.msg_type, p.api, p.label)
+            for p in node.publishers] == [
+        ('plan', 'nav_msgs::msg::Path',
+         'acme_common::LifecycleNode::create_publisher', 'dependent')]
+    assert [(s.topic, s.msg_type, s.api, s.callback)
+            for s in node.subscribers] == [
+        ('goal', 'geometry_msgs::msg::PoseStamped',
+         'acme_common::LifecycleNode::create_subscription',
+         'lambda@src/planner.cpp:14')]

@@ -382,3 +382,14 @@ def aliased_class(cursor):
     if declaration is None or declaration.kind not in CLASS_KINDS:
         return None
     return declaration
+
+
+def top_level_scopes(tokens):
+    """Positions of the `::` of a name outside its template arguments."""
+    depth = 0
+    scopes = []
+    for i, token in enumerate(tokens):
+        depth += token.count('<') - token.count('>')
+        if token == '::' and depth == 0:
+            scopes.append(i)
+    return scopes

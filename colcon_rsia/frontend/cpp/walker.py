@@ -60,6 +60,7 @@ from colcon_rsia.frontend.cpp.cursors import REPAIRED_PREFIX
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
 from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
+from colcon_rsia.frontend.cpp.cursors import top_level_scopes
 from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.every_nth import every_nth
@@ -526,9 +527,11 @@ class _Walker:
         children = child_cursors(cursor)
         if not children or children[0].kind != CK.MEMBER_REF_EXPR:
             return None
-        # a dependent member has no spelling: the name follows `.`/`->`
+        # a dependent member has no spelling: the name follows `.`/`->`,
+        # or the last `::` of `Base::create_publisher<M>(…)` (this->)
         tokens = [t.spelling for t in source_tokens(children[0])]
-        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')]
+        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')] or \
+            top_level_scopes(tokens)
         if not accesses:
             return None
         rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
