@@ -52,11 +52,11 @@ def match_sites(sites, lines):
     """The call sites matched one to one with a recorded line.
 
     A site takes the fact on its own line first. The others are paired
-    nearest first, across all sites, within :data:`LINE_SLACK` lines: a
+    nearest first, across all sites, within :data:`LINE_SLACK` lines. A
     fact is recorded where its call expression starts, at or before the
     line of the callee's name (``pub_ = Class<M, P>::`` on one line,
-    ``create_publisher(`` on the next), so a fact before the site is nearer than one
-    after it at the same distance.
+    ``create_publisher(`` on the next): a fact before the site is nearer
+    than one after it at the same distance.
     """
     free = {key: collections.Counter(value) for key, value in lines.items()}
     matched = set()

@@ -194,7 +194,7 @@ _MAIN_GUARD = re.compile(
     rb'^if\s+__name__\s*==\s*[\'"]__main__[\'"]\s*:', re.MULTILINE)
 # it starts ROS itself, so it is a node and not a tool around one
 _STARTS_ROS = re.compile(rb'\b(rclpy\.init|rospy\.init_node)\s*\(')
-# scripts larger than this are not read for the guard (never a node script)
+# the guard and the ROS start are looked for in a script's first megabyte
 _MAX_SCRIPT_BYTES = 1 << 20
 
 
