@@ -619,6 +619,18 @@ def _interrupt_workspace(root):
         'add_custom_target(wait ALL COMMAND sleep 120)\n')
 
 
+def test_a_job_killed_by_ctrl_c_is_an_interrupt_and_a_failed_make_is_not():
+    # which of colcon and the job's process Ctrl-C reaches first varies:
+    # colcon reports SIGINT_RESULT, or the job's own result, killed by
+    # SIGINT (-2); make's 2 is a failed build
+    from colcon_core.subprocess import SIGINT_RESULT
+    from colcon_rsia.event_handler.rsia import _is_interrupt
+    assert _is_interrupt(SIGINT_RESULT)
+    assert _is_interrupt(-signal.SIGINT) and _is_interrupt('-2')
+    assert not _is_interrupt(2) and not _is_interrupt(0)
+    assert not _is_interrupt(-signal.SIGTERM)
+
+
 # Ctrl-C while another package builds: colcon's executor stops its jobs
 # and tells the event handlers. (After the last build job, while colcon
 # waits for the analysis, the interrupt ends the analysis too, through the

@@ -3,6 +3,7 @@
 
 from concurrent.futures import ThreadPoolExecutor
 import os
+import signal
 import threading
 import time
 
@@ -175,9 +176,10 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
 
 
 def _is_interrupt(rc):
-    # what colcon's executors give the jobs they stop on Ctrl-C (not the
-    # number 2: make returns 2 for a failed build)
-    return rc == SIGINT_RESULT
+    # what colcon's executors give the jobs they stop on Ctrl-C, or the
+    # result of a job whose process Ctrl-C reached first (killed by SIGINT:
+    # -2); not the number 2, which make returns for a failed build
+    return rc == SIGINT_RESULT or str(rc) == str(-signal.SIGINT)
 
 
 def _stop_before_exit():
