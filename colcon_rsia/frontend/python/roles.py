@@ -41,17 +41,27 @@ class Roles:
             namespace=namespace if ns_literal else None,
             location=self.location(node), name_param=name_param))
 
+    def _topics(self, api, node, name_arg, context):
+        """([(topic, literal)], the topic's argument) of an endpoint call.
+
+        The API's fixed topics (tf's), else the one its argument names;
+        None when that argument is no name (nothing is recorded).
+        """
+        if api.implicit_topics:
+            return [(topic, True) for topic in api.implicit_topics], None
+        argument = call_argument(node, name_arg)
+        topic, literal = self._topic(argument, context)
+        if topic is None:
+            return None
+        return [(topic, literal)], argument
+
     def _on_publisher(self, api, name, node, context):
         msg_type = api.msg_type or self._msg_type(
             call_argument(node, api.msg_type_arg), context)
-        if api.implicit_topics:
-            topics = [(topic, True) for topic in api.implicit_topics]
-        else:
-            argument = call_argument(node, api.name)
-            topic, literal = self._topic(argument, context)
-            if topic is None:
-                return
-            topics = [(topic, literal)]
+        found = self._topics(api, node, api.name, context)
+        if found is None:
+            return
+        topics, argument = found
         handle, handle_name = self._target(node, context)
         for topic, literal in topics:
             self.facts.publishers.append(model.PublisherFact(
@@ -67,14 +77,10 @@ class Roles:
             name_arg, type_arg = api.ros1_form
         msg_type = api.msg_type or self._msg_type(
             call_argument(node, type_arg), context)
-        if api.implicit_topics:
-            topics = [(topic, True) for topic in api.implicit_topics]
-        else:
-            argument = call_argument(node, name_arg)
-            topic, literal = self._topic(argument, context)
-            if topic is None:
-                return
-            topics = [(topic, literal)]
+        found = self._topics(api, node, name_arg, context)
+        if found is None:
+            return
+        topics, argument = found
         callback, scope, offset = self._callback(
             call_argument(node, api.callback), context)
         callback_args = call_argument(node, api.callback_args)
