@@ -139,14 +139,20 @@ def _through_package_functions(sites, nodes, units):
             if call.kind == 'call':
                 calls[call.caller].add(call.callee)
 
+    reached_from = {}
+
     def reached(function):
-        found, frontier, seen = set(), {function}, {function}
-        for _ in range(MAX_CALL_DEPTH):
-            for current in frontier:
-                found |= made.get(current, set())
-            frontier = {c for f in frontier for c in calls.get(f, ())} - seen
-            seen |= frontier
-        return found
+        # many call sites call the same helper: its endpoints, found once
+        if function not in reached_from:
+            found, frontier, seen = set(), {function}, {function}
+            for _ in range(MAX_CALL_DEPTH):
+                for current in frontier:
+                    found |= made.get(current, set())
+                frontier = {c for f in frontier
+                            for c in calls.get(f, ())} - seen
+                seen |= frontier
+            reached_from[function] = found
+        return reached_from[function]
 
     in_nodes = {(role, f.location) for node in nodes
                 for role, facts in ((PUBLISHER, node.publishers),
