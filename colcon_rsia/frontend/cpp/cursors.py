@@ -172,9 +172,18 @@ def explicit_template_type(call):
     # not the class of a static member (`ros::SubscribeOptions::create<M>`)
     owner = call.referenced.semantic_parent \
         if call.referenced is not None else None
+    # a dependent call refers to nothing: only what follows its `<` is a
+    # template argument (`Base::create_publisher<M>`, not `Base`)
+    arguments_from = -1
+    if call.referenced is None:
+        opening = [t for t in source_tokens(callee) if t.spelling == '<']
+        if not opening:
+            return None
+        arguments_from = opening[0].extent.start.offset
     for child in candidates:
         if child.kind == CK.TYPE_REF and not (
-                owner is not None and same_cursor(child.referenced, owner)):
+                owner is not None and same_cursor(child.referenced, owner)) \
+                and child.extent.start.offset > arguments_from:
             return child.type.spelling or child.spelling
     return None
 

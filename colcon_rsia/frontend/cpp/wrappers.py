@@ -388,11 +388,7 @@ def _message_type(call, type_params):
     ``create_publisher<T>`` in ``template <class T>``: the wrapper's
     caller gives it; ``create_publisher<std_msgs::msg::String>``: that.
     """
-    # a dependent call (`Base::create_publisher<T>(…)`) refers to nothing:
-    # its qualifier's class is no template argument
-    written = _written_template_argument(call) if call.referenced is None \
-        else None
-    written = written or explicit_template_type(call) or \
+    written = explicit_template_type(call) or \
         _written_template_argument(call)
     if written and written.split('::')[-1] in type_params:
         return None, True
