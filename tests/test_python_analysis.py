@@ -200,6 +200,9 @@ def test_setup_cfg_entry_points_and_install_programs(tmp_path):
         'project(cmake_pkg)\n'
         'install(PROGRAMS tools/relay.py DESTINATION lib/${PROJECT_NAME})\n'
         '# install(PROGRAMS tools/old.py DESTINATION lib/${PROJECT_NAME})\n'
+        '#[[ retired:\n'
+        'install(PROGRAMS tools/old.py DESTINATION lib/${PROJECT_NAME})\n'
+        ']]\n'
         'install(PROGRAMS tools/run.sh DESTINATION lib/${PROJECT_NAME})\n')
     for name in ('relay.py', 'old.py'):
         (cmake / 'tools' / name).write_text('print(1)\n')

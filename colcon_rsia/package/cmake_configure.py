@@ -246,16 +246,21 @@ def _read_result(result_file, key):
         return None
 
 
-# a command invocation starts its line (CMake's grammar); comments out
 _COMMENT = re.compile(r'#\[(=*)\[.*?\]\1\]|#[^\n]*', re.DOTALL)
+# a command invocation starts its line (CMake's grammar); comments out
 _COMMAND_CALL = re.compile(r'^[ \t]*([A-Za-z_]\w*)[ \t]*\(', re.MULTILINE)
+
+
+def strip_comments(text):
+    """CMake code without its line and bracket (``#[[ … ]]``) comments."""
+    return _COMMENT.sub('', text)
 
 
 def called_commands(cmake_files):
     """The names of the commands the CMake files call, lower case, sorted."""
     names = set()
     for content in cmake_files.values():
-        text = _COMMENT.sub('', content.decode('utf-8', 'replace'))
+        text = strip_comments(content.decode('utf-8', 'replace'))
         names.update(m.group(1).lower() for m in _COMMAND_CALL.finditer(text))
     return sorted(names)
 

@@ -17,6 +17,7 @@ from colcon_rsia import safe_files
 from colcon_rsia.package.cmake_configure import configure_package
 from colcon_rsia.package.cmake_configure import executables_from_codemodel
 from colcon_rsia.package.cmake_configure import is_cxx_source
+from colcon_rsia.package.cmake_configure import strip_comments
 import defusedxml.ElementTree as ElementTree
 
 NODELET_BASE_CLASS = 'nodelet::Nodelet'
@@ -69,7 +70,7 @@ _SET = re.compile(r'^[ \t]*set\s*\(\s*(\w+)\s+([^)\s]+)\s*\)',
 def cmakelists_text(package_path):
     """The package's CMakeLists.txt without its comments, or None."""
     try:
-        return re.sub(r'#[^\n]*', '', safe_files.read_text(
+        return strip_comments(safe_files.read_text(
             os.path.join(package_path, 'CMakeLists.txt'),
             roots=[package_path]))
     except OSError:
