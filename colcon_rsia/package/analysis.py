@@ -31,6 +31,8 @@ from colcon_rsia.package.assembly import executable_nodes
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
+from colcon_rsia.package.call_sites import CXX_HEADER_EXTENSIONS
+from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.node_facts import select_functions
 from colcon_rsia.package.nodes import find_components
@@ -81,8 +83,6 @@ HEADER_MODES = ('model', 'exact')
 
 DEFAULT_STD = 'c++17'
 
-CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C')
-CXX_HEADERS = ('.h', '.hh', '.hpp', '.hxx', '.h++', '.ipp')
 # directories whose sources are never a node's (tests, generated output)
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
@@ -227,7 +227,7 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
             d for d in dirs
             if d not in SKIPPED_DIRECTORIES and not d.startswith('.'))
         for file in sorted(files):
-            if not file.endswith(CXX_EXTENSIONS):
+            if not file.endswith(CXX_SOURCE_EXTENSIONS):
                 continue
             arguments = ['-x', 'c++', f'-std={std}', '-I', root]
             for directory in include_dirs:
@@ -497,7 +497,7 @@ def _package_declarations(package_path):
                 dirs[:] = [d for d in dirs if d not in SKIPPED_DIRECTORIES
                            and not d.startswith('.')]
                 for name in files:
-                    if name.endswith(CXX_EXTENSIONS + CXX_HEADERS):
+                    if name.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS):
                         try:
                             texts.append(safe_files.read_text(
                                 os.path.join(root, name), errors='replace'))
