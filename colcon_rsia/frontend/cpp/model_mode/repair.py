@@ -29,6 +29,9 @@ import threading
 
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
+from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
+from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
+from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
 # parses of a unit after the first: each round fixes what the previous one
@@ -47,8 +50,8 @@ _NOT_NAMESPACE = re.compile(
     r"^use of undeclared identifier '(\w+)'|^expected namespace name")
 _IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
 # (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
-_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(?:<.*>)?'$")
-_TYPE_IN_CLASS = re.compile(r"^no type named '(\w+)' in '([\w:]+)(?:<.*>)?'$")
+_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
+_TYPE_IN_CLASS = re.compile(r"^no type named '(\w+)' in '([\w:]+)(<.*>)?'$")
 _INCOMPLETE = re.compile(
     r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
     r'^(?:member access into|variable has|field has) incomplete type '
@@ -226,8 +229,10 @@ _shared_lock = threading.Lock()
 
 def _shareable(repair):
     kind, name = repair
+    # (a member of a qualified class: with its class, which is shared too)
     return kind in INCLUDES or kind.startswith('macro-') or (
-        '::' in name and kind not in MEMBER_KINDS)
+        '::' in name and (kind not in MEMBER_KINDS or
+                          '::' in name.rsplit('::', 1)[0]))
 
 
 def share_repairs(header, repairs):
@@ -279,7 +284,7 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
       path), so that a message named before its header is included is
       included, not declared; None: never
     """
-    repairs = _repairs(diagnostics, read_line)
+    repairs = _repairs(diagnostics, read_line, stand_in)
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
             repairs |= _uses_of_namespace(name, texts)
@@ -492,12 +497,9 @@ def _uses_of_namespace(namespace, texts):
             if name in _KEYWORDS or name == 'template':
                 continue
             rest = after.lstrip()
-            kind, _ = _by_use(name, '::' if member else rest,
-                              unqualified=False)
-            if kind == CONSTANT and _CAMEL.match(name) and \
-                    _USING_DECLARATION.search(
-                        text[max(0, match.start() - 200):match.start()]):
-                kind = TYPE
+            kind = _by_qualified_use(
+                name, '::' if member else rest,
+                text[max(0, match.start() - 200):match.start()])
             found.add((kind, f'{namespace}::{name}'))
             if member and kind == TYPE and member not in _KEYWORDS:
                 # `ns::Grid::Ptr grid` names a nested type
@@ -508,7 +510,7 @@ def _uses_of_namespace(namespace, texts):
     return found
 
 
-def _repairs(diagnostics, read_line):
+def _repairs(diagnostics, read_line, stand_in=None):
     repairs = set()
     for message, file, line, column in diagnostics:
         text = read_line(file, line) if file else ''
@@ -535,12 +537,12 @@ def _repairs(diagnostics, read_line):
                 repairs.add((MACRO_VOID if after.startswith('(')
                              else MACRO_EMPTY, name))
             else:
-                repairs.add((_template_kind(after) if after.startswith('<')
+                repairs.add((template_kind(after) if after.startswith('<')
                              else TYPE, name))
             continue
         match = _UNKNOWN_TEMPLATE.match(message)
         if match:
-            repairs.add((_template_kind(after),
+            repairs.add((template_kind(after),
                          _qualified(match.group(1), text, column)))
             continue
         match = _IN_STD.match(message)
@@ -564,25 +566,25 @@ def _repairs(diagnostics, read_line):
             kind = MEMBER_TYPE if nested else \
                 MEMBER_TEMPLATE if after.startswith('<') else MEMBER
             repairs.add((kind, f'{match.group(2)}::{match.group(1)}'))
+            repairs |= _unknown_owner(match, stand_in)
             continue
         match = _TYPE_IN_CLASS.match(message)
         if match:
             # pcl::PointCloud<P>::Ptr: a nested type, likewise
             repairs.add((MEMBER_TYPE, f'{match.group(2)}::{match.group(1)}'))
+            repairs |= _unknown_owner(match, stand_in)
             continue
         match = _IN_NAMESPACE.match(message)
         if match:
             what, name, namespace = match.groups()
             if what in ('type', 'class'):
-                kind = _template_kind(after) if after.startswith('<') \
+                kind = template_kind(after) if after.startswith('<') \
                     else TYPE
             elif what == 'template':
-                kind = _template_kind(after)
+                kind = template_kind(after)
             else:
-                kind = _by_use(name, after, unqualified=False)[0]
-                if kind == CONSTANT and _CAMEL.match(name) and \
-                        _USING_DECLARATION.search(text[:max(0, column - 1)]):
-                    kind = TYPE
+                kind = _by_qualified_use(name, after,
+                                         text[:max(0, column - 1)])
             repairs.add((kind, f'{namespace}::{name}'))
             continue
         match = _NOT_A_TEMPLATE.match(message)
@@ -618,6 +620,22 @@ def _repairs(diagnostics, read_line):
     return repairs
 
 
+def _unknown_owner(match, stand_in):
+    """The class a member repair goes into, if an unknown library's.
+
+    An unknown-library header (rsia_model/unknown/<namespace>.h, see
+    stubs.py) declared it without the member. Its repair hides that
+    declaration (the header checks the repair's guard) and takes the
+    members the unit uses. A class of the model or of the workspace is
+    never declared again.
+    """
+    owner, arguments = match.group(2), match.group(3)
+    if stand_in is None or '::' not in owner or not stand_in(
+            os.path.join(UNKNOWN_DIR, owner.split('::')[0] + '.h')):
+        return set()
+    return {(TEMPLATE if arguments else TYPE, owner)}
+
+
 def _qualified(name, text, column):
     """`ns::Name` when the line qualifies the name clang calls unknown."""
     before = text[:max(0, column - 1)]
@@ -642,67 +660,28 @@ def _after(text, column, message):
     return text[found + len(name):].lstrip()
 
 
+# what comes before `ns::name` in `std::pair<ns::name, ...>`
+_FIRST_TEMPLATE_ARGUMENT = re.compile(r'\w<\s*(?:::\s*)?(?:\w+\s*::\s*)*$')
 # what comes before `Name` in `using ns::Name;`: a CamelCase name a
 # using-declaration brings in is a class far more often than an enumerator
 _USING_DECLARATION = re.compile(r'\busing\s+(?:::\s*)?(?:\w+\s*::\s*)*$')
 
 
-def _template_kind(after):
-    """TEMPLATE, or TEMPLATE:<shape> when arguments of its use are values.
-
-    The shape has a letter per argument of the use the line shows: 't' for
-    a type, 'v' for a value, so that `Eigen::Matrix<double, 3, 1>` is
-    declared with a type and two value parameters ('template:tvv').
-    """
-    arguments = _template_arguments(after)
-    shape = ''.join('v' if _VALUE_ARGUMENT.search(a) else 't'
-                    for a in arguments)
-    return f'{TEMPLATE}:{shape}' if 'v' in shape else TEMPLATE
-
-
-# a template argument that is a value: a number, true/false, sizeof, an
-# ALL_CAPS constant (not T or N alone: those name types as often), or
-# arithmetic on names
-_VALUE_ARGUMENT = re.compile(
-    r"^[-+]?\s*(?:\d[\w.']*|true|false|sizeof\b)|"
-    r'^(?:\w+::)*[A-Z][A-Z0-9_]+$|'
-    r'\w\s*[-+/%]\s*\w')
-
-
-def _template_arguments(after):
-    """The arguments of `<...>` at the start of ``after`` (all on the line)."""
-    if not after.startswith('<'):
-        return []
-    arguments, current, depth = [], [], 0
-    for char in after[1:]:
-        if depth == 0 and char in ',>':
-            arguments.append(''.join(current).strip())
-            current = []
-            if char == '>':
-                return arguments if all(arguments) else []
-            continue
-        if char in '<([{':
-            depth += 1
-        elif char in '>)]}':
-            depth -= 1
-        current.append(char)
-    return []  # the list goes on past the line: shape unknown
-
-
-def _template_head(kind):
-    """`template <...> ` for a TEMPLATE kind, by its shape."""
-    shape = kind.partition(':')[2]
-    if not shape:
-        return 'template <class...> '
-    # long long, not auto (C++17): ROS 1 code is compiled as C++14;
-    # enumerators and bools convert to it
-    parameters = ['class' if c == 't' else 'long long' for c in shape]
-    parameters.append(parameters[-1] + '...')
-    return f"template <{', '.join(parameters)}> "
-
-
 def _base_kind(kind):
     return kind.partition(':')[0]
+
+
+def _by_qualified_use(name, after, before):
+    """The kind of ``ns::name`` from the code around it on its line."""
+    kind = _by_use(name, after, unqualified=False)[0]
+    if kind == CONSTANT and _CAMEL.match(name) and \
+            _USING_DECLARATION.search(before):
+        return TYPE
+    if kind in (OBJECT, CONSTANT) and _FIRST_TEMPLATE_ARGUMENT.search(before):
+        # std::pair<boost::uuids::uuid, T>: a first template argument is a
+        # type far more often than a value
+        return TYPE
+    return kind
 
 
 def _by_use(name, after, *, unqualified):
@@ -721,7 +700,7 @@ def _by_use(name, after, *, unqualified):
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')):
-        return _template_kind(after), name
+        return template_kind(after), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
@@ -769,7 +748,7 @@ def _render(repairs, source):
         if kind == NAMESPACE:
             namespaces, body = namespaces + [short], ''
         elif _base_kind(kind) in (TYPE, TEMPLATE):
-            head = _template_head(kind) if kind != TYPE else ''
+            head = template_head(kind) if kind != TYPE else ''
             body = ''.join({
                 MEMBER: f' static ::rsia_model::Any {m};',
                 MEMBER_TYPE: f' using {m} = ::rsia_model::Unknown;',
@@ -780,8 +759,9 @@ def _render(repairs, source):
                     f'{{ using ::rsia_model::Unknown::Unknown; '
                     f'using ::rsia_model::Unknown::operator=;{body} }};')
         elif kind == FUNCTION:
-            body = (f'template <class... RsiaArgs> ::rsia_model::Any& '
-                    f'{short}(RsiaArgs&&...);')
+            # explicit template arguments (`f<T>(x)`) go to RsiaT
+            body = (f'template <class... RsiaT, class... RsiaArgs> '
+                    f'::rsia_model::Any& {short}(RsiaArgs&&...);')
         elif kind == CONSTANT:
             value = constant_values.setdefault(name, len(constant_values) + 1)
             body = f'constexpr int {short} = {value};'

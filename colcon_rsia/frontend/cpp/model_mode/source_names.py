@@ -126,10 +126,12 @@ def code_only(text):
 
 
 def used_names(codes):
-    """(members, constants, field types, {pkg: {include}} of *_msgs types).
+    """The names the stand-ins' catch-all members must have.
 
-    The include is the message's header: ``std_msgs/Header.h`` (ROS 1) or
-    ``std_msgs/msg/header.hpp`` (ROS 2).
+    :returns: (members, constants, field types, {pkg: {include}} of *_msgs
+      types, member templates, members used as values). The include is the
+      message's header: ``std_msgs/Header.h`` (ROS 1) or
+      ``std_msgs/msg/header.hpp`` (ROS 2).
     """
     members = set()
     constants = set()
@@ -154,9 +156,10 @@ def used_names(codes):
     members = {n for n in members if member_ok(n)}
     constants = {n for n in constants if member_ok(n)} - members
     # a member function template, unless some use takes it for a value
+    values &= members
     templates = {n for n in templates - values if n in members}
     return members - templates, constants, field_types - members, \
-        msgs_types, templates
+        msgs_types, templates, values
 
 
 def std_defines(codes):
@@ -201,3 +204,57 @@ def snake_case(name):
     """The header stem rosidl gives a type: ``TFMessage`` -> ``tf_message``."""
     return re.sub(r'(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])', '_',
                   name).lower()
+
+
+def template_kind(after):
+    """TEMPLATE, or TEMPLATE:<shape> when arguments of its use are values.
+
+    The shape has a letter per argument of the use the line shows: 't' for
+    a type, 'v' for a value, so that `Eigen::Matrix<double, 3, 1>` is
+    declared with a type and two value parameters ('template:tvv').
+    """
+    arguments = template_arguments(after)
+    shape = ''.join('v' if VALUE_ARGUMENT.search(a) else 't'
+                    for a in arguments)
+    return f'template:{shape}' if 'v' in shape else 'template'
+
+
+# a template argument that is a value: a number, true/false, sizeof, an
+# ALL_CAPS constant (not T or N alone: those name types as often), or
+# arithmetic on names
+VALUE_ARGUMENT = re.compile(
+    r"^[-+]?\s*(?:\d[\w.']*|true|false|sizeof\b)|"
+    r'^(?:\w+::)*[A-Z][A-Z0-9_]+$|'
+    r'\w\s*[-+/%]\s*\w')
+
+
+def template_arguments(after):
+    """The arguments of `<...>` at the start of ``after`` (all on the line)."""
+    if not after.startswith('<'):
+        return []
+    arguments, current, depth = [], [], 0
+    for char in after[1:]:
+        if depth == 0 and char in ',>':
+            arguments.append(''.join(current).strip())
+            current = []
+            if char == '>':
+                return arguments if all(arguments) else []
+            continue
+        if char in '<([{':
+            depth += 1
+        elif char in '>)]}':
+            depth -= 1
+        current.append(char)
+    return []  # the list goes on past the line: shape unknown
+
+
+def template_head(kind):
+    """`template <...> ` for a TEMPLATE kind, by its shape."""
+    shape = kind.partition(':')[2]
+    if not shape:
+        return 'template <class...> '
+    # long long, not auto (C++17): ROS 1 code is compiled as C++14;
+    # enumerators and bools convert to it
+    parameters = ['class' if c == 't' else 'long long' for c in shape]
+    parameters.append(parameters[-1] + '...')
+    return f"template <{', '.join(parameters)}> "

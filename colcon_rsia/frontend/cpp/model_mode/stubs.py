@@ -15,6 +15,7 @@ from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
+from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
@@ -42,7 +43,7 @@ def write_stand_ins(scanner, codes, stub_dir):
     :returns: (the extra include dirs, the namespaces of unknown includes
       that the TU declares itself)
     """
-    members, constants, field_types, msgs_types, templates = \
+    members, constants, field_types, msgs_types, templates, values = \
         used_names(codes)
     stubs = {}   # include name -> content
     for name, kind in sorted(scanner.missing.items()):
@@ -79,7 +80,8 @@ def write_stand_ins(scanner, codes, stub_dir):
         for namespace, names in unknown.items():
             _merge_unknown(stub_dir, namespace, names)
         _merge_implicit(stub_dir, implicit)
-        _merge_fields(stub_dir, members, constants, field_types, templates)
+        _merge_fields(stub_dir, members, constants, field_types, templates,
+                      values)
     return sorted(up_dirs), own
 
 
@@ -134,10 +136,11 @@ def write_atomically(path, content):
 
 
 def _merge_fields(stub_dir, members, constants, field_types=(),
-                  templates=()):
+                  templates=(), values=()):
     """Grow rsia_model/fields.h to hold these member, constant, type names.
 
-    :param templates: members called with template arguments only
+    :param templates: members called with template arguments
+    :param values: members some use takes for a value (`msg.at = 3`)
     """
     path = os.path.join(stub_dir, FIELDS_HEADER)
     old = read_text(path) or ''
@@ -148,14 +151,19 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     old_types = set(re.findall(r'RSIA_MODEL_FIELD_TYPE\((\w+)\)', old))
     old_templates = set(re.findall(
         r'RSIA_MODEL_FIELD_TEMPLATE\((\w+)\)', old))
+    old_values = set(re.findall(r'^// value (\w+)$', old, re.M))
     if old and members <= old_members | old_templates and \
             constants <= old_constants | old_members and \
             set(field_types) <= old_types | old_members and \
-            set(templates) <= old_templates | old_members:
+            set(templates) <= old_templates | old_values and \
+            set(values) <= old_values:
         return
-    # a name keeps the first form it was given (units share the file)
+    # a member one unit calls with template arguments (`mat.at<T>(i)`) is a
+    # member template for all units, unless one takes it for a value: the
+    # template takes plain calls too (`v.at(i)`)
+    all_values = sorted(old_values | set(values))
     all_templates = sorted(
-        (old_templates | set(templates)) - old_members)
+        (old_templates | set(templates)) - set(all_values))
     all_members = sorted((old_members | members) - set(all_templates))
     taken = set(all_members) | set(all_templates)
     all_constants = sorted((old_constants | constants) - taken)
@@ -174,6 +182,7 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     for name in all_types:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TYPE({name})',
                   '#endif']
+    lines += [f'// value {name}' for name in all_values]
     # distinct values: constants may be `case` labels of one switch
     for i, name in enumerate(all_constants):
         lines += [f'#ifndef {name}', f'RSIA_MODEL_CONSTANT({name}, {i + 1})',
@@ -201,16 +210,20 @@ def _unknown_namespaces(stubs, codes):
     """Guess what unknown includes declare.
 
     :returns: ({namespace: (types {name: static members}, objects,
-      constants)}, sorted namespaces the TU declares itself)
-
+      constants, templates {name: is a function})}, sorted namespaces the
+      TU declares itself)
 
     For the namespace of each unknown include directory (a package's name is
     its namespace, by ROS convention), the names the sources use after
     `namespace::` are declared: CamelCase names (and names used to declare
     a variable) as catch-all classes, ALL_CAPS names as constants, others as
-    catch-all objects (functions, variables). Templates (`ns::Name<`) are
-    left undeclared. A namespace the sources open themselves, or one with
-    messages of this TU, is left alone (and named in the second result).
+    catch-all objects (functions, variables). A name used with template
+    arguments (`ns::Name<T>`, or `Name<T>` after `using ns::Name;`) is a
+    template: a class template when capitalised, a function template
+    otherwise, unless a use has value arguments (`ns::Grid<3>`), whose
+    parameters the repairs declare from the use (repair.py). A namespace
+    the sources open themselves, or one with messages of this TU, is left
+    alone (and named in the second result).
     """
     namespaces = {guessed_namespace(name) for name, content in stubs.items()
                   if 'kind=empty' in content.split('\n', 1)[0]} - {None}
@@ -227,7 +240,8 @@ def _unknown_namespaces(stubs, codes):
         use = re.compile(
             r'(?<![\w:])' + namespace + r'\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
-        types, objects, constants, templates = {}, set(), set(), set()
+        types, objects, constants = {}, set(), set()
+        template_kinds = {}  # name -> the kinds of its uses (template_kind)
         for code in codes:
             for match in use.finditer(code):
                 name, after, member = match.group(1), match.group(2), \
@@ -235,7 +249,8 @@ def _unknown_namespaces(stubs, codes):
                 if not member_ok(name) or name == namespace:
                     continue
                 if after and after.strip() == '<':
-                    templates.add(name)
+                    template_kinds.setdefault(name, set()).add(
+                        template_kind(code[match.end(1):].lstrip()))
                 elif member and re.match(r'^[a-z][a-z0-9_]*$', name) and \
                         CAMEL.match(member):
                     # ns::inner::Type: a nested namespace, which the
@@ -250,18 +265,40 @@ def _unknown_namespaces(stubs, codes):
                     constants.add(name)
                 else:
                     objects.add(name)
-        for name in templates:
+        for name, kinds in _templates_used_unqualified(namespace, codes):
+            template_kinds.setdefault(name, set()).update(kinds)
+        templates = {name: not name[:1].isupper()
+                     for name, kinds in template_kinds.items()
+                     if kinds == {'template'}}
+        for name in template_kinds:
             types.pop(name, None)
-        objects -= set(types) | templates
-        constants -= set(types) | templates
-        if types or objects or constants:
-            result[namespace] = (types, objects, constants)
+        objects -= set(types) | set(template_kinds)
+        constants -= set(types) | set(template_kinds)
+        if types or objects or constants or templates:
+            result[namespace] = (types, objects, constants, templates)
     return result, own
+
+
+def _templates_used_unqualified(namespace, codes):
+    """[(name, {template kinds})] of `using ns::name;` + `name<...>`."""
+    brought = {name for code in codes for name in re.findall(
+        r'\busing\s+(?:::\s*)?' + namespace + r'\s*::\s*([A-Za-z_]\w*)\s*;',
+        code)}
+    found = []
+    for name in sorted(brought):
+        if not member_ok(name):
+            continue
+        use = re.compile(r'(?<![\w.:>])' + name + r'\s*<(?![<=])')
+        kinds = {template_kind(code[match.end() - 1:])
+                 for code in codes for match in use.finditer(code)}
+        if kinds:
+            found.append((name, kinds))
+    return found
 
 
 def _merge_unknown(stub_dir, namespace, names):
     """Grow rsia_model/unknown/<namespace>.h by these declarations."""
-    types, objects, constants = names
+    types, objects, constants, templates = names
     path = os.path.join(stub_dir, UNKNOWN_DIR, namespace + '.h')
     old = read_text(path) or ''
     if old.startswith(STUB_MARKER):
@@ -270,8 +307,14 @@ def _merge_unknown(stub_dir, namespace, names):
                 match.group(2).split())
         objects |= set(re.findall(r'^// object (\w+)$', old, re.M))
         constants |= set(re.findall(r'^// constant (\w+)$', old, re.M))
-    objects -= set(types)
-    constants -= set(types) | objects
+        for match in re.finditer(r'^// (class|function) template (\w+)$',
+                                 old, re.M):
+            templates.setdefault(match.group(2), match.group(1) == 'function')
+    # a name another unit used with template arguments is a template
+    for name in templates:
+        types.pop(name, None)
+    objects -= set(types) | set(templates)
+    constants -= set(types) | objects | set(templates)
     guard = f'RSIA_MODEL_UNKNOWN_{namespace}_H'
     lines = [
         f'{STUB_MARKER} kind=unknown: namespace {namespace}',
@@ -292,6 +335,21 @@ def _merge_unknown(stub_dir, namespace, names):
             lines += [f'#ifndef {member}',
                       f'  static ::rsia_model::Any {member};', '#endif']
         lines += ['};', '#endif']
+    for name, is_function in sorted(templates.items()):
+        undeclared = f'#if !defined({name}) && ' \
+            f'!defined(RSIA_REPAIRED__{namespace}__{name})'
+        if is_function:
+            # explicit arguments go to RsiaT, the call's are deduced
+            lines += [f'// function template {name}', undeclared,
+                      'template <class... RsiaT, class... RsiaA>',
+                      f'::rsia_model::Any& {name}(RsiaA&&...);', '#endif']
+        else:
+            lines += [f'// class template {name}', undeclared,
+                      f'template <class...> struct {name} : '
+                      '::rsia_model::Unknown', '{',
+                      '  using ::rsia_model::Unknown::Unknown;',
+                      '  using ::rsia_model::Unknown::operator=;', '};',
+                      '#endif']
     for name in sorted(objects):
         lines += [f'// object {name}', f'#ifndef {name}',
                   f'extern ::rsia_model::Any {name};', '#endif']

@@ -291,6 +291,12 @@ public:
   int64_t nanoseconds() const;
   rcl_clock_type_t get_clock_type() const;
   Duration operator-(const Time & rhs) const;
+  // `now() - msg.header.stamp`: a message stand-in converts to a Duration as
+  // well as to a Time, so the two operators above would tie (M&&: as
+  // exact as the catch-all operators of rsia_model::Any, which Time
+  // converts to)
+  template<class M, class = typename std::decay<M>::type::rsia_model_message_tag>
+  Duration operator-(M && time_msg) const;
   Time operator+(const Duration & rhs) const;
   Time operator-(const Duration & rhs) const;
   Time & operator+=(const Duration & rhs);

@@ -304,7 +304,59 @@ struct Unknown : Fields
 // the value of a function-like macro the model lacks (see repair.py)
 Any& any_value();
 
+// std::min(msg.speed, 1.0f), std::clamp(msg.x, lo, hi): std's templates
+// cannot deduce one type from a field and a number. The overloads below take
+// such a mix (some operands fields, some not) and return the type of the
+// first operand that is no field.
+template <class RsiaV>
+using IsField = std::is_base_of<Any, typename std::decay<RsiaV>::type>;
+
+template <class... RsiaVs>
+struct FirstNonField
+{
+  using type = Any;
+};
+template <class RsiaV, class... RsiaVs>
+struct FirstNonField<RsiaV, RsiaVs...>
+{
+  using type = typename std::conditional<IsField<RsiaV>::value,
+                                         typename FirstNonField<RsiaVs...>::type,
+                                         typename std::decay<RsiaV>::type>::type;
+};
+
+template <class... RsiaVs>
+struct MixesFields : std::false_type
+{
+};
+template <class RsiaA, class RsiaB>
+struct MixesFields<RsiaA, RsiaB>
+  : std::integral_constant<bool, IsField<RsiaA>::value != IsField<RsiaB>::value>
+{
+};
+template <class RsiaA, class RsiaB, class RsiaC>
+struct MixesFields<RsiaA, RsiaB, RsiaC>
+  : std::integral_constant<bool, MixesFields<RsiaA, RsiaB>::value ||
+                                     MixesFields<RsiaB, RsiaC>::value>
+{
+};
+
+template <class... RsiaVs>
+using MixedResult =
+    typename std::enable_if<MixesFields<RsiaVs...>::value,
+                            typename FirstNonField<RsiaVs...>::type>::type;
+
 }  // namespace rsia_model
+
+namespace std
+{
+template <class RsiaA, class RsiaB>
+::rsia_model::MixedResult<RsiaA, RsiaB> min(const RsiaA&, const RsiaB&);
+template <class RsiaA, class RsiaB>
+::rsia_model::MixedResult<RsiaA, RsiaB> max(const RsiaA&, const RsiaB&);
+template <class RsiaV, class RsiaLo, class RsiaHi>
+::rsia_model::MixedResult<RsiaV, RsiaLo, RsiaHi> clamp(const RsiaV&, const RsiaLo&,
+                                                     const RsiaHi&);
+}  // namespace std
 
 // field values as keys of unordered containers (a DiagnosticLevel key)
 namespace std
