@@ -755,3 +755,78 @@ def test_include_scan_survives_odd_sources(tmp_path):
     assert (Path(up[0]) / '..' / 'gone' / 'up.h').resolve().is_file()
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def _prepare(package, source, stub_dir):
+    return model_mode.prepare_model_arguments(
+        source=str(source), arguments=['-std=gnu++17'],
+        package_path=str(package), workspace_package_dirs=[],
+        stub_dir=str(stub_dir))
+
+
+def test_real_code_idioms_type_check_without_repairs(tmp_path):
+    # what autoware-style code does with the ROS model and libraries the
+    # model lacks; each line was a parse error before the model took it
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    source = package / 'src' / 'node.cpp'
+    source.write_text(r"""
+#include <algorithm>
+#include <chrono>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/header.hpp>
+#include <geo_utils/stop_watch.hpp>
+#include <geo_utils/geometry.hpp>
+
+using geo_utils::StopWatch;
+
+double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
+           const geo_utils::Vector2d & a, const geo_utils::Vector2d & b)
+{
+  // a class template and a function template of an unknown library
+  StopWatch<std::chrono::milliseconds> stop_watch;
+  const bool enabled = geo_utils::get_or_declare<bool>(node, "enabled");
+  // arithmetic and comparisons on its classes
+  geo_utils::Vector2d d = a - b;
+  const bool same = a == b;
+  // a vector of its class filled from a catch-all value
+  std::vector<geo_utils::Polygon> polygons;
+  polygons.push_back(geo_utils::make_polygon(d));
+  // a time from now minus a message's stamp, a field against a number
+  const double age = (node.now() - header.stamp).seconds();
+  const double capped = std::min(header.stamp.sec, 10);
+  return enabled && same ? age : capped;
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    unknown = (stub_dir / 'rsia_model' / 'unknown' / 'geo_utils.h').read_text()
+    assert 'template <class...> struct StopWatch' in unknown
+    assert 'get_or_declare(RsiaA&&...);' in unknown
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_member_one_unit_calls_with_template_arguments_is_a_template(
+        tmp_path):
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    first = package / 'src' / 'first.cpp'
+    first.write_text(
+        '#include <cv_like/mat.hpp>\n'
+        'int first(cv_like::Mat & mat) { return mat.at(0); }\n')
+    second = package / 'src' / 'second.cpp'
+    second.write_text(
+        '#include <cv_like/mat.hpp>\n'
+        'void second(cv_like::Mat & mat) { mat.at<unsigned char>(1, 2) = 3; }\n')
+    stub_dir = tmp_path / 'stubs'
+    _prepare(package, first, stub_dir)
+    # the first unit wrote `at` as a plain member; the second's use makes
+    # it a member template, which takes the first's plain call too
+    arguments = _prepare(package, second, stub_dir)
+    fields = (stub_dir / 'rsia_model' / 'fields.h').read_text()
+    assert 'RSIA_MODEL_FIELD_TEMPLATE(at)' in fields
+    for source in (first, second):
+        tu = _parse(file=source, arguments=arguments, directory=package)
+        assert cpp.parse_diagnostics(tu) == []

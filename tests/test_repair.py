@@ -185,14 +185,62 @@ def _lines(text):
     ("no member named 'gen_params' in the global namespace",
      'std::shared_ptr<::gen_params::ParamListener> listener_;', 20,
      {('namespace', 'gen_params')}),
-    # a global function is no namespace
+    # a global function is no namespace: a function of a C library
     ("no member named 'helper' in the global namespace", '::helper(3);', 3,
-     set()),
+     {('function', 'helper')}),
+    ("no type named 'cudaError_t' in the global namespace",
+     'const ::cudaError_t status = run();', 9, {('type', 'cudaError_t')}),
+    # the first argument of a template is a type
+    ("no member named 'uuid' in namespace 'boost::uuids'",
+     'using Pair = std::pair<boost::uuids::uuid, int>;', 38,
+     {('type', 'boost::uuids::uuid')}),
+    # a macro taken for a function declaration
+    ('expected function body after function declarator',
+     'REGISTER_POINT_3D(Point, double, cs::cartesian, x, y, z)', 58,
+     {('macro-void', 'REGISTER_POINT_3D')}),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, column)], _lines(line))
     assert found == expected
+
+
+def test_a_function_brought_in_by_a_using_declaration_is_declared_there():
+    # `using geo::calc;` alone looks like a value; the call that failed for
+    # it shows a function, which a global declaration would conflict with
+    lines = {1: 'using geo::calc;', 2: 'double d = calc(a, b);'}
+    found = repair.repairs_from_diagnostics(
+        [("no member named 'calc' in namespace 'geo'", 'a.cpp', 1, 12),
+         ("use of undeclared identifier 'calc'", 'a.cpp', 2, 12)],
+        lambda file, line: lines[line])
+    assert found == {('function', 'geo::calc')}
+
+
+def test_a_member_of_an_unknown_librarys_class_goes_into_its_repair():
+    # pcl::PointCloud<P>::ConstPtr, where rsia_model/unknown/pcl.h declared
+    # the class without it: the repair declares the class with the member
+    message = "no type named 'ConstPtr' in 'pcl::PointCloud<pcl::PointXYZ>'"
+    line = _lines('pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud;')
+    found = repair.repairs_from_diagnostics(
+        [(message, 'a.cpp', 1, 34)], line,
+        stand_in=lambda relative: relative == 'rsia_model/unknown/pcl.h')
+    assert found == {('member-type', 'pcl::PointCloud::ConstPtr'),
+                     ('template', 'pcl::PointCloud')}
+    # a class of a library we know nothing of is not declared again
+    assert repair.repairs_from_diagnostics(
+        [(message, 'a.cpp', 1, 34)], line, stand_in=lambda relative: False) \
+        == {('member-type', 'pcl::PointCloud::ConstPtr')}
+
+
+def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'walls::VirtualWall'), ('type', 'walls::VirtualWalls'),
+        ('type', 'walls::Status')})
+    text = header.read_text()
+    assert 'using VirtualWalls = std::vector<VirtualWall>;' in text
+    assert 'struct VirtualWall :' in text
+    assert 'struct Status :' in text  # no `Statu` to be a vector of
 
 
 def test_a_message_named_before_its_header_is_included_from_the_stand_ins():

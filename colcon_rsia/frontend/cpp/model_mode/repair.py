@@ -67,7 +67,14 @@ _NOT_A_TEMPLATE = re.compile(
 # `::gen::ParamListener` of a generated header: the scope is unknown
 _NOT_A_SCOPE = re.compile(
     r"^'(\w+)' is not a class, namespace, or enumeration$|"
-    r"^no (?:member|type|template) named '(\w+)' in the global namespace$")
+    r"^no (member|type|template) named '(\w+)' in the global namespace$")
+# a line that is a call of an ALL_CAPS name (with an underscore: not a
+# class called FOO) and what clang says of it when the name is undefined
+_MACRO_STATEMENT = re.compile(r'^\s*([A-Z][A-Z0-9]*_[A-Z0-9_]*)\s*\(')
+_DECLARATION_EXPECTED = re.compile(
+    r'^expected function body after function declarator$|'
+    r'^(?:C\+\+ requires a type specifier|a type specifier is required) '
+    r'for all declarations$')
 _OVERRIDE = re.compile(
     r"only virtual member functions can be marked '(?:override|final)'|"
     r"marked '(?:override|final)' but does not override")
@@ -349,6 +356,16 @@ def _one_kind_each(repairs):
         current = chosen.get(name)
         if current is None or _rank(kind) < _rank(current[0]):
             chosen[name] = (kind, name)
+    # `using ns::f;` (only a value to the line) and then `f(x)`, which
+    # failed for it: ns::f is what the call needs, and a global f would
+    # conflict with the using-declaration
+    for kind, name in list(chosen.values()):
+        short = name.rsplit('::', 1)[-1]
+        used = chosen.get(short)
+        if '::' in name and kind in (OBJECT, CONSTANT) and used and \
+                used[0] in (FUNCTION, OBJECT, CONSTANT):
+            chosen[name] = (used[0], name)
+            del chosen[short]
     classes = {name for kind, name in chosen.values()
                if _base_kind(kind) in (TYPE, TEMPLATE)}
     # a class the code also names qualified (`using ns::VehicleInfo;`, or a
@@ -594,12 +611,26 @@ def _repairs(diagnostics, read_line, stand_in=None):
         match = _NOT_A_SCOPE.match(message)
         if match and (match.group(1) or after.startswith('::')):
             name = _qualified(match.group(1), text, column) \
-                if match.group(1) else match.group(2)
+                if match.group(1) else match.group(3)
             repairs.add((NAMESPACE, name))
+            continue
+        if match:
+            # ::cudaFree(p), ::cudaError_t: a C library's global name
+            what, name = match.group(2), match.group(3)
+            kind = TYPE if what == 'type' else template_kind(after) \
+                if what == 'template' else _by_use(
+                    name, after, unqualified=False)[0]
+            repairs.add((kind, name))
             continue
         match = _UNDEFINED_MACRO.match(message)
         if match:
             repairs.add((MACRO_CONDITION, match.group(1)))
+            continue
+        match = _MACRO_STATEMENT.match(text)
+        if match and _DECLARATION_EXPECTED.match(message):
+            # BOOST_GEOMETRY_REGISTER_POINT_3D(...) at namespace level,
+            # taken for a function declaration: a macro the model lacks
+            repairs.add((MACRO_VOID, match.group(1)))
             continue
         if _OVERRIDE.search(message):
             repairs.add((NO_OVERRIDE, 'override'))
@@ -747,6 +778,13 @@ def _render(repairs, source):
             continue
         if kind == NAMESPACE:
             namespaces, body = namespaces + [short], ''
+        elif kind == TYPE and short.endswith('s') and \
+                (TYPE, name[:-1]) in repairs and name not in members:
+            # VirtualWalls beside VirtualWall, ConstLanelets beside
+            # ConstLanelet: by the convention of ROS code (autoware,
+            # lanelet2) a vector of them; as a class of its own, it would
+            # differ from the `std::vector<VirtualWall>` other code writes
+            body = f'using {short} = std::vector<{short[:-1]}>;'
         elif _base_kind(kind) in (TYPE, TEMPLATE):
             head = template_head(kind) if kind != TYPE else ''
             body = ''.join({

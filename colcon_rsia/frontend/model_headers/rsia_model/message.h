@@ -118,6 +118,8 @@ struct AnyValue;
 
 struct Any
 {
+  // a container's element (std::back_inserter(msg.points))
+  using value_type = AnyValue;
   Any& operator=(const Any&);
   template <class RsiaV>
   Any& operator=(const RsiaV&);
@@ -279,6 +281,11 @@ struct Fields
 // catch-all members of Fields.
 struct Unknown : Fields
 {
+  // no message (see field_target.h): an Any becomes one through the
+  // constructor below alone; with Any's conversion to a message's
+  // reference as well, `polygons.push_back(any)` would tie between
+  // push_back(const T&) and push_back(T&&)
+  typedef int rsia_model_message_tag;
   Unknown();
   template <class RsiaFirst, class... RsiaArgs>
   Unknown(RsiaFirst&&, RsiaArgs&&...);
@@ -300,6 +307,45 @@ struct Unknown : Fields
   template <class RsiaV>
   Unknown& operator=(RsiaV&&);
 };
+
+// Arithmetic and comparisons on the classes of unknown libraries
+// (Eigen::Vector2d a - b, cv::Mat m * 2, fs::path p / "x"), where one
+// operand is such a class and neither is an Any (which has its own): an
+// Any, as every other use of theirs
+template <class RsiaA, class RsiaB>
+using UnknownOperands = typename std::enable_if<
+    (std::is_base_of<Unknown, typename std::decay<RsiaA>::type>::value ||
+     std::is_base_of<Unknown, typename std::decay<RsiaB>::type>::value) &&
+        !std::is_base_of<Any, typename std::decay<RsiaA>::type>::value &&
+        !std::is_base_of<Any, typename std::decay<RsiaB>::type>::value,
+    int>::type;
+
+#define RSIA_MODEL_UNKNOWN_BINARY_(op, result)                         \
+  template <class RsiaA, class RsiaB, UnknownOperands<RsiaA, RsiaB> = 0> \
+  result operator op(RsiaA&&, RsiaB&&);
+RSIA_MODEL_UNKNOWN_BINARY_(+, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(-, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(*, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(/, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(%, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(&, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(|, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(^, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(<<, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(>>, Any)
+RSIA_MODEL_UNKNOWN_BINARY_(==, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(!=, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(<, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(>, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(<=, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(>=, bool)
+RSIA_MODEL_UNKNOWN_BINARY_(+=, Any&)
+RSIA_MODEL_UNKNOWN_BINARY_(-=, Any&)
+RSIA_MODEL_UNKNOWN_BINARY_(*=, Any&)
+RSIA_MODEL_UNKNOWN_BINARY_(/=, Any&)
+#undef RSIA_MODEL_UNKNOWN_BINARY_
+template <class RsiaA, UnknownOperands<RsiaA, RsiaA> = 0>
+Any operator-(RsiaA&&);
 
 // the value of a function-like macro the model lacks (see repair.py)
 Any& any_value();
