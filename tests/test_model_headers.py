@@ -18,6 +18,7 @@ from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.cpp import model_mode
+from colcon_rsia.frontend.cpp.model_mode import repair
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
@@ -780,6 +781,7 @@ def test_real_code_idioms_type_check_without_repairs(tmp_path):
 #include <geo_utils/geometry.hpp>
 
 using geo_utils::StopWatch;
+using geo_utils::motion::calc_length;
 
 double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
            const geo_utils::Vector2d & a, const geo_utils::Vector2d & b)
@@ -796,7 +798,12 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
   // a time from now minus a message's stamp, a field against a number
   const double age = (node.now() - header.stamp).seconds();
   const double capped = std::min(header.stamp.sec, 10);
-  return enabled && same ? age : capped;
+  // a message's SharedPtr from a polling subscriber of that library
+  std_msgs::msg::Header::ConstSharedPtr last;
+  last = geo_utils::poller.take_data();
+  // a function of a namespace inside it, also through a using-declaration
+  const double length = calc_length(d) + geo_utils::motion::calc_length(d);
+  return enabled && same ? age + length : capped;
 }
 """)
     stub_dir = tmp_path / 'stubs'
@@ -804,6 +811,7 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
     unknown = (stub_dir / 'rsia_model' / 'unknown' / 'geo_utils.h').read_text()
     assert 'template <class...> struct StopWatch' in unknown
     assert 'get_or_declare(RsiaA&&...);' in unknown
+    assert 'namespace motion\n' in unknown
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
 
@@ -830,3 +838,26 @@ def test_a_member_one_unit_calls_with_template_arguments_is_a_template(
     for source in (first, second):
         tu = _parse(file=source, arguments=arguments, directory=package)
         assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_repair_of_another_kind_hides_the_unknown_librarys_declaration(
+        tmp_path):
+    # the unknown-library header takes `geo_utils::to_msg` for an object
+    # (no call on the line); the unit's repair header, force-included
+    # first, declared it as a function: the header must step aside
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    source = package / 'src' / 'node.cpp'
+    source.write_text(
+        '#include <geo_utils/convert.hpp>\n'
+        'auto convert = geo_utils::to_msg;\n'
+        'void f() { geo_utils::to_msg(1, 2); }\n')
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    unknown = (stub_dir / 'rsia_model' / 'unknown' / 'geo_utils.h').read_text()
+    assert 'extern ::rsia_model::Any to_msg;' in unknown
+    header = repair.repair_header(str(stub_dir), str(source))
+    repair.add_repairs(header, str(source), {('function', 'geo_utils::to_msg')})
+    tu = _parse(file=source, arguments=arguments + ['-include', header],
+                directory=package)
+    assert [d for d in cpp.parse_diagnostics(tu) if 'redefinition' in d] == []

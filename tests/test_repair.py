@@ -1072,3 +1072,17 @@ def test_facts_pair_with_the_call_sites_whose_expression_they_start():
     # a fact no site is near stays unmatched, and a site without one too
     assert match_sites(sites, {('src/node.cpp', 'subscriber'): [9, 18]}) == \
         {sites[2]}
+
+
+def test_a_namespace_alias_is_repaired_through_its_target():
+    # `namespace bg = boost::geometry;` failed while boost::geometry was
+    # missing, and with it `bg::distance(a, b)`: a namespace bg would clash
+    # with the alias once boost::geometry is declared
+    code = 'namespace bg = boost::geometry;\ndouble d = bg::distance(a, b);\n'
+    lines = dict(enumerate(code.split('\n'), start=1))
+    found = repair.repairs_from_diagnostics(
+        [('expected namespace name', 'a.cpp', 1, 16),
+         ("use of undeclared identifier 'bg'", 'a.cpp', 2, 12)],
+        lambda file, line: lines[line], texts=[code])
+    assert ('namespace', 'bg') not in found
+    assert ('namespace', 'boost::geometry') in found

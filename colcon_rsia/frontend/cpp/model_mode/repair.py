@@ -291,7 +291,7 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
       path), so that a message named before its header is included is
       included, not declared; None: never
     """
-    repairs = _repairs(diagnostics, read_line, stand_in)
+    repairs = _unaliased(_repairs(diagnostics, read_line, stand_in), texts)
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
             repairs |= _uses_of_namespace(name, texts)
@@ -300,6 +300,31 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
         if r[0] in INCLUDES or (
             not _declared(r[1], declared) and
             not any(part in _KEYWORDS for part in r[1].split('::')))})}
+
+
+_ALIAS_DEFINITION = re.compile(
+    r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*\w+)*)\s*;')
+
+
+def _unaliased(repairs, texts):
+    """Repairs of `bg::distance` as of `boost::geometry::distance`.
+
+    `namespace bg = boost::geometry;` fails while boost::geometry is
+    missing, and then so does every `bg::` after it: declaring a namespace
+    bg would clash with the alias once its target exists.
+    """
+    aliases = {match.group(1): re.sub(r'\s+', '', match.group(2))
+               for text in texts for match in _ALIAS_DEFINITION.finditer(text)}
+    if not aliases:
+        return repairs
+    result = set()
+    for kind, name in repairs:
+        head, _, rest = name.partition('::')
+        if head in aliases and kind not in INCLUDES and \
+                not kind.startswith('macro-'):
+            name = aliases[head] + ('::' + rest if rest else '')
+        result.add((kind, name))
+    return result
 
 
 def _included(repair, stand_in):

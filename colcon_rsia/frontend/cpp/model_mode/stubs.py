@@ -25,6 +25,7 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
 FIELDS_HEADER = os.path.join('rsia_model', 'fields.h')
 IMPLICIT_MESSAGES_HEADER = os.path.join('rsia_model', 'implicit_messages.h')
+_ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]+$')
 
 
 # directory level each)
@@ -210,8 +211,8 @@ def _unknown_namespaces(stubs, codes):
     """Guess what unknown includes declare.
 
     :returns: ({namespace: (types {name: static members}, objects,
-      constants, templates {name: is a function})}, sorted namespaces the
-      TU declares itself)
+      constants, templates {name: is a function}, nested namespaces {name:
+      names})}, sorted namespaces the TU declares itself)
 
     For the namespace of each unknown include directory (a package's name is
     its namespace, by ROS convention), the names the sources use after
@@ -241,6 +242,8 @@ def _unknown_namespaces(stubs, codes):
             r'(?<![\w:])' + namespace + r'\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
         types, objects, constants = {}, set(), set()
+        nested = {}  # nested namespace -> the names used in it
+        class_templates = set()  # (nested namespace, name)
         template_kinds = {}  # name -> the kinds of its uses (template_kind)
         for code in codes:
             for match in use.finditer(code):
@@ -251,11 +254,19 @@ def _unknown_namespaces(stubs, codes):
                 if after and after.strip() == '<':
                     template_kinds.setdefault(name, set()).add(
                         template_kind(code[match.end(1):].lstrip()))
-                elif member and re.match(r'^[a-z][a-z0-9_]*$', name) and \
-                        CAMEL.match(member):
-                    # ns::inner::Type: a nested namespace, which the
-                    # repairs declare with what is used of it (repair.py)
-                    continue
+                elif member and re.match(r'^[a-z][a-z0-9_]*$', name):
+                    # ns::inner::calc(), ns::inner::Type: a nested
+                    # namespace (a class would break `using ns::inner::f;`)
+                    names = nested.setdefault(name, set())
+                    # (ns::inner::deeper::f: deeper is left to the repairs)
+                    if member_ok(member) and not re.match(
+                            r'\s*::', code[match.end(3):]):
+                        names.add(member)
+                    if member[:1].isupper() and re.match(
+                            r'\s*<(?![<=])', code[match.end(3):]):
+                        # a class template: the repairs declare it with
+                        # the parameters of its use
+                        class_templates.add((name, member))
                 elif member or CAMEL.match(name) or (
                         after and not name.isupper()):
                     members = types.setdefault(name, set())
@@ -270,12 +281,15 @@ def _unknown_namespaces(stubs, codes):
         templates = {name: not name[:1].isupper()
                      for name, kinds in template_kinds.items()
                      if kinds == {'template'}}
-        for name in template_kinds:
+        for name, member in class_templates:
+            nested[name].discard(member)
+        for name in set(template_kinds) | set(nested):
             types.pop(name, None)
-        objects -= set(types) | set(template_kinds)
-        constants -= set(types) | set(template_kinds)
-        if types or objects or constants or templates:
-            result[namespace] = (types, objects, constants, templates)
+        objects -= set(types) | set(template_kinds) | set(nested)
+        constants -= set(types) | set(template_kinds) | set(nested)
+        if types or objects or constants or templates or nested:
+            result[namespace] = (types, objects, constants, templates,
+                                 nested)
     return result, own
 
 
@@ -298,7 +312,7 @@ def _templates_used_unqualified(namespace, codes):
 
 def _merge_unknown(stub_dir, namespace, names):
     """Grow rsia_model/unknown/<namespace>.h by these declarations."""
-    types, objects, constants, templates = names
+    types, objects, constants, templates, nested = names
     path = os.path.join(stub_dir, UNKNOWN_DIR, namespace + '.h')
     old = read_text(path) or ''
     if old.startswith(STUB_MARKER):
@@ -310,11 +324,14 @@ def _merge_unknown(stub_dir, namespace, names):
         for match in re.finditer(r'^// (class|function) template (\w+)$',
                                  old, re.M):
             templates.setdefault(match.group(2), match.group(1) == 'function')
+        for match in re.finditer(r'^// namespace (\w+):([\w ]*)$', old, re.M):
+            nested.setdefault(match.group(1), set()).update(
+                match.group(2).split())
     # a name another unit used with template arguments is a template
-    for name in templates:
+    for name in set(templates) | set(nested):
         types.pop(name, None)
-    objects -= set(types) | set(templates)
-    constants -= set(types) | objects | set(templates)
+    objects -= set(types) | set(templates) | set(nested)
+    constants -= set(types) | objects | set(templates) | set(nested)
     guard = f'RSIA_MODEL_UNKNOWN_{namespace}_H'
     lines = [
         f'{STUB_MARKER} kind=unknown: namespace {namespace}',
@@ -326,8 +343,7 @@ def _merge_unknown(stub_dir, namespace, names):
         members = sorted(types[name])
         # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
-                  f'#if !defined({name}) && '
-                  f'!defined(RSIA_REPAIRED__{namespace}__{name})',
+                  _undeclared(namespace, name),
                   f'struct {name} : ::rsia_model::Unknown', '{',
                   '  using ::rsia_model::Unknown::Unknown;',
                   '  using ::rsia_model::Unknown::operator=;']
@@ -336,8 +352,7 @@ def _merge_unknown(stub_dir, namespace, names):
                       f'  static ::rsia_model::Any {member};', '#endif']
         lines += ['};', '#endif']
     for name, is_function in sorted(templates.items()):
-        undeclared = f'#if !defined({name}) && ' \
-            f'!defined(RSIA_REPAIRED__{namespace}__{name})'
+        undeclared = _undeclared(namespace, name)
         if is_function:
             # explicit arguments go to RsiaT, the call's are deduced
             lines += [f'// function template {name}', undeclared,
@@ -350,13 +365,37 @@ def _merge_unknown(stub_dir, namespace, names):
                       '  using ::rsia_model::Unknown::Unknown;',
                       '  using ::rsia_model::Unknown::operator=;', '};',
                       '#endif']
+    for name, members in sorted(nested.items()):
+        lines += [f'// namespace {name}:' + ''.join(
+            ' ' + m for m in sorted(members)), f'namespace {name}', '{']
+        for member in sorted(members):
+            lines.append(_undeclared(f'{namespace}__{name}', member))
+            if _ALL_CAPS.match(member):
+                lines.append(f'constexpr int {member} = 1;')
+            elif member[:1].isupper():
+                lines += [f'struct {member} : ::rsia_model::Unknown', '{',
+                          '  using ::rsia_model::Unknown::Unknown;',
+                          '  using ::rsia_model::Unknown::operator=;', '};']
+            else:
+                lines += ['template <class... RsiaT, class... RsiaA>',
+                          f'::rsia_model::Any& {member}(RsiaA&&...);']
+            lines.append('#endif')
+        lines.append(f'}}  // namespace {name}')
+    # (a repair header, force-included first, may have declared any of
+    # them as another kind: a function the sources call, say)
     for name in sorted(objects):
-        lines += [f'// object {name}', f'#ifndef {name}',
+        lines += [f'// object {name}', _undeclared(namespace, name),
                   f'extern ::rsia_model::Any {name};', '#endif']
     for i, name in enumerate(sorted(constants)):
-        lines += [f'// constant {name}', f'#ifndef {name}',
+        lines += [f'// constant {name}', _undeclared(namespace, name),
                   f'constexpr int {name} = {i + 1};', '#endif']
     lines += ['', f'}}  // namespace {namespace}', '', f'#endif  // {guard}', '']
     content = '\n'.join(lines)
     if content != old:
         write_atomically(path, content)
+
+
+def _undeclared(namespace, name):
+    """The condition of a declaration no macro or repair header made."""
+    return f'#if !defined({name}) && ' \
+        f'!defined(RSIA_REPAIRED__{namespace}__{name})'

@@ -37,6 +37,10 @@ public:
   void publish(
     sensor_msgs::msg::Image::UniquePtr image,
     sensor_msgs::msg::CameraInfo::UniquePtr info, rclcpp::Time stamp) const;
+  // values of a library the model lacks (see publisher.hpp)
+  template<class AnyT, class InfoT, typename std::enable_if<
+      std::is_base_of<rsia_model::Any, typename std::decay<AnyT>::type>::value, int>::type = 0>
+  void publish(AnyT && image, InfoT && info) const;
   void shutdown();
   operator void *() const;
   bool operator<(const CameraPublisher & rhs) const;

@@ -23,6 +23,11 @@ public:
   void publish(const sensor_msgs::msg::Image & message) const;
   void publish(const sensor_msgs::msg::Image::ConstSharedPtr & message) const;
   void publish(sensor_msgs::msg::Image::UniquePtr message) const;
+  // a value of a library the model lacks (cv_bridge's toImageMsg()), which
+  // converts to a message and to its SharedPtr alike
+  template<class AnyT, typename std::enable_if<
+      std::is_base_of<rsia_model::Any, typename std::decay<AnyT>::type>::value, int>::type = 0>
+  void publish(AnyT && message) const;
   void shutdown();
   operator void *() const;
   bool operator<(const Publisher & rhs) const;

@@ -66,6 +66,26 @@ struct field_target<std::array<RsiaElement, RsiaSize>> : std::true_type
 {
 };
 
+}  // namespace rsia_model
+
+// (declared as <memory> does, which costs a third of this header's parse
+// time to units without it)
+namespace std
+{
+template <class RsiaElement>
+class shared_ptr;
+}  // namespace std
+
+namespace rsia_model
+{
+
+// `odometry_ = odometry_sub_.take_data()`, a call into a library the model
+// lacks that returns a message's SharedPtr
+template <class RsiaElement>
+struct field_target<std::shared_ptr<RsiaElement>> : std::true_type
+{
+};
+
 struct AnyElement;
 
 // What begin() and end() of a field return: iterates over AnyElement (a
