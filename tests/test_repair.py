@@ -190,6 +190,22 @@ def _lines(text):
      {('function', 'helper')}),
     ("no type named 'cudaError_t' in the global namespace",
      'const ::cudaError_t status = run();', 9, {('type', 'cudaError_t')}),
+    # the type of a cast, not a local whose declaration failed
+    ("use of undeclared identifier 'uchar'",
+     'auto c = static_cast<uchar>(v);', 22, {('type', 'uchar')}),
+    ("use of undeclared identifier 'uchar'", 'auto c = (uchar)v;', 11,
+     {('type', 'uchar')}),
+    ("use of undeclared identifier 'count'", 'total = f(count);', 11,
+     set()),
+    # a CamelCase argument is a constant, a first template argument a type
+    ("no member named 'InvalId' in namespace 'lanelet'",
+     'auto bound = LineString3d(lanelet::InvalId, points);', 36,
+     {('constant', 'lanelet::InvalId')}),
+    ("no member named 'Dynamic' in namespace 'Eigen'",
+     'Eigen::Matrix<float, Eigen::Dynamic, 1> v;', 30,
+     {('type', 'Eigen::Dynamic')}),
+    ("no member named 'Pose' in namespace 'geo'",
+     'std::pair<geo::Pose, int> p;', 16, {('type', 'geo::Pose')}),
     # the first argument of a template is a type
     ("no member named 'uuid' in namespace 'boost::uuids'",
      'using Pair = std::pair<boost::uuids::uuid, int>;', 38,
@@ -1086,3 +1102,18 @@ def test_a_namespace_alias_is_repaired_through_its_target():
         lambda file, line: lines[line], texts=[code])
     assert ('namespace', 'bg') not in found
     assert ('namespace', 'boost::geometry') in found
+
+
+def test_the_namespaces_inside_a_repaired_one_are_repaired_at_once():
+    # clang reports boost::geometry::model only once boost::geometry
+    # exists, and so on: one parse per level, without this
+    code = ('namespace bg = boost::geometry;\n'
+            'using Point = bg::model::d2::point_xy<double>;\n')
+    lines = dict(enumerate(code.split('\n'), start=1))
+    found = repair.repairs_from_diagnostics(
+        [('expected namespace name', 'a.cpp', 1, 16)],
+        lambda file, line: lines[line], texts=[code])
+    assert {('namespace', 'boost::geometry'),
+            ('namespace', 'boost::geometry::model'),
+            ('namespace', 'boost::geometry::model::d2'),
+            ('template', 'boost::geometry::model::d2::point_xy')} <= found

@@ -291,10 +291,11 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
       path), so that a message named before its header is included is
       included, not declared; None: never
     """
-    repairs = _unaliased(_repairs(diagnostics, read_line, stand_in), texts)
+    aliases = _aliases(texts)
+    repairs = _unaliased(_repairs(diagnostics, read_line, stand_in), aliases)
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
-            repairs |= _uses_of_namespace(name, texts)
+            repairs |= _uses_of_namespace(name, texts, aliases)
     return {_included(r, stand_in) for r in _one_kind_each({
         r for r in repairs
         if r[0] in INCLUDES or (
@@ -306,15 +307,19 @@ _ALIAS_DEFINITION = re.compile(
     r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*\w+)*)\s*;')
 
 
-def _unaliased(repairs, texts):
+def _aliases(texts):
+    """{alias: namespace} of the `namespace bg = boost::geometry;` here."""
+    return {match.group(1): re.sub(r'\s+', '', match.group(2))
+            for text in texts for match in _ALIAS_DEFINITION.finditer(text)}
+
+
+def _unaliased(repairs, aliases):
     """Repairs of `bg::distance` as of `boost::geometry::distance`.
 
     `namespace bg = boost::geometry;` fails while boost::geometry is
     missing, and then so does every `bg::` after it: declaring a namespace
     bg would clash with the alias once its target exists.
     """
-    aliases = {match.group(1): re.sub(r'\s+', '', match.group(2))
-               for text in texts for match in _ALIAS_DEFINITION.finditer(text)}
     if not aliases:
         return repairs
     result = set()
@@ -527,12 +532,25 @@ def model_header_for(name):
         not p.startswith(namespaces[0] + '/'), len(p), p))
 
 
-def _uses_of_namespace(namespace, texts):
-    """(kind, name) of what the texts use after ``namespace::``."""
+def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
+    """(kind, name) of what the texts use after ``namespace::``.
+
+    Also after an alias of it (`bg::` for boost::geometry), and in the
+    namespaces used inside it (`bg::model::d2::point_xy<double>`), each of
+    which clang would report only once the one around it exists: a parse
+    saved per level.
+    """
+    spellings = [namespace] + [
+        alias + namespace[len(target):]
+        for alias, target in (aliases or {}).items()
+        if namespace == target or namespace.startswith(target + '::')]
     pattern = re.compile(
-        r'(?<![\w:])' + re.escape(namespace).replace('::', r'\s*::\s*') +
-        r'\s*::\s*(\w+)(?:\s*::\s*(\w+))?(?=([^\n]{0,200}))')
+        '(?<![\\w:])(?:' + '|'.join(
+            re.escape(spelling).replace('::', r'\s*::\s*')
+            for spelling in spellings) +
+        r')\s*::\s*(\w+)(?:\s*::\s*(\w+))?(?=([^\n]{0,200}))')
     found = set()
+    inner = set()
     for text in texts:
         for match in pattern.finditer(text):
             name, member, after = match.groups()
@@ -543,12 +561,17 @@ def _uses_of_namespace(namespace, texts):
                 name, '::' if member else rest,
                 text[max(0, match.start() - 200):match.start()])
             found.add((kind, f'{namespace}::{name}'))
+            if kind == NAMESPACE:
+                inner.add(f'{namespace}::{name}')
             if member and kind == TYPE and member not in _KEYWORDS:
                 # `ns::Grid::Ptr grid` names a nested type
                 nested = _by_use(member, rest, unqualified=False)[0] == TYPE \
                     and re.match(r'(?:[&*]\s*)?[A-Za-z_]', rest)
                 found.add((MEMBER_TYPE if nested else MEMBER,
                            f'{namespace}::{name}::{member}'))
+    if depth < 3:
+        for name in sorted(inner):
+            found |= _uses_of_namespace(name, texts, aliases, depth + 1)
     return found
 
 
@@ -564,6 +587,11 @@ def _repairs(diagnostics, read_line, stand_in=None):
                 # spelled in a macro's body (THROW_ON_NULLPTR(p) expanding
                 # to rcpputils::...): a namespace, by far the most common
                 kind = NAMESPACE
+            elif kind == OBJECT and _CAST_TYPE.search(
+                    text[:max(0, column - 1)] + '@' + after):
+                # static_cast<uchar>(v), (uchar)v: a type (OpenCV's uchar,
+                # brought in by `using namespace cv;`)
+                kind = TYPE
             # an undeclared lower-case variable is nearly always a local
             # whose declaration failed (an error of its own): declaring a
             # global of that name would only hide the cause
@@ -716,6 +744,8 @@ def _after(text, column, message):
     return text[found + len(name):].lstrip()
 
 
+# a name (@) as the type of a cast: `static_cast<@>(`, `(@)value`
+_CAST_TYPE = re.compile(r'_cast\s*<\s*@>|(?<![\w\])])\s*\(\s*@\)\s*[\w(]')
 # what comes before `ns::name` in `std::pair<ns::name, ...>`
 _FIRST_TEMPLATE_ARGUMENT = re.compile(r'\w<\s*(?:::\s*)?(?:\w+\s*::\s*)*$')
 # what comes before `Name` in `using ns::Name;`: a CamelCase name a
@@ -737,7 +767,20 @@ def _by_qualified_use(name, after, before):
         # std::pair<boost::uuids::uuid, T>: a first template argument is a
         # type far more often than a value
         return TYPE
+    if kind == CONSTANT and after.startswith(',') and \
+            _in_template_arguments(before):
+        # Matrix<float, Eigen::Dynamic, 1>: the template's parameters were
+        # made from its use, where a CamelCase name is a type (see
+        # template_kind)
+        return TYPE
     return kind
+
+
+def _in_template_arguments(before):
+    """Whether the code before a name leaves a `<` of a template open."""
+    statement = re.split(r'[;{}]', before)[-1]
+    statement = re.sub(r'<<|>>|->|<=|>=', ' ', statement)
+    return statement.count('<') > statement.count('>')
 
 
 def _by_use(name, after, *, unqualified):
@@ -760,9 +803,11 @@ def _by_use(name, after, *, unqualified):
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
-            re.match(r'(?:\)|;|\||\+|-|=|\?|\]|\}|!|:(?!:))', after):
+            re.match(r'(?:\)|;|,|\||\+|-|=|\?|\]|\}|!|:(?!:))', after):
         # a CamelCase value, where a value ends or an operator follows: an
-        # enumerator (Qt::AlignCenter)
+        # enumerator (Qt::AlignCenter), a constant (lanelet::InvalId, as an
+        # argument; a first template argument is a type, see
+        # _by_qualified_use)
         return CONSTANT, name
     if _CAMEL.match(name) or re.match(r'(?:[&*]\s*)?[A-Za-z_]', after):
         # CamelCase elsewhere (`std::unique_ptr<bond::Bond>`), or a name

@@ -14,6 +14,7 @@
 #include <string>
 
 #include <geometry_msgs/msg/transform_stamped.hpp>
+#include <rclcpp/rclcpp.hpp>
 #include <tf2/exceptions.h>
 #include <tf2_ros/create_timer_interface.h>
 
