@@ -775,6 +775,7 @@ def test_real_code_idioms_type_check_without_repairs(tmp_path):
 #include <algorithm>
 #include <chrono>
 #include <vector>
+#include <string>
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/header.hpp>
 #include <geo_utils/stop_watch.hpp>
@@ -801,9 +802,13 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
   // a message's SharedPtr from a polling subscriber of that library
   std_msgs::msg::Header::ConstSharedPtr last;
   last = geo_utils::poller.take_data();
+  // a pointer of that library, and a string made from a field
+  geo_utils::PortHandler * port = geo_utils::PortHandler::getPortHandler(
+    header.frame_id);
+  const std::string frame(header.frame_id);
   // a function of a namespace inside it, also through a using-declaration
   const double length = calc_length(d) + geo_utils::motion::calc_length(d);
-  return enabled && same ? age + length : capped;
+  return enabled && same && port && !frame.empty() ? age + length : capped;
 }
 """)
     stub_dir = tmp_path / 'stubs'
@@ -861,3 +866,13 @@ def test_a_repair_of_another_kind_hides_the_unknown_librarys_declaration(
     tu = _parse(file=source, arguments=arguments + ['-include', header],
                 directory=package)
     assert [d for d in cpp.parse_diagnostics(tu) if 'redefinition' in d] == []
+
+
+def test_a_lower_case_header_is_a_message_only_if_used_as_one():
+    from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
+    # tf/tfMessage.h declares tf::tfMessage; fmt/format.h, a function
+    [message] = stand_ins_for('tf/tfMessage.h', ['tf::tfMessage msg;']).values()
+    assert 'kind=message' in message
+    [library] = stand_ins_for(
+        'fmt/format.h', ['auto text = fmt::format("{}", 1);']).values()
+    assert 'kind=empty' in library

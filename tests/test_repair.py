@@ -1090,6 +1090,18 @@ def test_facts_pair_with_the_call_sites_whose_expression_they_start():
         {sites[2]}
 
 
+def test_a_macro_called_in_a_macros_body_is_a_function_like_macro():
+    # the error is at the outer macro's use, whose line does not show the
+    # inner name; the body that calls it is among the texts
+    code = ('#define REGISTER_STATE(ID, VALUE) REGISTER_ENTITY(ID, VALUE)\n'
+            'void f() { REGISTER_STATE("state", x); }\n')
+    lines = dict(enumerate(code.split('\n'), start=1))
+    found = repair.repairs_from_diagnostics(
+        [("use of undeclared identifier 'REGISTER_ENTITY'", 'a.cpp', 2, 12)],
+        lambda file, line: lines[line], texts=[code])
+    assert found == {('macro-value', 'REGISTER_ENTITY')}
+
+
 def test_a_namespace_alias_is_repaired_through_its_target():
     # `namespace bg = boost::geometry;` failed while boost::geometry was
     # missing, and with it `bg::distance(a, b)`: a namespace bg would clash

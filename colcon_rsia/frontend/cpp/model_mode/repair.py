@@ -292,7 +292,8 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
       included, not declared; None: never
     """
     aliases = _aliases(texts)
-    repairs = _unaliased(_repairs(diagnostics, read_line, stand_in), aliases)
+    repairs = _unaliased(
+        _repairs(diagnostics, read_line, stand_in, texts), aliases)
     for kind, name in list(repairs):
         if kind == NAMESPACE and name not in declared:
             repairs |= _uses_of_namespace(name, texts, aliases)
@@ -575,7 +576,7 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
     return found
 
 
-def _repairs(diagnostics, read_line, stand_in=None):
+def _repairs(diagnostics, read_line, stand_in=None, texts=()):
     repairs = set()
     for message, file, line, column in diagnostics:
         text = read_line(file, line) if file else ''
@@ -587,6 +588,11 @@ def _repairs(diagnostics, read_line, stand_in=None):
                 # spelled in a macro's body (THROW_ON_NULLPTR(p) expanding
                 # to rcpputils::...): a namespace, by far the most common
                 kind = NAMESPACE
+            elif match.group(1) not in text and _ALL_CAPS.match(name) and \
+                    any(re.search(r'\b' + name + r'\s*\(', t) for t in texts):
+                # a macro a macro's body calls (REGISTER_ENTITY(...) in
+                # the body of a workspace macro): a function-like macro
+                kind = MACRO_VALUE
             elif kind == OBJECT and _CAST_TYPE.search(
                     text[:max(0, column - 1)] + '@' + after):
                 # static_cast<uchar>(v), (uchar)v: a type (OpenCV's uchar,

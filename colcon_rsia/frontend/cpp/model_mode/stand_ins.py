@@ -73,9 +73,11 @@ def stand_ins_for(include, codes):
         return {include: empty_stub(include)}
     package, name = parts[0], parts[1][:-2]
     # messages are CamelCase, with exceptions (tf/tfMessage.h): a header
-    # whose stem the sources name as `package::stem` is one too
+    # whose stem the sources name as `package::stem` is one too, unless
+    # only ever called (fmt/format.h and fmt::format(...))
     named = IDENTIFIER.match(name) and any(
-        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b', code)
+        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b(?!\s*\()',
+                  code)
         for code in codes)
     if not (PACKAGE.match(package) and (CAMEL.match(name) or named)):
         return {include: empty_stub(include)}

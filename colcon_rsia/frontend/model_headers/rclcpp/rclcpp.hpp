@@ -588,6 +588,27 @@ struct SubscriptionEventCallbacks
   std::function<void(MatchedInfo &)> matched_callback;
 };
 
+// qos_overriding_options.hpp: QoS policies overridable by parameters
+enum class QosPolicyKind
+{
+  AvoidRosNamespaceConventions, Deadline, Depth, Durability, History,
+  Lifespan, Liveliness, LivelinessLeaseDuration, Reliability, Invalid
+};
+using QosCallbackResult = rcl_interfaces::msg::SetParametersResult;
+using QosCallback = std::function<QosCallbackResult(const QoS &)>;
+class QosOverridingOptions
+{
+public:
+  QosOverridingOptions();
+  QosOverridingOptions(
+    std::initializer_list<QosPolicyKind> policy_kinds,
+    QosCallback validation_callback = nullptr, std::string id = {});
+  static QosOverridingOptions with_default_policies(
+    QosCallback validation_callback = nullptr, std::string id = {});
+};
+
+enum class IntraProcessSetting { Enable, Disable, NodeDefault };
+
 // publisher_options.hpp, subscription_options.hpp
 template<class AllocatorT = std::allocator<void>>
 class PublisherOptionsWithAllocator
@@ -595,6 +616,9 @@ class PublisherOptionsWithAllocator
 public:
   PublisherOptionsWithAllocator();
   PublisherEventCallbacks event_callbacks;
+  bool use_default_callbacks = true;
+  IntraProcessSetting use_intra_process_comm = IntraProcessSetting::NodeDefault;
+  QosOverridingOptions qos_overriding_options;
   CallbackGroup::SharedPtr callback_group;
   std::shared_ptr<AllocatorT> allocator;
 };
@@ -606,6 +630,9 @@ class SubscriptionOptionsWithAllocator
 public:
   SubscriptionOptionsWithAllocator();
   SubscriptionEventCallbacks event_callbacks;
+  bool use_default_callbacks = true;
+  IntraProcessSetting use_intra_process_comm = IntraProcessSetting::NodeDefault;
+  QosOverridingOptions qos_overriding_options;
   CallbackGroup::SharedPtr callback_group;
   bool ignore_local_publications = false;
   std::shared_ptr<AllocatorT> allocator;

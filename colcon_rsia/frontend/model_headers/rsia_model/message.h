@@ -154,6 +154,15 @@ struct Any
                                     int>::type = 0>
   operator RsiaV&() const;
 
+  // a pointer of a library the model lacks (port_ = PortHandler::get(...),
+  // static_cast<urdf::Cylinder*>(geometry)); not to char: `std::string
+  // s(msg.name)` would tie between string's copy and const char* forms
+  template <class RsiaV,
+            typename std::enable_if<!std::is_same<typename std::remove_cv<RsiaV>::type,
+                                                  char>::value,
+                                    int>::type = 0>
+  operator RsiaV*() const;
+
   template <class... RsiaArgs>
   Any& operator()(RsiaArgs&&...) const;
   template <class RsiaIndex>
