@@ -876,3 +876,35 @@ def test_a_lower_case_header_is_a_message_only_if_used_as_one():
     [library] = stand_ins_for(
         'fmt/format.h', ['auto text = fmt::format("{}", 1);']).values()
     assert 'kind=empty' in library
+
+
+@pytest.mark.parametrize('ros2', [True, False])
+def test_point_cloud2_iterators_are_modelled(tmp_path, ros2):
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    source = package / 'src' / 'node.cpp'
+    cloud = 'sensor_msgs::msg::PointCloud2' if ros2 else \
+        'sensor_msgs::PointCloud2'
+    header = 'sensor_msgs/point_cloud2_iterator.hpp' if ros2 else \
+        'sensor_msgs/point_cloud2_iterator.h'
+    source.write_text(f"""
+#include <{header}>
+float sum(const {cloud} & cloud, {cloud} & out)
+{{
+  float total = 0;
+  for (sensor_msgs::PointCloud2ConstIterator<float> iter_x(cloud, "x"),
+       iter_y(cloud, "y");
+       iter_x != iter_x.end(); ++iter_x, ++iter_y) {{
+    total += *iter_x + *iter_y;
+  }}
+  sensor_msgs::PointCloud2Modifier modifier(out);
+  modifier.setPointCloud2FieldsByString(1, "xyz");
+  sensor_msgs::PointCloud2Iterator<float> out_x(out, "x");
+  *out_x = total;
+  return total;
+}}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []

@@ -27,6 +27,9 @@ _FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')
 _ROS2_MSGS_TYPE = re.compile(
     r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*msg\s*::\s*([A-Z][A-Za-z0-9]*)\b')
+# classes of *_msgs packages the model headers declare: no messages
+_NOT_MESSAGES = frozenset(
+    ('PointCloud2Iterator', 'PointCloud2ConstIterator', 'PointCloud2Modifier'))
 IDENTIFIER = re.compile(r'^[A-Za-z_]\w*$')
 CAMEL = re.compile(r'^[A-Z][A-Za-z0-9]*$')
 PACKAGE = re.compile(r'^[a-z][a-z0-9_]*$')
@@ -147,7 +150,7 @@ def used_names(codes):
         field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):
             name = re.sub(r'(?:ConstPtr|Ptr)$', '', m.group(2))
-            if name:
+            if name and name not in _NOT_MESSAGES:
                 msgs_types.setdefault(m.group(1), set()).add(
                     f'{m.group(1)}/{name}.h')
         for m in _ROS2_MSGS_TYPE.finditer(code):
