@@ -1129,3 +1129,23 @@ def test_the_namespaces_inside_a_repaired_one_are_repaired_at_once():
             ('namespace', 'boost::geometry::model'),
             ('namespace', 'boost::geometry::model::d2'),
             ('template', 'boost::geometry::model::d2::point_xy')} <= found
+
+
+def test_a_model_header_a_repair_includes_gets_its_stand_ins(tmp_path):
+    # rclcpp is named before anything includes it (a header of an unknown
+    # library would have): the repair includes the model's rclcpp.hpp,
+    # which includes generated rcl_interfaces messages the unit's scan
+    # never met; without them the parse stopped at a missing file
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(
+        '#include <vendor_sdk/clock.hpp>\n'
+        'double period() {\n'
+        '  rclcpp::Duration d = rclcpp::Duration::from_seconds(0.5);\n'
+        '  return d.seconds();\n'
+        '}\n')
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.repair_rounds >= 1
+    assert unit.errors == 0, summary.diagnostics

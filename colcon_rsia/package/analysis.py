@@ -469,6 +469,8 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
                 os.path.join(stub_dir, relative)))
         if not repair.add_repairs(header, relative, repairs):
             break
+        if any(kind == repair.HEADER for kind, _ in repairs):
+            _write_stand_ins_of_repair(header, entry, package_path, stub_dir)
         rounds += 1
         tu = parse()
         errors = own_errors(tu)
@@ -482,6 +484,24 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     if best[1]:
         repair.share_repairs(header, repair.read_repairs(header))
     return best[2], rounds
+
+
+def _write_stand_ins_of_repair(header, entry, package_path, stub_dir):
+    """Write the stand-ins the headers a repair header includes need.
+
+    A model header included by a repair (rclcpp/rclcpp.hpp, for an
+    `rclcpp::` name used before any include brought it in) includes
+    generated ones in turn (rcl_interfaces' messages), which the unit's
+    own scan never met.
+    """
+    from colcon_rsia.frontend.cpp.model_mode import prepare_model_arguments
+    try:
+        prepare_model_arguments(
+            source=header, arguments=entry.arguments,
+            package_path=package_path, workspace_package_dirs=[],
+            stub_dir=stub_dir, directory=entry.directory)
+    except (OSError, ValueError):
+        pass  # the parse then reports the missing header, as before
 
 
 _declarations = {}
