@@ -758,6 +758,17 @@ def test_include_scan_survives_odd_sources(tmp_path):
     assert cpp.parse_diagnostics(tu) == []
 
 
+def _sources(tmp_path, **texts):
+    """A package `pkg` with these files in src/: (package, [paths])."""
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    paths = []
+    for name, text in texts.items():
+        paths.append(package / 'src' / f'{name}.cpp')
+        paths[-1].write_text(text)
+    return package, paths
+
+
 def _prepare(package, source, stub_dir):
     return model_mode.prepare_model_arguments(
         source=str(source), arguments=['-std=gnu++17'],
@@ -768,10 +779,7 @@ def _prepare(package, source, stub_dir):
 def test_real_code_idioms_type_check_without_repairs(tmp_path):
     # what autoware-style code does with the ROS model and libraries the
     # model lacks; each line was a parse error before the model took it
-    package = tmp_path / 'src' / 'pkg'
-    (package / 'src').mkdir(parents=True)
-    source = package / 'src' / 'node.cpp'
-    source.write_text(r"""
+    package, [source] = _sources(tmp_path, node=r"""
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -823,16 +831,12 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
 
 def test_a_member_one_unit_calls_with_template_arguments_is_a_template(
         tmp_path):
-    package = tmp_path / 'src' / 'pkg'
-    (package / 'src').mkdir(parents=True)
-    first = package / 'src' / 'first.cpp'
-    first.write_text(
-        '#include <cv_like/mat.hpp>\n'
-        'int first(cv_like::Mat & mat) { return mat.at(0); }\n')
-    second = package / 'src' / 'second.cpp'
-    second.write_text(
-        '#include <cv_like/mat.hpp>\n'
-        'void second(cv_like::Mat & mat) { mat.at<unsigned char>(1, 2) = 3; }\n')
+    package, [first, second] = _sources(
+        tmp_path,
+        first='#include <cv_like/mat.hpp>\n'
+              'int first(cv_like::Mat & mat) { return mat.at(0); }\n',
+        second='#include <cv_like/mat.hpp>\n'
+               'void second(cv_like::Mat & mat) { mat.at<unsigned char>(1, 2) = 3; }\n')
     stub_dir = tmp_path / 'stubs'
     _prepare(package, first, stub_dir)
     # the first unit wrote `at` as a plain member; the second's use makes
@@ -850,13 +854,10 @@ def test_a_repair_of_another_kind_hides_the_unknown_librarys_declaration(
     # the unknown-library header takes `geo_utils::to_msg` for an object
     # (no call on the line); the unit's repair header, force-included
     # first, declared it as a function: the header must step aside
-    package = tmp_path / 'src' / 'pkg'
-    (package / 'src').mkdir(parents=True)
-    source = package / 'src' / 'node.cpp'
-    source.write_text(
-        '#include <geo_utils/convert.hpp>\n'
-        'auto convert = geo_utils::to_msg;\n'
-        'void f() { geo_utils::to_msg(1, 2); }\n')
+    package, [source] = _sources(
+        tmp_path, node='#include <geo_utils/convert.hpp>\n'
+                       'auto convert = geo_utils::to_msg;\n'
+                       'void f() { geo_utils::to_msg(1, 2); }\n')
     stub_dir = tmp_path / 'stubs'
     arguments = _prepare(package, source, stub_dir)
     unknown = (stub_dir / 'rsia_model' / 'unknown' / 'geo_utils.h').read_text()
@@ -880,14 +881,11 @@ def test_a_lower_case_header_is_a_message_only_if_used_as_one():
 
 @pytest.mark.parametrize('ros2', [True, False])
 def test_point_cloud2_iterators_are_modelled(tmp_path, ros2):
-    package = tmp_path / 'src' / 'pkg'
-    (package / 'src').mkdir(parents=True)
-    source = package / 'src' / 'node.cpp'
     cloud = 'sensor_msgs::msg::PointCloud2' if ros2 else \
         'sensor_msgs::PointCloud2'
     header = 'sensor_msgs/point_cloud2_iterator.hpp' if ros2 else \
         'sensor_msgs/point_cloud2_iterator.h'
-    source.write_text(f"""
+    package, [source] = _sources(tmp_path, node=f"""
 #include <{header}>
 float sum(const {cloud} & cloud, {cloud} & out)
 {{
