@@ -190,6 +190,18 @@ def _lines(text):
      {('function', 'helper')}),
     ("no type named 'cudaError_t' in the global namespace",
      'const ::cudaError_t status = run();', 9, {('type', 'cudaError_t')}),
+    ("no template named 'QMap'", '  QMap<IconState, QPixmap> icons;', 3,
+     {('template', 'QMap')}),
+    ("unexpected namespace name 'QFont': expected expression",
+     'setFont(QFont("Roboto", 10, QFont::Bold));', 9, {('type', 'QFont')}),
+    # a base class nothing declares
+    ('expected class name', 'class CustomLabel : public QLabel', 27,
+     {('type', 'QLabel')}),
+    ('expected class name',
+     'class View : public rviz_common::FramePositionTrackingViewController',
+     21, {('type', 'rviz_common::FramePositionTrackingViewController')}),
+    ('expected class name', 'struct Filter : public vision::Base<float>', 24,
+     {('template', 'vision::Base')}),
     # the type of a cast, not a local whose declaration failed
     ("use of undeclared identifier 'uchar'",
      'auto c = static_cast<uchar>(v);', 22, {('type', 'uchar')}),

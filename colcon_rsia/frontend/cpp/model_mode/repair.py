@@ -43,7 +43,11 @@ _MARKER = '// colcon-rsia repairs v1'
 
 _UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'")
 _UNKNOWN_TYPE = re.compile(r"^unknown type name '(\w+)'")
-_UNKNOWN_TEMPLATE = re.compile(r"^unknown template name '(\w+)'")
+_UNKNOWN_TEMPLATE = re.compile(
+    r"^unknown template name '(\w+)'|^no template named '(\w+)'$")
+# `QFont("Roboto", 10)` after `QFont::Bold` made QFont a namespace
+_NAMESPACE_AS_VALUE = re.compile(
+    r"^unexpected namespace name '(\w+)': expected expression$")
 _IN_NAMESPACE = re.compile(
     r"^no (type|template|member|class) named '(\w+)' in namespace '([\w:]+)'")
 _NOT_NAMESPACE = re.compile(
@@ -618,8 +622,14 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             continue
         match = _UNKNOWN_TEMPLATE.match(message)
         if match:
-            repairs.add((template_kind(after),
-                         _qualified(match.group(1), text, column)))
+            repairs.add((template_kind(after), _qualified(
+                match.group(1) or match.group(2), text, column)))
+            continue
+        match = _NAMESPACE_AS_VALUE.match(message)
+        if match:
+            # a class (its constants made it look like a namespace): the
+            # names repaired inside it become its members
+            repairs.add((TYPE, _qualified(match.group(1), text, column)))
             continue
         match = _IN_STD.match(message)
         if match:
@@ -684,6 +694,17 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
         match = _UNDEFINED_MACRO.match(message)
         if match:
             repairs.add((MACRO_CONDITION, match.group(1)))
+            continue
+        if message == 'expected class name':
+            # `class Label : public QLabel` with QLabel undeclared: the
+            # column is at the base's name
+            match = re.match(r'\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)'
+                             r'\s*(<?)', text[max(0, column - 1):])
+            if match:
+                name = re.sub(r'\s+', '', match.group(1))
+                rest = text[max(0, column - 1) + match.start(2):]
+                repairs.add((template_kind(rest) if match.group(2) else TYPE,
+                             name))
             continue
         match = _MACRO_STATEMENT.match(text)
         if match and _DECLARATION_EXPECTED.match(message):
