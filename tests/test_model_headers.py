@@ -786,6 +786,8 @@ def test_real_code_idioms_type_check_without_repairs(tmp_path):
 #include <string>
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/header.hpp>
+#include <std_srvs/srv/trigger.hpp>
+#include <tf2/LinearMath/Quaternion.h>
 #include <geo_utils/stop_watch.hpp>
 #include <geo_utils/geometry.hpp>
 
@@ -814,9 +816,16 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
   geo_utils::PortHandler * port = geo_utils::PortHandler::getPortHandler(
     header.frame_id);
   const std::string frame(header.frame_id);
+  // rclcpp and tf2 members real code uses
+  const rclcpp::Duration timeout(header.stamp);
+  node.get_logger().set_level(rclcpp::Logger::Level::Debug);
+  rclcpp::Service<std_srvs::srv::Trigger>::CallbackType on_trigger;
+  const tf2::Quaternion q(0, 0, 0, 1);
+  const double w = q.getW() + timeout.seconds();
   // a function of a namespace inside it, also through a using-declaration
   const double length = calc_length(d) + geo_utils::motion::calc_length(d);
-  return enabled && same && port && !frame.empty() ? age + length : capped;
+  return enabled && same && port && !frame.empty() && on_trigger ?
+         age + length + w : capped;
 }
 """)
     stub_dir = tmp_path / 'stubs'

@@ -35,6 +35,7 @@
 #include <utility>
 #include <vector>
 
+#include <rsia_model/message.h>
 #include <rcl_interfaces/msg/parameter.hpp>
 #include <rcl_interfaces/msg/parameter_descriptor.hpp>
 #include <rcl_interfaces/msg/parameter_event.hpp>
@@ -158,6 +159,9 @@ enum rcl_clock_type_t
   RCL_STEADY_TIME
 };
 
+// rcl's timer, which rclcpp::TimerBase wraps (rcl/timer.h)
+typedef struct rcl_timer_s rcl_timer_t;
+
 namespace rclcpp
 {
 
@@ -239,9 +243,11 @@ Context::SharedPtr get_global_default_context();
 class Logger
 {
 public:
+  enum class Level { Unset = 0, Debug = 10, Info = 20, Warn = 30, Error = 40, Fatal = 50 };
   Logger get_child(const std::string & suffix);
   const char * get_name() const;
-  void set_level(int level);
+  void set_level(Level level);
+  Level get_effective_level() const;
 };
 Logger get_logger(const std::string & name);
 
@@ -253,6 +259,12 @@ public:
   template<class Rep, class Period>
   Duration(const std::chrono::duration<Rep, Period> & duration);
   Duration(const Duration & rhs);
+  // from builtin_interfaces::msg::Duration (implicit, like the real one),
+  // also a message stand-in's field holding one
+  template<class M, typename std::enable_if<
+      std::is_base_of<rsia_model::Fields, M>::value ||
+      std::is_base_of<rsia_model::Any, M>::value, int>::type = 0>
+  Duration(const M & duration_msg);
   Duration & operator=(const Duration & rhs);
   static Duration max();
   static Duration from_seconds(double seconds);
@@ -768,6 +780,7 @@ class TimerBase
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(TimerBase)
   virtual ~TimerBase();
+  std::shared_ptr<const rcl_timer_t> get_timer_handle();
   void cancel();
   bool is_canceled();
   void reset();
@@ -810,6 +823,13 @@ class Service : public ServiceBase
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Service)
+  using CallbackType = std::function<void(
+        const std::shared_ptr<typename ServiceT::Request>,
+        std::shared_ptr<typename ServiceT::Response>)>;
+  using CallbackWithHeaderType = std::function<void(
+        const std::shared_ptr<rmw_request_id_t>,
+        const std::shared_ptr<typename ServiceT::Request>,
+        std::shared_ptr<typename ServiceT::Response>)>;
   void send_response(rmw_request_id_t & req_id,
                      typename ServiceT::Response & response);
 };

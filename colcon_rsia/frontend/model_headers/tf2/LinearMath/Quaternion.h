@@ -40,6 +40,7 @@ public:
   Quaternion(const tf2Scalar& x, const tf2Scalar& y, const tf2Scalar& z, const tf2Scalar& w);
   Quaternion(const Vector3& axis, const tf2Scalar& angle);
   Quaternion(const tf2Scalar& yaw, const tf2Scalar& pitch, const tf2Scalar& roll);
+  const tf2Scalar& getW() const;
 
   void setRotation(const Vector3& axis, const tf2Scalar& angle);
   void setEuler(const tf2Scalar& yaw, const tf2Scalar& pitch, const tf2Scalar& roll);
