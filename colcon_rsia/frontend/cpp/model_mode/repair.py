@@ -31,6 +31,9 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
+from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_class
+from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_function
+from colcon_rsia.frontend.cpp.model_mode.stubs import repaired_guard
 from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
@@ -883,20 +886,16 @@ def _render(repairs, source):
             # differ from the `std::vector<VirtualWall>` other code writes
             body = f'using {short} = std::vector<{short[:-1]}>;'
         elif _base_kind(kind) in (TYPE, TEMPLATE):
-            head = template_head(kind) if kind != TYPE else ''
-            body = ''.join({
-                MEMBER: f' static ::rsia_model::Any {m};',
-                MEMBER_TYPE: f' using {m} = ::rsia_model::Unknown;',
-                MEMBER_TEMPLATE: f' template <class... RsiaT, class... RsiaA>'
-                                 f' static ::rsia_model::Any& {m}(RsiaA&&...);',
-            }[k] for k, m in sorted(members.get(name, ())))
-            body = (f'{head}struct {short} : ::rsia_model::Unknown '
-                    f'{{ using ::rsia_model::Unknown::Unknown; '
-                    f'using ::rsia_model::Unknown::operator=;{body} }};')
+            body = _one_line(catch_all_class(
+                short, head=template_head(kind) if kind != TYPE else '',
+                members=[{
+                    MEMBER: f'static ::rsia_model::Any {m};',
+                    MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
+                    MEMBER_TEMPLATE: 'template <class... RsiaT, class... RsiaA>'
+                                     f' static ::rsia_model::Any& {m}(RsiaA&&...);',
+                }[k] for k, m in sorted(members.get(name, ()))]))
         elif kind == FUNCTION:
-            # explicit template arguments (`f<T>(x)`) go to RsiaT
-            body = (f'template <class... RsiaT, class... RsiaArgs> '
-                    f'::rsia_model::Any& {short}(RsiaArgs&&...);')
+            body = _one_line(catch_all_function(short))
         elif kind == CONSTANT:
             value = constant_values.setdefault(name, len(constant_values) + 1)
             body = f'constexpr int {short} = {value};'
@@ -904,11 +903,18 @@ def _render(repairs, source):
             body = f'extern ::rsia_model::Any {short};'
         opening = ' '.join(f'namespace {n} {{' for n in namespaces)
         closing = '}' * len(namespaces)
-        guard = '__'.join(['RSIA_REPAIRED'] + namespaces + [short])
+        # (a namespace's guard repeats its last name: it declares nothing
+        # a stand-in could step aside for)
+        guard = repaired_guard('::'.join(namespaces + [short]))
         lines += [f'#ifndef {short}', f'#define {guard}',
                   f'{opening} {body} {closing}'.strip(), '#endif']
     lines.append('')
     return '\n'.join(lines)
+
+
+def _one_line(lines):
+    """A declaration of stubs.py's on the one line of its repair."""
+    return ' '.join(line.strip() for line in lines)
 
 
 def _printable(text):

@@ -272,7 +272,7 @@ def _unknown_namespaces(stubs, codes):
                     members = types.setdefault(name, set())
                     if member and member_ok(member):
                         members.add(member)
-                elif re.match(r'^[A-Z][A-Z0-9_]+$', name):
+                elif _ALL_CAPS.match(name):
                     constants.add(name)
                 else:
                     objects.add(name)
@@ -343,42 +343,30 @@ def _merge_unknown(stub_dir, namespace, names):
         members = sorted(types[name])
         # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
-                  _undeclared(namespace, name),
-                  f'struct {name} : ::rsia_model::Unknown', '{',
-                  '  using ::rsia_model::Unknown::Unknown;',
-                  '  using ::rsia_model::Unknown::operator=;']
-        for member in members:
-            lines += [f'#ifndef {member}',
-                      f'  static ::rsia_model::Any {member};', '#endif']
-        lines += ['};', '#endif']
+                  _undeclared(namespace, name)]
+        lines += catch_all_class(name, members=[
+            line for member in members for line in (
+                f'#ifndef {member}', f'  static ::rsia_model::Any {member};',
+                '#endif')])
+        lines.append('#endif')
     for name, is_function in sorted(templates.items()):
-        undeclared = _undeclared(namespace, name)
-        if is_function:
-            # explicit arguments go to RsiaT, the call's are deduced
-            lines += [f'// function template {name}', undeclared,
-                      'template <class... RsiaT, class... RsiaA>',
-                      f'::rsia_model::Any& {name}(RsiaA&&...);', '#endif']
-        else:
-            lines += [f'// class template {name}', undeclared,
-                      f'template <class...> struct {name} : '
-                      '::rsia_model::Unknown', '{',
-                      '  using ::rsia_model::Unknown::Unknown;',
-                      '  using ::rsia_model::Unknown::operator=;', '};',
-                      '#endif']
+        lines += [
+            f"// {'function' if is_function else 'class'} template {name}",
+            _undeclared(namespace, name)]
+        lines += catch_all_function(name) if is_function else \
+            catch_all_class(name, head='template <class...> ')
+        lines.append('#endif')
     for name, members in sorted(nested.items()):
         lines += [f'// namespace {name}:' + ''.join(
             ' ' + m for m in sorted(members)), f'namespace {name}', '{']
         for member in sorted(members):
-            lines.append(_undeclared(f'{namespace}__{name}', member))
+            lines.append(_undeclared(f'{namespace}::{name}', member))
             if _ALL_CAPS.match(member):
                 lines.append(f'constexpr int {member} = 1;')
             elif member[:1].isupper():
-                lines += [f'struct {member} : ::rsia_model::Unknown', '{',
-                          '  using ::rsia_model::Unknown::Unknown;',
-                          '  using ::rsia_model::Unknown::operator=;', '};']
+                lines += catch_all_class(member)
             else:
-                lines += ['template <class... RsiaT, class... RsiaA>',
-                          f'::rsia_model::Any& {member}(RsiaA&&...);']
+                lines += catch_all_function(member)
             lines.append('#endif')
         lines.append(f'}}  // namespace {name}')
     # (a repair header, force-included first, may have declared any of
@@ -398,4 +386,29 @@ def _merge_unknown(stub_dir, namespace, names):
 def _undeclared(namespace, name):
     """The condition of a declaration no macro or repair header made."""
     return f'#if !defined({name}) && ' \
-        f'!defined(RSIA_REPAIRED__{namespace}__{name})'
+        f'!defined({repaired_guard(namespace + "::" + name)})'
+
+
+def repaired_guard(qualified_name):
+    """The macro a repair header defines with its declaration of a name.
+
+    The stand-ins of unknown libraries leave a name so defined to it.
+    """
+    return '__'.join(['RSIA_REPAIRED'] + qualified_name.split('::'))
+
+
+def catch_all_class(name, *, head='', members=()):
+    """The lines of a class of an unknown library, made from anything."""
+    return [f'{head}struct {name} : ::rsia_model::Unknown', '{',
+            '  using ::rsia_model::Unknown::Unknown;',
+            '  using ::rsia_model::Unknown::operator=;', *members, '};']
+
+
+def catch_all_function(name):
+    """The lines of a function of an unknown library, taking anything.
+
+    Explicit template arguments (`f<T>(x)`) go to RsiaT, the call's
+    arguments are deduced.
+    """
+    return ['template <class... RsiaT, class... RsiaA>',
+            f'::rsia_model::Any& {name}(RsiaA&&...);']
