@@ -139,13 +139,16 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     resource_dir = find_resource_dir()
     if resource_dir is None and entries:
         raise AnalysisError(RESOURCE_DIR_HINT)
+    precompiled_dir = None
     if header_mode == 'model':
         entries = _model_entries(
             entries, path, workspace_package_dirs,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
+        precompiled_dir = store.precompiled_dir(build_base)
 
     units, diagnostics = parse_units(
         entries, package_path=path, resource_dir=resource_dir,
+        precompiled_dir=precompiled_dir,
         cache=store.cache_dir(build_base) if use_cache else None,
         jobs=jobs or default_jobs(),
         wrappers=store.read_workspace_wrappers(
@@ -282,9 +285,11 @@ def _inside(file, directory):
 
 
 def parse_units(entries, *, package_path, resource_dir, cache, jobs,
-                wrappers=()):
+                wrappers=(), precompiled_dir=None):
     """Parse the TUs in a thread pool; return (facts by file, messages).
 
+    :param precompiled_dir: where the model mode's precompiled standard
+      headers are kept (None: parse without them)
     :param wrappers: the model.WrapperSummary of the workspace's other
       packages, for the calls of functions whose body is out of sight
     """
@@ -296,7 +301,8 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs,
             check_stop()
             return _unit_facts(
                 entry, package_path, resource_dir, cache, hidden,
-                wrappers=wrappers, wrappers_digest=digest)
+                wrappers=wrappers, wrappers_digest=digest,
+                precompiled_dir=precompiled_dir)
         except Interrupted:
             raise
         except Exception as e:  # noqa: B902
@@ -327,7 +333,7 @@ def _unsafe_includes(entries, package_path):
 
 
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
-                wrappers=(), wrappers_digest=None):
+                wrappers=(), wrappers_digest=None, precompiled_dir=None):
     """Facts of one TU, from the cache when nothing it reads changed.
 
     :param hidden: {file: why} of files libclang is given as empty
@@ -365,7 +371,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         tu, rounds = _parse_repaired(
             index, entry, resource_dir, package_path, relative,
             unsaved_files=[(file, '') for file in sorted(
-                set(hidden) | {os.path.realpath(h) for h in hidden})])
+                set(hidden) | {os.path.realpath(h) for h in hidden})],
+            precompiled_dir=precompiled_dir)
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
     from colcon_rsia.frontend.cpp.wrappers import ExternalWrappers
@@ -399,21 +406,40 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
 
 
 def _parse_repaired(index, entry, resource_dir, package_path, relative,
-                    unsaved_files=()):
+                    unsaved_files=(), precompiled_dir=None):
     """Parse a TU; in model mode, repair what its errors show missing.
 
     Returns (the TU with the fewest errors in package code, parses after
     the first). The repair header is left as that best round had it.
     """
+    import clang.cindex as ci
     from colcon_rsia.frontend import cpp
+    from colcon_rsia.frontend.cpp.model_mode import precompiled
     from colcon_rsia.frontend.cpp.model_mode import repair
 
-    def parse():
+    header = _repair_header_of(entry.arguments)
+    pch = precompiled.precompiled_header(
+        precompiled_dir, entry.file, entry.arguments, resource_dir) \
+        if precompiled_dir and header is not None else None
+
+    def parse_with(arguments):
         return cpp.parse(
-            index, file=entry.file, arguments=entry.arguments,
+            index, file=entry.file, arguments=arguments,
             resource_dir=resource_dir, working_directory=entry.directory,
             unsaved_files=list(unsaved_files))
-    header = _repair_header_of(entry.arguments)
+
+    def parse():
+        nonlocal pch
+        if pch is None:
+            return parse_with(entry.arguments)
+        try:
+            return parse_with(list(entry.arguments) + ['-include-pch', pch])
+        except ci.TranslationUnitLoadError:
+            # raises again when the unit itself is the problem
+            tu = parse_with(entry.arguments)
+            precompiled.discard(pch)
+            pch = None
+            return tu
     if header is not None and not repair.read_repairs(header):
         # a unit never repaired starts with what its package's other units
         # needed (their names, unless this package declares them)

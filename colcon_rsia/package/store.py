@@ -47,6 +47,17 @@ def cache_dir(package_build_base):
     return os.path.join(package_build_base, RSIA_DIRNAME, CACHE_DIRNAME)
 
 
+def precompiled_dir(package_build_base):
+    """Where the model mode's precompiled headers are kept.
+
+    Beside the packages' build directories, shared by them all (they are
+    the same for every package); no package is named with a leading dot.
+    """
+    return os.path.join(
+        os.path.dirname(os.path.abspath(package_build_base)),
+        '.' + RSIA_DIRNAME, 'precompiled')
+
+
 def write_json_atomically(path, data):
     """Write JSON so that readers see the old file or the new, never half.
 
