@@ -19,6 +19,7 @@ from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.cpp import model_mode
 from colcon_rsia.frontend.cpp.model_mode import repair
+from colcon_rsia.frontend.cpp.model_mode import source_names
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
@@ -915,3 +916,50 @@ float sum(const {cloud} & cloud, {cloud} & out)
     arguments = _prepare(package, source, stub_dir)
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_ros2_interface_keeps_every_spelling_its_units_use(tmp_path):
+    # rosidl names `uuid.hpp` after `UUID`: the first unit spells it, the
+    # second includes the header without naming the type (the stand-in
+    # then guesses `Uuid`); prepared in parallel, the second unit's
+    # stand-in must not take the first's name away
+    package, [first, second] = _sources(
+        tmp_path,
+        first='#include <unique_identifier_msgs/msg/uuid.hpp>\n'
+              'unique_identifier_msgs::msg::UUID id;\n'
+              'unique_identifier_msgs::msg::UUID::SharedPtr ptr;\n',
+        second='#include <unique_identifier_msgs/msg/uuid.hpp>\n'
+               'int second() { return 0; }\n')
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, first, stub_dir)
+    _prepare(package, second, stub_dir)
+    tu = _parse(file=first, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+    stand_in = stub_dir / 'unique_identifier_msgs' / 'msg' / 'uuid.hpp'
+    assert '// declares: UUID Uuid\n' in stand_in.read_text()
+
+
+def test_the_graph_and_parameter_listing_of_a_node(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <rclcpp/rclcpp.hpp>
+
+std::string first_publisher(rclcpp::Node & node)
+{
+  const auto names = node.list_parameters({"limits"}, 10).names;
+  for (const auto & info : node.get_publishers_info_by_topic("/scan")) {
+    return info.node_name() + info.node_namespace() + info.topic_type();
+  }
+  return node.get_subscriptions_info_by_topic("/scan").empty() ? "" : "x";
+}
+""")
+    arguments = _prepare(package, source, tmp_path / 'stubs')
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_constants_in_the_k_style_are_declared_for_nested_unknown_types():
+    # TensorRT's `Severity::kINFO`, where Severity is a nested type of an
+    # unknown class (rsia_model::Unknown): its constants are the Fields'
+    constants = source_names.used_names(
+        ['if (severity <= Severity::kINFO || s == Logger::CONNECTED) {}'])[1]
+    assert {'kINFO', 'CONNECTED'} <= constants

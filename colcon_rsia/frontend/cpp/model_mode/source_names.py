@@ -21,7 +21,8 @@ _TEMPLATE_MEMBER = re.compile(
     r'(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*'
     r'<[^;(){}<>]*(?:<[^;(){}<>]*>[^;(){}<>]*)*>\s*\(')
 _VALUE_MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)\b(?!\s*[(<])')
-_CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*)\b')
+# `Type::NAME`, also in the kName style (`ILogger::Severity::kINFO`)
+_CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*|k[A-Z]\w*)\b')
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
 _FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')

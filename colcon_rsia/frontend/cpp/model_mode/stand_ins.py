@@ -137,27 +137,44 @@ def stand_ins_for(include, codes):
 _ROS2_INTERFACE_DIRS = frozenset({'msg', 'srv', 'action'})
 
 
-def _ros2_type_name(package, kind, file_stem, codes):
-    """The CamelCase name a snake_case interface header declares."""
+def _ros2_type_names(package, kind, file_stem, codes):
+    """The CamelCase names a snake_case interface header declares.
+
+    Every spelling the sources use (``uuid.hpp`` declares ``UUID``), else
+    the one made from the file name.
+    """
     wanted = file_stem.replace('_', '').lower()
     pattern = re.compile(
         r'\b' + re.escape(package) + r'\s*::\s*' + kind +
         r'\s*::\s*([A-Z]\w*)')
-    for code in codes:
-        for match in pattern.finditer(code):
-            if match.group(1).lower() == wanted:
-                return match.group(1)
-    return ''.join(p[:1].upper() + p[1:] for p in file_stem.split('_'))
+    names = {match.group(1) for code in codes
+             for match in pattern.finditer(code)
+             if match.group(1).lower() == wanted}
+    return sorted(names) or [
+        ''.join(p[:1].upper() + p[1:] for p in file_stem.split('_'))]
 
 
 def _ros2_interface_stub(package, kind, file_name, codes):
     stem = file_name[:-len('.hpp')]
     if '__' in stem or not PACKAGE.match(stem):
         return empty_stub(f'{package}/{kind}/{file_name}')
-    name = _ros2_type_name(package, kind, stem, codes)
+    return ros2_interface_text(
+        package, kind, file_name, _ros2_type_names(package, kind, stem, codes))
+
+
+# the names a ROS 2 interface's stand-in declares, on its second line: the
+# units of a package may spell one differently (or not at all), and each
+# unit's stand-in keeps what the others needed
+_DECLARES = '// declares: '
+
+
+def ros2_interface_text(package, kind, file_name, names):
+    """The stand-in of ``<package/kind/file_name>`` declaring `names`."""
+    stem = file_name[:-len('.hpp')]
     guard = f'RSIA_STUB_{package}_{kind}_{stem}_HPP'
     lines = [
         f'{STUB_MARKER} kind=ros2_{kind}: <{package}/{kind}/{file_name}>',
+        _DECLARES + ' '.join(names),
         '// a ROS 2 interface the model mode cannot read: the name, template',
         '// shape and pointer aliases of a generated rosidl header, its fields',
         '// the catch-all rsia_model::Fields',
@@ -178,23 +195,43 @@ def _ros2_interface_stub(package, kind, file_name, codes):
             f'  using WeakPtr = std::weak_ptr<{struct_name}_>;',
             '};',
             f'using {struct_name} = {struct_name}_<std::allocator<void>>;', '']
-    if kind == 'msg':
-        lines += struct(name)
-    elif kind == 'srv':
-        lines += struct(name + '_Request') + struct(name + '_Response')
-        lines += [f'struct {name}', '{',
-                  f'  using Request = {name}_Request;',
-                  f'  using Response = {name}_Response;', '};', '']
-    else:
-        parts = ('Goal', 'Result', 'Feedback')
-        for part in parts:
-            lines += struct(f'{name}_{part}')
-        lines += [f'struct {name}', '{']
-        lines += [f'  using {part} = {name}_{part};' for part in parts]
-        lines += ['};', '']
+    for name in names:
+        if kind == 'msg':
+            lines += struct(name)
+        elif kind == 'srv':
+            lines += struct(name + '_Request') + struct(name + '_Response')
+            lines += [f'struct {name}', '{',
+                      f'  using Request = {name}_Request;',
+                      f'  using Response = {name}_Response;', '};', '']
+        else:
+            parts = ('Goal', 'Result', 'Feedback')
+            for part in parts:
+                lines += struct(f'{name}_{part}')
+            lines += [f'struct {name}', '{']
+            lines += [f'  using {part} = {name}_{part};' for part in parts]
+            lines += ['};', '']
     lines += [f'}}  // namespace {kind}', f'}}  // namespace {package}', '',
               f'#endif  // {guard}', '']
     return '\n'.join(lines)
+
+
+def merged_ros2_interface(existing, content):
+    """One ROS 2 interface stand-in declaring the names of both, or None.
+
+    None when they are not two stand-ins of the same ROS 2 interface.
+    """
+    def parts(text):
+        head = text.split('\n', 2)
+        match = re.match(
+            re.escape(STUB_MARKER) + r' kind=ros2_\w+: <(\w+)/(\w+)/(\w+\.hpp)>$',
+            head[0])
+        if not match or len(head) < 2 or not head[1].startswith(_DECLARES):
+            return None
+        return match.groups(), head[1][len(_DECLARES):].split()
+    old, new = parts(existing), parts(content)
+    if old is None or new is None or old[0] != new[0]:
+        return None
+    return ros2_interface_text(*old[0], sorted(set(old[1]) | set(new[1])))
 
 
 def _guard(package, name):

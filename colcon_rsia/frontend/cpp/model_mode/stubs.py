@@ -20,6 +20,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import guessed_namespace
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import merged_ros2_interface
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
@@ -112,6 +113,12 @@ def _write_stub(target, content):
     if existing == content:
         return
     if existing is not None and existing.startswith(STUB_MARKER):
+        merged = merged_ros2_interface(existing, content)
+        if merged is not None:
+            # the names one unit spells, and those another one did
+            if merged != existing:
+                write_atomically(target, merged)
+            return
         kinds = {_stub_kind(existing), _stub_kind(content)}
         if kinds <= {'message', 'service', 'service_message'} and \
                 len(kinds) > 1:

@@ -41,6 +41,7 @@
 #include <rcl_interfaces/msg/parameter_event.hpp>
 #include <rcl_interfaces/msg/parameter_value.hpp>
 #include <rcl_interfaces/msg/set_parameters_result.hpp>
+#include <rcl_interfaces/msg/list_parameters_result.hpp>
 
 // the smart pointer aliases and factories of rclcpp/macros.hpp
 #define RCLCPP_SHARED_PTR_DEFINITIONS(...) \
@@ -1070,6 +1071,29 @@ NodeParametersInterface::SharedPtr get_node_parameters_interface(
 }  // namespace node_interfaces
 
 // node.hpp
+// what the graph knows of a topic's publishers and subscriptions
+enum class EndpointType
+{
+  Invalid = 0,
+  Publisher,
+  Subscription
+};
+
+class TopicEndpointInfo
+{
+public:
+  std::string & node_name();
+  const std::string & node_name() const;
+  std::string & node_namespace();
+  const std::string & node_namespace() const;
+  std::string & topic_type();
+  const std::string & topic_type() const;
+  EndpointType & endpoint_type();
+  const EndpointType & endpoint_type() const;
+  rclcpp::QoS & qos_profile();
+  const rclcpp::QoS & qos_profile() const;
+};
+
 class Node : public std::enable_shared_from_this<Node>
 {
 public:
@@ -1246,6 +1270,12 @@ public:
   get_service_names_and_types() const;
   std::size_t count_publishers(const std::string & topic_name) const;
   std::size_t count_subscribers(const std::string & topic_name) const;
+  std::vector<TopicEndpointInfo> get_publishers_info_by_topic(
+    const std::string & topic_name, bool no_mangle = false) const;
+  std::vector<TopicEndpointInfo> get_subscriptions_info_by_topic(
+    const std::string & topic_name, bool no_mangle = false) const;
+  rcl_interfaces::msg::ListParametersResult list_parameters(
+    const std::vector<std::string> & prefixes, uint64_t depth) const;
   Event::SharedPtr get_graph_event();
   void wait_for_graph_change(Event::SharedPtr event,
                              std::chrono::nanoseconds timeout);
