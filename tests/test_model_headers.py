@@ -939,9 +939,18 @@ def test_a_ros2_interface_keeps_every_spelling_its_units_use(tmp_path):
     assert '// declares: UUID Uuid\n' in stand_in.read_text()
 
 
-def test_the_graph_and_parameter_listing_of_a_node(tmp_path):
+def test_node_graph_queries_parameter_listing_and_time_steps(tmp_path):
     package, [source] = _sources(tmp_path, node=r"""
+#include <builtin_interfaces/msg/time.hpp>
 #include <rclcpp/rclcpp.hpp>
+
+// a duration times a count (the real Duration converts to its message
+// only), and a time into its message
+builtin_interfaces::msg::Time later(rclcpp::Node & node, std::size_t steps)
+{
+  const rclcpp::Duration step(0, 100000000);
+  return node.now() + step * steps;
+}
 
 std::string first_publisher(rclcpp::Node & node)
 {

@@ -154,6 +154,13 @@ def _lines(text):
      {('header', 'tf2/LinearMath/Transform.h')}),
     ("no member named 'get_value' in namespace 'acme'",
      'acme::get_value(3);', 7, {('function', 'acme::get_value')}),
+    # a statement clang reads as the declaration of `hull` (its message
+    # says type): a lower-case name called is a function
+    ("no type named 'correct' in namespace 'boost::geometry'",
+     '  boost::geometry::correct(hull);', 20,
+     {('function', 'boost::geometry::correct')}),
+    ("no type named 'Polygon' in namespace 'geo'", '  geo::Polygon(hull);',
+     8, {('type', 'geo::Polygon')}),
     ("function-like macro 'RCLCPP_VERSION_GTE' is not defined",
      '#if RCLCPP_VERSION_GTE(28, 0, 0)', 5,
      {('macro-condition', 'RCLCPP_VERSION_GTE')}),

@@ -666,7 +666,12 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
         match = _IN_NAMESPACE.match(message)
         if match:
             what, name, namespace = match.groups()
-            if what in ('type', 'class'):
+            if what == 'type' and after.startswith('(') and \
+                    not _CAMEL.match(name):
+                # `bg::correct(polygon);` read as a declaration of
+                # `polygon`: a lower-case name called is a function
+                kind = FUNCTION
+            elif what in ('type', 'class'):
                 kind = template_kind(after) if after.startswith('<') \
                     else TYPE
             elif what == 'template':

@@ -283,7 +283,10 @@ public:
   bool operator<=(const Duration & rhs) const;
   bool operator>(const Duration & rhs) const;
   bool operator>=(const Duration & rhs) const;
-  template<class M>
+  // to builtin_interfaces::msg::Duration (a message), as the real one; to
+  // anything, `duration * i` would tie with the built-in `*`
+  template<class M, typename std::enable_if<
+      std::is_base_of<rsia_model::Fields, M>::value, int>::type = 0>
   operator M() const;
 };
 
@@ -319,7 +322,9 @@ public:
   bool operator<=(const Time & rhs) const;
   bool operator>(const Time & rhs) const;
   bool operator>=(const Time & rhs) const;
-  template<class M>
+  // to builtin_interfaces::msg::Time (a message), as the real one
+  template<class M, typename std::enable_if<
+      std::is_base_of<rsia_model::Fields, M>::value, int>::type = 0>
   operator M() const;
 };
 
