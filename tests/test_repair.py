@@ -133,8 +133,9 @@ def _lines(text):
     ("use of undeclared identifier 'FMT_COMPILE'",
      'auto s = fmt::format(FMT_COMPILE("{}"), x);', 22,
      {('macro-value', 'FMT_COMPILE')}),
-    # a local whose declaration failed: its own error says why
-    ("use of undeclared identifier 'scan'", 'use(scan);', 5, set()),
+    # the first template argument is a type (OpenCV's uchar)
+    ("use of undeclared identifier 'uchar'",
+     'auto p = src.at<Point3_<uchar>>(i);', 25, {('type', 'uchar')}),
     ("unknown type name 'FOO_PUBLIC'", 'class FOO_PUBLIC Bar {', 7,
      {('macro-empty', 'FOO_PUBLIC')}),
     ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
@@ -214,8 +215,6 @@ def _lines(text):
      'auto c = static_cast<uchar>(v);', 22, {('type', 'uchar')}),
     ("use of undeclared identifier 'uchar'", 'auto c = (uchar)v;', 11,
      {('type', 'uchar')}),
-    ("use of undeclared identifier 'count'", 'total = f(count);', 11,
-     set()),
     # a CamelCase argument is a constant, a first template argument a type
     ("no member named 'InvalId' in namespace 'lanelet'",
      'auto bound = LineString3d(lanelet::InvalId, points);', 36,
@@ -238,6 +237,38 @@ def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, column)], _lines(line))
     assert found == expected
+
+
+@pytest.mark.parametrize('code, expected', [
+    # a local whose declaration failed: its own error says why
+    ('const auto scan = to_scan(msg);\nuse(scan);\n', set()),
+    ('for (const auto & scan : scans) {\nuse(scan);\n}\n', set()),
+    # a name the code never declares: a library's constant or an unknown
+    # base class's member
+    ('void f(unsigned flag = scan);\nuse(scan);\n', {('object', 'scan')}),
+    ('return scan;\nuse(scan);\n', {('object', 'scan')}),
+])
+def test_an_undeclared_variable_is_repaired_unless_the_code_declares_it(
+        code, expected):
+    line = code.split('\n').index('use(scan);') + 1
+    found = repair.repairs_from_diagnostics(
+        [("use of undeclared identifier 'scan'", 'a.cpp', line, 5)],
+        lambda file, number: code.split('\n')[number - 1], texts=[code])
+    assert found == expected
+
+
+def test_the_packages_own_namespace_is_repaired_where_used_first():
+    # `autoware` is the package's namespace too, but a header of a missing
+    # library names it before any of the package's code opens it
+    code = 'using autoware::kalman_filter::KalmanFilter;\n' \
+        'namespace autoware::tracker { class Tracker {}; }\n'
+    found = repair.repairs_from_diagnostics(
+        [("use of undeclared identifier 'autoware'", 'a.h', 1, 7)],
+        _lines(code.split('\n')[0]), texts=[code],
+        declared=repair.declared_names([code]))
+    assert ('namespace', 'autoware') in found
+    # nothing of the package's own is declared again
+    assert not {name for _, name in found if 'Tracker' in name}
 
 
 def test_a_function_brought_in_by_a_using_declaration_is_declared_there():
@@ -1168,3 +1199,55 @@ def test_a_model_header_a_repair_includes_gets_its_stand_ins(tmp_path):
     [unit] = summary.coverage.units
     assert unit.repair_rounds >= 1
     assert unit.errors == 0, summary.diagnostics
+
+
+PANEL = """\
+#include <rviz_like/display.hpp>
+#include <std_msgs/msg/string.hpp>
+
+namespace acme_panels
+{
+class StatusDisplay : public rviz_like::Display
+{
+public:
+  void onInitialize() override
+  {
+    // context_ is the unknown base class's member: a library constant or
+    // member the code never declares is repaired as a catch-all value,
+    // and the calls on it are known by their names
+    auto ros_node = context_->getRosNodeAbstraction().lock();
+    sub_ = ros_node->get_raw_node()->create_subscription<std_msgs::msg::String>(
+      "status", 10, [this](std_msgs::msg::String::ConstSharedPtr msg) {
+        text_ = msg->data;
+      });
+  }
+
+private:
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+  std::string text_;
+};
+}  // namespace acme_panels
+"""
+
+
+def test_calls_on_a_value_of_an_unknown_base_class_are_known_by_name(
+        tmp_path):
+    package = tmp_path / 'src' / 'acme_panels'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'status_display.cpp').write_text(
+        '#include <rclcpp/rclcpp.hpp>\n' + PANEL)
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\nproject(acme_panels)\n'
+        'add_library(acme_panels SHARED src/status_display.cpp)\n')
+    summary = analysis.analyze_package(
+        name='acme_panels', path=str(package),
+        build_base=str(tmp_path / 'build' / 'acme_panels'), jobs=1,
+        header_mode='model', workspace_package_dirs=[str(package)])
+
+    [unit] = summary.coverage.units
+    assert unit.package_errors == 0, summary.diagnostics
+    subscriptions = [c for c in summary.coverage.call_sites
+                     if c.role == 'subscriber']
+    # recorded as a fact ('unit': no node of the package runs it)
+    assert [(c.line, c.recorded) for c in subscriptions] == [
+        (16, 'unit')], summary.coverage.call_sites

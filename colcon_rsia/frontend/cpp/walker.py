@@ -495,6 +495,12 @@ class _Walker:
                 ref.spelling == REPAIRED_CONSTRUCTOR:
             name = repaired_call_name(cursor, ref) or name
         api = ros_api.lookup_call(name)
+        if api is None and name.startswith(REPAIRED_PREFIX):
+            # a member of the model's catch-all value (`rviz_node->
+            # create_subscription<M>(...)` on what an unknown base class
+            # holds): known by its name alone, as in a template
+            self._dependent_call(cursor, ctx, stack)
+            return
         arguments = None
         if api is None and name in ros_api.FORWARDING_FACTORIES:
             self._forwarded_package_constructor(cursor, ctx)
@@ -513,7 +519,8 @@ class _Walker:
         On an object of a template parameter's type (``NodeT node``) the
         call resolves only when the template is instantiated, which the
         AST does not show: the endpoint-creating methods are recognised by
-        their name (see ros_api.DEPENDENT_METHODS).
+        their name (see ros_api.DEPENDENT_METHODS). So are they on a value
+        whose type the model mode could not know (a catch-all).
         """
         name = self.dependent_call_name(cursor)
         if name is None:

@@ -307,8 +307,20 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
     return {_included(r, stand_in) for r in _one_kind_each({
         r for r in repairs
         if r[0] in INCLUDES or (
-            not _declared(r[1], declared) and
+            (_reopened_namespace(r) or not _declared(r[1], declared)) and
             not any(part in _KEYWORDS for part in r[1].split('::')))})}
+
+
+def _reopened_namespace(repair):
+    """Whether a repair declares a lower-case namespace (harmless again).
+
+    The package's own namespace (`autoware`) is undeclared where a header
+    of a missing library names it first (`using
+    autoware::kalman_filter::KalmanFilter;`); a class of the package is
+    CamelCase, and stays the package's alone.
+    """
+    kind, name = repair
+    return kind == NAMESPACE and not _CAMEL.match(name.split('::')[-1])
 
 
 _ALIAS_DEFINITION = re.compile(
@@ -600,15 +612,20 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 # a macro a macro's body calls (REGISTER_ENTITY(...) in
                 # the body of a workspace macro): a function-like macro
                 kind = MACRO_VALUE
-            elif kind == OBJECT and _CAST_TYPE.search(
-                    text[:max(0, column - 1)] + '@' + after):
-                # static_cast<uchar>(v), (uchar)v: a type (OpenCV's uchar,
-                # brought in by `using namespace cv;`)
+            elif kind == OBJECT and (
+                    _CAST_TYPE.search(text[:max(0, column - 1)] + '@' + after)
+                    or (text[:max(0, column - 1)].rstrip().endswith('<') and
+                        after.startswith(('>', ',')))):
+                # static_cast<uchar>(v), (uchar)v, Point3_<uchar>: a type
+                # (OpenCV's uchar, brought in by `using namespace cv;`)
                 kind = TYPE
-            # an undeclared lower-case variable is nearly always a local
-            # whose declaration failed (an error of its own): declaring a
-            # global of that name would only hide the cause
-            if kind != OBJECT:
+            # an undeclared lower-case variable is most often a local or a
+            # member whose declaration failed (an error of its own):
+            # declaring a global of that name would only hide the cause.
+            # One the code never declares is a library's (a C constant,
+            # `flag = cudaHostAllocDefault`; an unknown base class's member,
+            # `scene_manager_`)
+            if kind != OBJECT or not _declared_as_variable(name, texts):
                 repairs.add((kind, name))
             continue
         match = _UNKNOWN_TYPE.match(message)
@@ -790,6 +807,20 @@ _USING_DECLARATION = re.compile(r'\busing\s+(?:::\s*)?(?:\w+\s*::\s*)*$')
 
 def _base_kind(kind):
     return kind.partition(':')[0]
+
+
+# the words before a name that do not make its line a declaration of it
+_NOT_DECLARING = frozenset("""
+    return case throw else delete new sizeof goto do co_return co_yield
+    co_await typeid alignof decltype and or not""".split())
+
+
+def _declared_as_variable(name, texts):
+    """Whether the code declares `name` (`Type name = ...`, `auto & name :`)."""
+    pattern = re.compile(
+        r'(\w+|[>*&])\s*\b' + re.escape(name) + r'\s*[=;({\[,):]')
+    return any(match.group(1) not in _NOT_DECLARING
+               for text in texts for match in pattern.finditer(text))
 
 
 def _by_qualified_use(name, after, before):
