@@ -972,3 +972,32 @@ def test_constants_in_the_k_style_are_declared_for_nested_unknown_types():
     constants = source_names.used_names(
         ['if (severity <= Severity::kINFO || s == Logger::CONNECTED) {}'])[1]
     assert {'kINFO', 'CONNECTED'} <= constants
+
+
+def test_repaired_classes_hash_and_unknown_values_take_a_comma_initializer(
+        tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <unordered_map>
+#include <boost/uuid/uuid.hpp>
+#include <eigen_like/core.hpp>
+
+// a repaired class as the key of an unordered_map (its default
+// constructor is deleted without a std::hash of the key)
+std::unordered_map<boost::uuids::uuid, double> ages;
+
+double run(const boost::uuids::uuid & id)
+{
+  ages[id] = 1.0;
+  // Eigen's comma initializer on a class of the unknown library
+  const eigen_like::Matrix3d m =
+    (eigen_like::Matrix3d() << 1, 0, 0, 0, 1, 0, 0, 0, 1).finished();
+  return ages.count(id) + m(0, 0);
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    header = repair.repair_header(str(stub_dir), str(source))
+    repair.add_repairs(header, str(source), {('type', 'boost::uuids::uuid')})
+    tu = _parse(file=source, arguments=['-include', header] + arguments,
+                directory=package)
+    assert cpp.parse_diagnostics(tu) == []

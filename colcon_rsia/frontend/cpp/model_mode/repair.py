@@ -942,6 +942,10 @@ def _render(repairs, source):
         # (a namespace's guard repeats its last name: it declares nothing
         # a stand-in could step aside for)
         guard = repaired_guard('::'.join(namespaces + [short]))
+        if kind == TYPE and body.startswith('struct'):
+            # a key of std::unordered_map (boost::uuids::uuid)
+            closing += f' template <> struct std::hash<::{name}> : ' \
+                '::rsia_model::UnknownHash {};'
         lines += [f'#ifndef {short}', f'#define {guard}',
                   f'{opening} {body} {closing}'.strip(), '#endif']
     lines.append('')

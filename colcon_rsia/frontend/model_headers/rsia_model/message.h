@@ -167,6 +167,10 @@ struct Any
   Any& operator()(RsiaArgs&&...) const;
   template <class RsiaIndex>
   Any& operator[](const RsiaIndex&) const;
+  // Eigen's comma initializer, `(Matrix() << 1, 0, 0).finished()`: with
+  // the built-in comma the value would become the last number
+  template <class RsiaV>
+  Any& operator,(RsiaV&&) const;
   Any& operator*() const;
   Any* operator->() const;
   AnyIterator begin() const;
@@ -335,6 +339,13 @@ struct Unknown : Fields
   // classes bring it in with `using ::rsia_model::Unknown::operator=`.
   template <class RsiaV>
   Unknown& operator=(RsiaV&&);
+};
+
+// The hash of a class the repairs declare (repair.py specialises std::hash
+// with it): `std::unordered_map<boost::uuids::uuid, T>` is constructible
+struct UnknownHash
+{
+  std::size_t operator()(const Unknown&) const;
 };
 
 // Arithmetic and comparisons on the classes of unknown libraries
