@@ -11,10 +11,10 @@ the unit's own includes of them no-ops.
 
 One PCH per language standard (clang refuses a PCH made for another), named
 by the libclang library file, the resource directory and the header's text
-(another libclang cannot read it), in a
-directory the packages of a workspace share. A PCH clang cannot load (the
-system headers changed since it was built) is deleted, and the units parse
-without one: the next run builds it again.
+(another libclang cannot read it), in a directory the packages of a
+workspace share. A PCH clang cannot load (the system headers changed since
+it was built) is deleted, and the units parse without one: the next run
+builds it again.
 """
 
 import hashlib
