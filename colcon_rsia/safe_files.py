@@ -211,21 +211,31 @@ def file_mode():
 def write_text_atomically(path, text, *, errors='backslashreplace'):
     """Write a text file whole or not at all: readers see the old or the new.
 
-    A temporary file in the same directory is renamed over the target (a
-    write killed half-way leaves at most a stray temporary file), with the
-    mode of every other build artifact, not mkstemp's 0600.
-
     :param errors: how characters UTF-8 cannot encode (surrogate escapes
       of undecodable names) are written
+    """
+    def write(temporary):
+        with open(temporary, 'w', encoding='utf-8', errors=errors) as h:
+            h.write(text)
+    write_file_atomically(path, write)
+
+
+def write_file_atomically(path, write):
+    """Make a file whole or not at all: readers see the old or the new.
+
+    ``write(temporary)`` fills a temporary file in the same directory,
+    which is then renamed over the target (a write killed half-way leaves
+    at most a stray temporary file), with the mode of every other build
+    artifact, not mkstemp's 0600.
     """
     directory = os.path.dirname(path)
     os.makedirs(directory, exist_ok=True)
     fd, temporary = tempfile.mkstemp(
         dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
+    os.close(fd)
     try:
-        os.fchmod(fd, file_mode())
-        with os.fdopen(fd, 'w', encoding='utf-8', errors=errors) as h:
-            h.write(text)
+        write(temporary)
+        os.chmod(temporary, file_mode())
         os.replace(temporary, path)
     except BaseException:
         try:

@@ -19,7 +19,6 @@ builds it again.
 
 import hashlib
 import os
-import tempfile
 import threading
 
 from colcon_rsia import safe_files
@@ -99,25 +98,14 @@ def _built(directory, standard, resource_dir):
     if resource_dir:
         arguments += ['-resource-dir', resource_dir]
     try:
-        os.makedirs(directory, exist_ok=True)
         tu = ci.Index.create().parse(
             PRECOMPILED_HEADER, args=arguments,
             options=ci.TranslationUnit.PARSE_INCOMPLETE)
         if any(d.severity >= ci.Diagnostic.Error for d in tu.diagnostics):
             return None
-        # a temporary name, then renamed: another process building the same
-        # PCH, or reading it, never sees half a file
-        fd, temporary = tempfile.mkstemp(
-            dir=directory, prefix='.' + os.path.basename(path),
-            suffix='.tmp')
-        os.close(fd)
-        try:
-            tu.save(temporary)
-            os.chmod(temporary, safe_files.file_mode())
-            os.replace(temporary, path)
-        finally:
-            if os.path.exists(temporary):
-                os.unlink(temporary)
+        # another process building the same PCH, or reading it, never sees
+        # half a file
+        safe_files.write_file_atomically(path, tu.save)
     except (OSError, ci.TranslationUnitLoadError,
             ci.TranslationUnitSaveError):
         return None

@@ -897,6 +897,7 @@ def _render(repairs, source):
     for kind, name in sorted(repairs):
         lines.append(f'// repair {kind} {name}')
         *namespaces, short = name.split('::')
+        trailer = ''  # after the declaration, outside its namespaces
         if kind in MEMBER_KINDS:
             continue  # in its type's declaration
         if kind in INCLUDES:
@@ -922,6 +923,10 @@ def _render(repairs, source):
             # differ from the `std::vector<VirtualWall>` other code writes
             body = f'using {short} = std::vector<{short[:-1]}>;'
         elif _base_kind(kind) in (TYPE, TEMPLATE):
+            if kind == TYPE:
+                # a key of std::unordered_map (boost::uuids::uuid)
+                trailer = f' template <> struct std::hash<::{name}> : ' \
+                    '::rsia_model::UnknownHash {};'
             body = _one_line(catch_all_class(
                 short, head=template_head(kind) if kind != TYPE else '',
                 members=[{
@@ -942,12 +947,8 @@ def _render(repairs, source):
         # (a namespace's guard repeats its last name: it declares nothing
         # a stand-in could step aside for)
         guard = repaired_guard('::'.join(namespaces + [short]))
-        if kind == TYPE and body.startswith('struct'):
-            # a key of std::unordered_map (boost::uuids::uuid)
-            closing += f' template <> struct std::hash<::{name}> : ' \
-                '::rsia_model::UnknownHash {};'
         lines += [f'#ifndef {short}', f'#define {guard}',
-                  f'{opening} {body} {closing}'.strip(), '#endif']
+                  f'{opening} {body} {closing}{trailer}'.strip(), '#endif']
     lines.append('')
     return '\n'.join(lines)
 
