@@ -1001,3 +1001,186 @@ double run(const boost::uuids::uuid & id)
     tu = _parse(file=source, arguments=['-include', header] + arguments,
                 directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_sizes_and_c_strings_of_unknown_values_have_their_usual_types(
+        tmp_path):
+    package, [first, second] = _sources(tmp_path, first=r"""
+#include <vector>
+#include <std_msgs/msg/string.hpp>
+#include <sensor_msgs/msg/point_cloud2.hpp>
+#include <eigen_like/core.hpp>
+
+std::size_t run(const std_msgs::msg::String & text,
+                const sensor_msgs::msg::PointCloud2 & cloud,
+                const eigen_like::MatrixXd & matrix)
+{
+  // a catch-all size() would tie between vector's size and copy
+  // constructors; a catch-all c_str() would not become a const char *
+  std::vector<double> widths(cloud.fields.size());
+  std::vector<std::vector<double>> scores(matrix.rows(), std::vector<double>(matrix.cols()));
+  const char * name = text.data.c_str();
+  return widths.size() + scores.size() + (name != nullptr);
+}
+""", second=r"""
+#include <std_msgs/msg/string.hpp>
+
+// another unit takes `size` for a value: a member for every unit
+double run(std_msgs::msg::String & text) { text.size = 3; return text.size * 2; }
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, first, stub_dir)
+    assert 'RSIA_MODEL_METHOD(size, std::size_t)' in (
+        stub_dir / 'rsia_model' / 'fields.h').read_text()
+    tu = _parse(file=first, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+    arguments = _prepare(package, second, stub_dir)
+    fields = (stub_dir / 'rsia_model' / 'fields.h').read_text()
+    assert 'RSIA_MODEL_FIELD(size)' in fields
+    assert 'RSIA_MODEL_METHOD(c_str, const char *)' in fields
+    tu = _parse(file=second, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_classes_of_unknown_libraries_take_braces_and_iterated_elements(
+        tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <vector>
+#include <boost/optional.hpp>
+#include <nav_msgs/msg/path.hpp>
+#include <lanelet_like/lanelet.hpp>
+
+void run(const nav_msgs::msg::Path & path, std::vector<lanelet_like::ConstLanelet> & lanelets)
+{
+  boost::optional<double> last;
+  // `= {}` tied between the class's own assignments and those of its base
+  last = {};
+  last = path.poses.front();
+  lanelet_like::Point2d point;
+  point = {path.poses.front().pose.position.x, 2.0};
+  // an element of a field binds to a reference of the class, and makes one
+  // through the class's constructor: push_back(const T &) and
+  // push_back(T &&) tied
+  for (const auto & lanelet : path.poses) {
+    lanelets.push_back(lanelet);
+    const lanelet_like::ConstLanelet copy(lanelet);
+  }
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    header = repair.repair_header(str(stub_dir), str(source))
+    repair.add_repairs(header, str(source), {('template', 'boost::optional')})
+    tu = _parse(file=source, arguments=['-include', header] + arguments,
+                directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_catch_all_calls_take_braced_arguments(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <vector>
+#include <geometry_msgs/msg/point.hpp>
+#include <grid_like/polygon.hpp>
+#include <cv_like/imgproc.hpp>
+
+void run(const geometry_msgs::msg::Point & p, grid_like::Polygon & polygon, cv_like::Mat & image)
+{
+  // a braced list deduces no template parameter of the catch-all calls
+  polygon.addVertex({p.x, p.y});
+  polygon.vertices.push_back({p.x, p.y, p.z});
+  cv_like::copyMakeBorder(image, image, 0, 1, 0, 1, cv_like::BORDER_CONSTANT, {0, 0, 0});
+  const auto resized = cv_like::resize<float>(image, {});
+  const std::vector<double> values = grid_like::spline({1.0}, std::vector<double>{2.0}, {p.x});
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_rates_policies_iterators_and_pointer_casts_of_catch_all_values(
+        tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <iterator>
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <map_like/primitives.hpp>
+
+double run(rclcpp::Node & node, const std_msgs::msg::Float64 & rate,
+           const map_like::Lanelet & lanelet)
+{
+  // a field is a rate in hertz, not a duration message
+  const auto period = rclcpp::Rate(rate.data).period();
+  rclcpp::WallRate wall(rate.data);
+  const auto qos = rclcpp::QoS(1).durability(rclcpp::DurabilityPolicy::TransientLocal)
+                     .reliability(rclcpp::ReliabilityPolicy::Reliable);
+  const auto step = rclcpp::Duration::from_nanoseconds(
+    static_cast<rcl_duration_value_t>(rate.data * 1e9));
+  const auto vertices = lanelet.polygon();
+  auto next = std::next(vertices.cbegin());
+  const auto element = std::dynamic_pointer_cast<const map_like::Crosswalk>(
+    lanelet.regulatoryElements().front());
+  return period.count() + step.seconds() + (next != vertices.cend()) + (element != nullptr);
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_known_member_whose_result_has_members_stays_a_catch_all():
+    # OpenCV's `image.size().width`: no number
+    values = source_names.used_names(
+        ['int w = image.size().width + path.c_str()[0]; n = v.rows();'])[5]
+    assert 'size' in values
+    assert not {'c_str', 'rows'} & values
+
+
+def test_a_switch_takes_a_value_of_a_nested_unknown_type(tmp_path):
+    # TensorRT's logger: `Severity` is a nested type of an unknown class
+    package, [source] = _sources(tmp_path, node=r"""
+#include <trt_like/logger.hpp>
+
+int level(trt_like::ILogger::Severity severity)
+{
+  switch (severity) {
+    case trt_like::ILogger::Severity::kERROR:
+      return 2;
+    case trt_like::ILogger::Severity::kINFO:
+      return 1;
+    default:
+      return severity ? 0 : -1;
+  }
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    header = repair.repair_header(str(stub_dir), str(source))
+    repair.add_repairs(header, str(source), {
+        ('type', 'trt_like::ILogger'),
+        ('member-type', 'trt_like::ILogger::Severity')})
+    tu = _parse(file=source, arguments=['-include', header] + arguments,
+                directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_catch_all_value_becomes_a_pair(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <utility>
+#include <vector>
+#include <opt_like/minima.hpp>
+
+float run(const std::vector<double> & xs)
+{
+  // a pair from a function of an unknown library
+  const std::pair<float, float> best = opt_like::minimize(xs, 0.0, 1.0);
+  return best.first;
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []

@@ -21,6 +21,21 @@ _TEMPLATE_MEMBER = re.compile(
     r'(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*'
     r'<[^;(){}<>]*(?:<[^;(){}<>]*>[^;(){}<>]*)*>\s*\(')
 _VALUE_MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)\b(?!\s*[(<])')
+# Members whose calls every library means the same way, with their result:
+# declared as functions when no use takes them for a value (or reaches
+# into their result: OpenCV's `image.size().width`). As catch-all
+# members they would return a catch-all value, which ties between the
+# overloads it converts to: `std::vector<double> v(other.size())` between
+# the size and the copy constructors, `const char * p = s.c_str()` fails.
+KNOWN_METHODS = {
+    'size': 'std::size_t',
+    'c_str': 'const char *',
+    # Eigen's and OpenCV's matrices
+    'rows': 'long',
+    'cols': 'long',
+}
+_RESULT_MEMBER = re.compile(
+    r'(?:\.|->)\s*([A-Za-z_]\w*)\s*\(\s*\)\s*(?:\.|->)')
 # `Type::NAME`, also in the kName style (`ILogger::Severity::kINFO`)
 _CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*|k[A-Z]\w*)\b')
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
@@ -50,7 +65,8 @@ _NOT_MEMBERS = frozenset("""
     volatile wchar_t while xor xor_eq
     linux unix i386 errno stdin stdout stderr NULL EOF assert offsetof
     major minor makedev setjmp va_arg va_start va_end va_copy
-    Any AnyElement Fields begin end ContainerAllocator boost std ros
+    Any AnyElement Fields begin end cbegin cend rbegin rend
+    ContainerAllocator boost std ros
 """.split())
 
 # the costly standard headers of rsia_model/std.h (what the real ROS headers
@@ -147,6 +163,8 @@ def used_names(codes):
         members.update(m.group(1) for m in _MEMBER.finditer(code))
         templates.update(m.group(1) for m in _TEMPLATE_MEMBER.finditer(code))
         values.update(m.group(1) for m in _VALUE_MEMBER.finditer(code))
+        values.update(m.group(1) for m in _RESULT_MEMBER.finditer(code)
+                      if m.group(1) in KNOWN_METHODS)
         constants.update(m.group(1) for m in _CONSTANT.finditer(code))
         field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):

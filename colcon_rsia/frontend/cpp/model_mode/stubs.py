@@ -14,6 +14,7 @@ import threading
 from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
+from colcon_rsia.frontend.cpp.model_mode.source_names import KNOWN_METHODS
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
@@ -154,7 +155,8 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     old = read_text(path) or ''
     if not old.startswith(STUB_MARKER):
         old = ''
-    old_members = set(re.findall(r'RSIA_MODEL_FIELD\((\w+)\)', old))
+    old_members = set(re.findall(
+        r'RSIA_MODEL_(?:FIELD|METHOD)\((\w+)[,)]', old))
     old_constants = set(re.findall(r'RSIA_MODEL_CONSTANT\((\w+),', old))
     old_types = set(re.findall(r'RSIA_MODEL_FIELD_TYPE\((\w+)\)', old))
     old_templates = set(re.findall(
@@ -174,6 +176,9 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
         (old_templates | set(templates)) - set(all_values))
     all_members = sorted((old_members | members) - set(all_templates))
     taken = set(all_members) | set(all_templates)
+    methods = [n for n in all_members
+               if n in KNOWN_METHODS and n not in all_values]
+    all_members = [n for n in all_members if n not in methods]
     all_constants = sorted((old_constants | constants) - taken)
     all_types = sorted((old_types | set(field_types)) - taken)
     lines = [
@@ -186,6 +191,10 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD({name})', '#endif']
     for name in all_templates:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TEMPLATE({name})',
+                  '#endif']
+    for name in methods:
+        lines += [f'#ifndef {name}',
+                  f'RSIA_MODEL_METHOD({name}, {KNOWN_METHODS[name]})',
                   '#endif']
     for name in all_types:
         lines += [f'#ifndef {name}', f'RSIA_MODEL_FIELD_TYPE({name})',
@@ -406,16 +415,22 @@ def repaired_guard(qualified_name):
 
 def catch_all_class(name, *, head='', members=()):
     """The lines of a class of an unknown library, made from anything."""
+    # its own assignment from anything (see rsia_model::Unknown), which
+    # also hides the base's copy and move assignments: with them, `x = {}`
+    # would tie between the class's and the base's
     return [f'{head}struct {name} : ::rsia_model::Unknown', '{',
             '  using ::rsia_model::Unknown::Unknown;',
-            '  using ::rsia_model::Unknown::operator=;', *members, '};']
+            f'  template <class RsiaV> {name}& operator=(RsiaV&&);',
+            *members, '};']
 
 
 def catch_all_function(name):
     """The lines of a function of an unknown library, taking anything.
 
     Explicit template arguments (`f<T>(x)`) go to RsiaT, the call's
-    arguments are deduced.
+    arguments are deduced; the braced forms take braced lists, which
+    deduce nothing (see rsia_model/message.h).
     """
     return ['template <class... RsiaT, class... RsiaA>',
-            f'::rsia_model::Any& {name}(RsiaA&&...);']
+            f'::rsia_model::Any& {name}(RsiaA&&...);',
+            f'RSIA_MODEL_BRACED_FUNCTION({name})']

@@ -152,6 +152,12 @@ rmw_ret_t rmw_serialized_message_resize(
 rmw_ret_t rmw_serialized_message_fini(rmw_serialized_message_t * msg);
 using rmw_serialized_message_t = rcl_serialized_message_t;
 
+// rcutils/time.h, rcl/time.h: nanoseconds
+typedef int64_t rcutils_time_point_value_t;
+typedef int64_t rcutils_duration_value_t;
+typedef rcutils_time_point_value_t rcl_time_point_value_t;
+typedef rcutils_duration_value_t rcl_duration_value_t;
+
 enum rcl_clock_type_t
 {
   RCL_CLOCK_UNINITIALIZED = 0,
@@ -362,6 +368,12 @@ struct QoSInitialization
   QoSInitialization(int history_policy, std::size_t depth);
 };
 
+// rclcpp/qos.hpp (Galactic+): the policies as rclcpp's own enums
+enum class HistoryPolicy { KeepLast, KeepAll, SystemDefault, Unknown };
+enum class ReliabilityPolicy { BestEffort, Reliable, SystemDefault, BestAvailable, Unknown };
+enum class DurabilityPolicy { Volatile, TransientLocal, SystemDefault, BestAvailable, Unknown };
+enum class LivelinessPolicy { Automatic, ManualByTopic, SystemDefault, BestAvailable, Unknown };
+
 class QoS
 {
 public:
@@ -377,6 +389,10 @@ public:
   QoS & history(rmw_qos_history_policy_t history);
   QoS & reliability(rmw_qos_reliability_policy_t reliability);
   QoS & durability(rmw_qos_durability_policy_t durability);
+  QoS & history(HistoryPolicy history);
+  QoS & reliability(ReliabilityPolicy reliability);
+  QoS & durability(DurabilityPolicy durability);
+  QoS & liveliness(LivelinessPolicy liveliness);
   QoS & keep_last(std::size_t depth);
   QoS & keep_all();
   QoS & reliable();
@@ -1449,6 +1465,13 @@ public:
                 Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
   explicit Rate(const Duration & period,
                 Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
+  // a field or a value of a library the model lacks (`Rate(params.rate)`):
+  // a rate in hertz, which it holds far more often than a duration message;
+  // with the two constructors above alone, it would tie between them
+  template<class A, typename std::enable_if<
+      std::is_base_of<rsia_model::Any, A>::value, int>::type = 0>
+  explicit Rate(const A & rate,
+                Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
   virtual bool sleep();
   virtual bool is_steady() const;
   virtual rcl_clock_type_t get_type() const;
@@ -1461,6 +1484,10 @@ class WallRate : public Rate
 public:
   explicit WallRate(const double rate);
   explicit WallRate(const Duration & period);
+  // a rate in hertz, as Rate's
+  template<class A, typename std::enable_if<
+      std::is_base_of<rsia_model::Any, A>::value, int>::type = 0>
+  explicit WallRate(const A & rate);
 };
 
 // Rolling

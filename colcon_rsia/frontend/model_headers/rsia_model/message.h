@@ -29,7 +29,8 @@
 // (it has no include guard): it holds one RSIA_MODEL_FIELD(name) for each
 // member name used in the analysed sources and one
 // RSIA_MODEL_CONSTANT(NAME, value) for each `Type::CONSTANT`, each skipped
-// when a macro of that name is defined.
+// when a macro of that name is defined; RSIA_MODEL_METHOD(name, result) for
+// the members every library means the same way (`size()`, `c_str()`).
 #if defined(__has_include)
 #if __has_include(<rsia_model/fields.h>)
 #define RSIA_MODEL_HAVE_FIELDS
@@ -63,6 +64,12 @@ struct field_target<std::basic_string_view<char, RsiaTraits>> : std::true_type
 
 template <class RsiaElement, std::size_t RsiaSize>
 struct field_target<std::array<RsiaElement, RsiaSize>> : std::true_type
+{
+};
+
+// `std::pair<float, float> best = boost::math::tools::brent_find_minima(...)`
+template <class RsiaFirst, class RsiaSecond>
+struct field_target<std::pair<RsiaFirst, RsiaSecond>> : std::true_type
 {
 };
 
@@ -136,6 +143,35 @@ RSIA_MODEL_ITERATOR_COMPARE_(>=)
 
 struct AnyValue;
 
+// An argument written as a braced list (`poly.addVertex({p.x, p.y})`,
+// `copyMakeBorder(a, b, 0, 1, 0, 1, BORDER_CONSTANT, {0, 0, 0})`): it
+// deduces no template parameter, so the catch-all calls, which deduce their
+// arguments, also have overloads taking up to 8 of these. Any other call
+// takes the deducing form, an exact match.
+struct Braced
+{
+  Braced();
+  template <class... RsiaArgs>
+  Braced(RsiaArgs&&...);
+};
+#define RSIA_MODEL_B_ ::rsia_model::Braced
+#define RSIA_MODEL_BRACED_OVERLOADS(head, name, tail)                          \
+  head name(RSIA_MODEL_B_) tail                                                 \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_) tail                                  \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_) tail                   \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_) tail    \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_,         \
+            RSIA_MODEL_B_) tail                                                 \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_,         \
+            RSIA_MODEL_B_, RSIA_MODEL_B_) tail                                  \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_,         \
+            RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_) tail                   \
+  head name(RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_,         \
+            RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_, RSIA_MODEL_B_) tail
+// the braced forms of a function of an unknown library (stubs.py)
+#define RSIA_MODEL_BRACED_FUNCTION(name) \
+  RSIA_MODEL_BRACED_OVERLOADS(template <class... RsiaT> ::rsia_model::Any&, name, ;)
+
 struct Any
 {
   // a container's element (std::back_inserter(msg.points))
@@ -165,6 +201,7 @@ struct Any
 
   template <class... RsiaArgs>
   Any& operator()(RsiaArgs&&...) const;
+  RSIA_MODEL_BRACED_OVERLOADS(Any&, operator(), const;)
   template <class RsiaIndex>
   Any& operator[](const RsiaIndex&) const;
   // Eigen's comma initializer, `(Matrix() << 1, 0, 0).finished()`: with
@@ -175,6 +212,10 @@ struct Any
   Any* operator->() const;
   AnyIterator begin() const;
   AnyIterator end() const;
+  AnyIterator cbegin() const;
+  AnyIterator cend() const;
+  AnyIterator rbegin() const;
+  AnyIterator rend() const;
 
   Any& operator++();
   Any& operator--();
@@ -207,11 +248,14 @@ struct Any
   template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_CONSTANT(name, value)
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
+#define RSIA_MODEL_METHOD(name, result) \
+  template <class... RsiaA> result name(RsiaA&&...) const;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
 #undef RSIA_MODEL_FIELD_TEMPLATE
 #undef RSIA_MODEL_CONSTANT
 #undef RSIA_MODEL_FIELD_TYPE
+#undef RSIA_MODEL_METHOD
 #endif
 };
 
@@ -268,10 +312,16 @@ RSIA_MODEL_ANY_COMPOUND_(>>=)
 // An element reached by iterating a field (`for (float& r : msg.ranges)`): it
 // also binds to a reference of any type. (Not for Any itself: a call overloaded
 // on number types, such as std::to_string(msg.x), would become ambiguous.)
+struct Unknown;
+
 struct AnyElement : Any
 {
   using Any::operator=;
-  template <class RsiaV>
+  // not to the classes of unknown libraries, which are made from anything:
+  // `lanelets.push_back(element)` would tie between push_back(const T&),
+  // reached two ways, and push_back(T&&)
+  template <class RsiaV,
+            typename std::enable_if<!std::is_base_of<Unknown, RsiaV>::value, int>::type = 0>
   operator RsiaV&() const;
 };
 
@@ -300,11 +350,14 @@ struct Fields
   template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_CONSTANT(name, value) static constexpr int name = value;
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
+#define RSIA_MODEL_METHOD(name, result) \
+  template <class... RsiaA> result name(RsiaA&&...) const;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
 #undef RSIA_MODEL_FIELD_TEMPLATE
 #undef RSIA_MODEL_CONSTANT
 #undef RSIA_MODEL_FIELD_TYPE
+#undef RSIA_MODEL_METHOD
 #endif
 };
 
@@ -312,6 +365,13 @@ struct Fields
 // use from an unknown library (`acme_driver::Device`): constructible from
 // anything, usable as a pointer, a callable or a condition, with the
 // catch-all members of Fields.
+// what a class of an unknown library converts to implicitly: an unscoped
+// enumeration is what `switch (severity)` takes (TensorRT's
+// ILogger::Severity), and converts on to any number
+enum UnknownNumber : long
+{
+};
+
 struct Unknown : Fields
 {
   // no message (see field_target.h): an Any becomes one through the
@@ -325,18 +385,24 @@ struct Unknown : Fields
   Any* operator->() const;
   Any& operator*() const;
   explicit operator bool() const;
+  operator UnknownNumber() const;
   template <class... RsiaArgs>
   Any& operator()(RsiaArgs&&...) const;
+  RSIA_MODEL_BRACED_OVERLOADS(Any&, operator(), const;)
   // a container of the unknown library (lanelet::BasicPolygons2d):
   // iterated, indexed
   Any* begin() const;
   Any* end() const;
+  Any* cbegin() const;
+  Any* cend() const;
+  Any* rbegin() const;
+  Any* rend() const;
   template <class RsiaI>
   Any& operator[](RsiaI&&) const;
   // assignment from anything in one exact step: otherwise `handle =
   // hw->getHandle(name)` (an Any) ties between the implicit copy and move
   // assignments, both reached through the constructor above. The declared
-  // classes bring it in with `using ::rsia_model::Unknown::operator=`.
+  // classes have one of their own (stubs.catch_all_class).
   template <class RsiaV>
   Unknown& operator=(RsiaV&&);
 };
@@ -442,6 +508,27 @@ template <class RsiaA, class RsiaB>
 template <class RsiaV, class RsiaLo, class RsiaHi>
 ::rsia_model::MixedResult<RsiaV, RsiaLo, RsiaHi> clamp(const RsiaV&, const RsiaLo&,
                                                      const RsiaHi&);
+}  // namespace std
+
+// `std::dynamic_pointer_cast<const Crosswalk>(element)` of a catch-all value
+// (std's forms take a shared_ptr only)
+namespace rsia_model
+{
+template <class RsiaV>
+using CatchAll = typename std::enable_if<
+    std::is_base_of<Any, typename std::decay<RsiaV>::type>::value ||
+        std::is_base_of<Unknown, typename std::decay<RsiaV>::type>::value,
+    int>::type;
+}  // namespace rsia_model
+
+namespace std
+{
+template <class RsiaT, class RsiaV, ::rsia_model::CatchAll<RsiaV> = 0>
+shared_ptr<RsiaT> dynamic_pointer_cast(const RsiaV&);
+template <class RsiaT, class RsiaV, ::rsia_model::CatchAll<RsiaV> = 0>
+shared_ptr<RsiaT> static_pointer_cast(const RsiaV&);
+template <class RsiaT, class RsiaV, ::rsia_model::CatchAll<RsiaV> = 0>
+shared_ptr<RsiaT> const_pointer_cast(const RsiaV&);
 }  // namespace std
 
 // field values as keys of unordered containers (a DiagnosticLevel key)
