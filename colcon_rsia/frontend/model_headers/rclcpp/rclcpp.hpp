@@ -1469,7 +1469,7 @@ public:
   // a rate in hertz, which it holds far more often than a duration message;
   // with the two constructors above alone, it would tie between them
   template<class A, typename std::enable_if<
-      std::is_base_of<rsia_model::Any, A>::value, int>::type = 0>
+      rsia_model::IsField<A>::value, int>::type = 0>
   explicit Rate(const A & rate,
                 Clock::SharedPtr clock = std::make_shared<Clock>(RCL_SYSTEM_TIME));
   virtual bool sleep();
@@ -1486,7 +1486,7 @@ public:
   explicit WallRate(const Duration & period);
   // a rate in hertz, as Rate's
   template<class A, typename std::enable_if<
-      std::is_base_of<rsia_model::Any, A>::value, int>::type = 0>
+      rsia_model::IsField<A>::value, int>::type = 0>
   explicit WallRate(const A & rate);
 };
 

@@ -243,19 +243,18 @@ struct Any
 #undef RSIA_MODEL_ANY_COMPOUND_
 
 #ifdef RSIA_MODEL_HAVE_FIELDS
-#define RSIA_MODEL_FIELD(name) static Any name;
+// member templates, field types and known methods are the same in Fields
+// below (their macros stay defined until its include)
 #define RSIA_MODEL_FIELD_TEMPLATE(name) \
   template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
-#define RSIA_MODEL_CONSTANT(name, value)
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #define RSIA_MODEL_METHOD(name, result) \
   template <class... RsiaA> result name(RsiaA&&...) const;
+#define RSIA_MODEL_FIELD(name) static Any name;
+#define RSIA_MODEL_CONSTANT(name, value)
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
-#undef RSIA_MODEL_FIELD_TEMPLATE
 #undef RSIA_MODEL_CONSTANT
-#undef RSIA_MODEL_FIELD_TYPE
-#undef RSIA_MODEL_METHOD
 #endif
 };
 
@@ -346,12 +345,7 @@ struct Fields
   typedef void rsia_model_message_tag;
 #ifdef RSIA_MODEL_HAVE_FIELDS
 #define RSIA_MODEL_FIELD(name) Any name;
-#define RSIA_MODEL_FIELD_TEMPLATE(name) \
-  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_CONSTANT(name, value) static constexpr int name = value;
-#define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
-#define RSIA_MODEL_METHOD(name, result) \
-  template <class... RsiaA> result name(RsiaA&&...) const;
 #include <rsia_model/fields.h>
 #undef RSIA_MODEL_FIELD
 #undef RSIA_MODEL_FIELD_TEMPLATE
@@ -516,7 +510,7 @@ namespace rsia_model
 {
 template <class RsiaV>
 using CatchAll = typename std::enable_if<
-    std::is_base_of<Any, typename std::decay<RsiaV>::type>::value ||
+    IsField<RsiaV>::value ||
         std::is_base_of<Unknown, typename std::decay<RsiaV>::type>::value,
     int>::type;
 }  // namespace rsia_model
