@@ -1184,3 +1184,115 @@ float run(const std::vector<double> & xs)
     arguments = _prepare(package, source, stub_dir)
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_profiles_clock_waits_enum_results_and_constexpr_field_checks(
+        tmp_path):
+    # forms of ros2_control's controller manager
+    package, [source] = _sources(tmp_path, node=r"""
+#include <rclcpp/rclcpp.hpp>
+#include <lifecycle_msgs/msg/state.hpp>
+#include <handler_like/async_handler.hpp>
+
+namespace pkg
+{
+enum class return_type : std::uint8_t { OK = 0, ERROR = 1 };
+
+// every field of an rmw profile, as an aggregate
+static const rmw_qos_profile_t qos_services = {
+  RMW_QOS_POLICY_HISTORY_KEEP_ALL,
+  1,
+  RMW_QOS_POLICY_RELIABILITY_RELIABLE,
+  RMW_QOS_POLICY_DURABILITY_VOLATILE,
+  RMW_QOS_DEADLINE_DEFAULT,
+  RMW_QOS_LIFESPAN_DEFAULT,
+  RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT,
+  RMW_QOS_LIVELINESS_LEASE_DURATION_DEFAULT,
+  false};
+
+// a constexpr function comparing a message's field type
+constexpr bool needs_no_action(const lifecycle_msgs::msg::State::_id_type state)
+{
+  return state == lifecycle_msgs::msg::State::PRIMARY_STATE_UNKNOWN ||
+         state == lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED;
+}
+
+return_type update(rclcpp::Node & node, handler_like::AsyncHandler & handler,
+                   std::unique_ptr<rclcpp::PreShutdownCallbackHandle> & handle)
+{
+  node.get_node_base_interface()->get_context()->remove_pre_shutdown_callback(
+    *(handle.get()));
+  node.get_clock()->wait_until_started();
+  const auto result = handler.trigger(node.now());
+  return_type status = return_type::OK;
+  // a catch-all value to a scoped enumeration
+  status = result.second;
+  return needs_no_action(result.first) && qos_services.depth ? status : return_type::ERROR;
+}
+}  // namespace pkg
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_noetic_time_constants_and_distances_from_a_field_iterator(tmp_path):
+    # forms of ros_controllers' joint_state and joint_trajectory controllers
+    package, [source] = _sources(tmp_path, node=r"""
+#include <iterator>
+#include <vector>
+#include <ros/ros.h>
+#include <trajectory_msgs/JointTrajectory.h>
+
+double check(const trajectory_msgs::JointTrajectory & msg, std::vector<double> & v)
+{
+  typedef std::vector<trajectory_msgs::JointTrajectoryPoint>::const_iterator It;
+  long n = 0;
+  for (It it = msg.points.begin(); it != msg.points.end(); ++it) {
+    n += std::distance(msg.points.begin(), it) + std::distance(it, msg.points.end());
+  }
+  n += std::distance(msg.points.begin(), msg.points.end()) + std::distance(v.begin(), v.end());
+  const ros::Time last = ros::Time::MIN;
+  return n + (last == ros::Time::ZERO) + ros::Duration::MAX.toSec();
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_a_switch_takes_a_message_field(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/u_int8.hpp>
+#include <planning_like/msg/state.hpp>
+
+enum class Mode { Idle, Driving };
+
+int react(const std_msgs::msg::UInt8 & msg, const planning_like::msg::State & state, Mode mode)
+{
+  switch (msg.data) {
+    case 1:
+      return 2;
+    default:
+      break;
+  }
+  switch (state.state) {
+    case planning_like::msg::State::DRIVING:
+      return 3;
+  }
+  // not a field: stays what it is, so its cases keep their enumeration
+  switch(mode) {
+    case Mode::Driving:
+      return 4;
+    default:
+      return std::to_string(msg.data).size();
+  }
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []

@@ -228,6 +228,10 @@ def _lines(text):
     ("no member named 'uuid' in namespace 'boost::uuids'",
      'using Pair = std::pair<boost::uuids::uuid, int>;', 38,
      {('type', 'boost::uuids::uuid')}),
+    # the C++ runtime's demangler, which real headers include on the way
+    ("use of undeclared identifier 'abi'",
+     'char * n = abi::__cxa_demangle(name, nullptr, nullptr, &status);', 12,
+     {('std-header', 'cxxabi.h')}),
     # a macro taken for a function declaration
     ('expected function body after function declarator',
      'REGISTER_POINT_3D(Point, double, cs::cartesian, x, y, z)', 58,
@@ -1251,3 +1255,47 @@ def test_calls_on_a_value_of_an_unknown_base_class_are_known_by_name(
     # recorded as a fact ('unit': no node of the package runs it)
     assert [(c.line, c.recorded) for c in subscriptions] == [
         (16, 'unit')], summary.coverage.call_sites
+
+
+def test_a_specialisation_of_an_unknown_function_template_is_repaired(
+        tmp_path):
+    # a library the model lacks declares `template <class T> IdType
+    # customRegister(Registry &, const std::string &, const T *)`; the
+    # package specialises it for its own type (ros2_control does, for
+    # pal_statistics) and calls it
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(
+        '#include <string>\n'
+        '#include <vendor_stats/registry.hpp>\n'
+        'struct Sample { double max; };\n'
+        '/* namespace decoy { */\n'
+        'namespace vendor_stats\n'
+        '{\n'
+        'namespace detail { int depth = 0; }\n'
+        'template <>\n'
+        'inline IdType customRegister(\n'
+        '  Registry & registry, const std::string & name,\n'
+        '  const Sample * sample, bool enabled)\n'
+        '{\n'
+        '  return registry.add(name + "/max", &sample->max, enabled);\n'
+        '}\n'
+        'template <>\n'
+        'inline IdType customRegister<Sample>(Registry & registry)\n'
+        '{\n'
+        '  return registry.add("max");\n'
+        '}\n'
+        '}  // namespace vendor_stats\n'
+        'void record(vendor_stats::Registry & registry, const Sample & s)\n'
+        '{\n'
+        '  vendor_stats::customRegister(registry, "sample", &s, true);\n'
+        '  vendor_stats::customRegister<Sample>(registry);\n'
+        '}\n')
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.errors == 0, summary.diagnostics
+    [header] = (tmp_path / 'build' / 'acme_vision').rglob(
+        'repair/detector_node_cpp_*.h')
+    assert ('specialized-function', 'vendor_stats::customRegister') in \
+        repair.read_repairs(str(header))

@@ -113,6 +113,10 @@ def prepare_model_arguments(*, source, arguments, package_path,
     result += std_defines(codes)
     result += export_macro_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace}' for namespace in own]
+    # the model declares nothing constexpr: a constexpr function of the
+    # package that compares a field could never be constant, an error
+    # clang lets a warning flag turn off
+    result.append('-Wno-invalid-constexpr')
     if scanner.ros2:
         # the headers ROS 1 and ROS 2 share by name (tf2_ros/*.h,
         # message_filters/*.h, ...) take their ROS 2 shape, whatever the

@@ -67,6 +67,10 @@ _ARGUMENT_NOT_VALUE = re.compile(
     r"^'\w+' does not refer to a value|"
     r"^expected '\(' for function-style cast")
 _UNDEFINED_MACRO = re.compile(r"^function-like macro '(\w+)' is not defined")
+# `template <> IdType customRegister(...)` of a library the model lacks
+_SPECIALIZATION = re.compile(
+    r'^no function template matches function template specialization '
+    r"'(\w+)'$")
 # `lanelet.regulatoryElementsAs<T>()` of a member repaired as a value
 _NOT_A_TEMPLATE = re.compile(
     r"^'(\w+)' does not name a template but is followed by template "
@@ -105,6 +109,7 @@ NAMESPACE = 'namespace'
 TYPE = 'type'
 TEMPLATE = 'template'
 FUNCTION = 'function'
+SPECIALIZED = 'specialized-function'  # a function the code specialises
 OBJECT = 'object'
 CONSTANT = 'constant'
 MACRO_VALUE = 'macro-value'        # FOO(...) used as a value
@@ -128,7 +133,8 @@ INCLUDES = (STD_HEADER, HEADER)
 # (a name used as a type somewhere is a class, even where `Name::` made it
 # look like a namespace: QFrame *line; QFrame::HLine)
 _PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION,
-             TEMPLATE, TYPE, NAMESPACE, FUNCTION, CONSTANT, OBJECT)
+             TEMPLATE, TYPE, NAMESPACE, SPECIALIZED, FUNCTION, CONSTANT,
+             OBJECT)
 
 # what a name of std:: needs (the model includes the costly ones only when
 # the sources name them; a name reached otherwise is repaired here)
@@ -352,6 +358,11 @@ def _unaliased(repairs, aliases):
     return result
 
 
+# namespaces of the compiler's support library, which real headers bring
+# in on the way (cxxabi.h through the C++ runtime's)
+_SYSTEM_NAMESPACE_HEADER = {'abi': 'cxxabi.h'}
+
+
 def _included(repair, stand_in):
     """A name a model or stand-in header declares: include that header.
 
@@ -363,6 +374,9 @@ def _included(repair, stand_in):
     if kind in INCLUDES or kind in MEMBER_KINDS + (TEMPLATE_USE,) or \
             kind.startswith('macro-') or kind == NO_OVERRIDE:
         return repair
+    if name.split('::')[0] in _SYSTEM_NAMESPACE_HEADER:
+        # abi::__cxa_demangle: the compiler's own header has it
+        return (STD_HEADER, _SYSTEM_NAMESPACE_HEADER[name.split('::')[0]])
     header = model_header_for(name)
     if header is None and stand_in is not None:
         header = _interface_header(name)
@@ -720,6 +734,13 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
         if match:
             repairs.add((MACRO_CONDITION, match.group(1)))
             continue
+        match = _SPECIALIZATION.match(message)
+        if match:
+            # the template is the namespace's the specialisation is in
+            namespace = _namespace_at(read_line, file, line)
+            repairs.add((SPECIALIZED, '::'.join(
+                filter(None, (namespace, match.group(1))))))
+            continue
         if message == 'expected class name':
             # `class Label : public QLabel` with QLabel undeclared: the
             # column is at the base's name
@@ -770,6 +791,26 @@ def _unknown_owner(match, stand_in):
             os.path.join(UNKNOWN_DIR, owner.split('::')[0] + '.h')):
         return set()
     return {(TEMPLATE if arguments else TYPE, owner)}
+
+
+_SOURCE_NOISE = re.compile(
+    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'',
+    re.DOTALL)
+_BRACE_OR_NAMESPACE = re.compile(r'\bnamespace\s*((?:\w|::)*)\s*\{|[{}]')
+
+
+def _namespace_at(read_line, file, line):
+    """The named namespaces open at a line of a file (`a::b`), or ''."""
+    text = _SOURCE_NOISE.sub(' ', '\n'.join(
+        read_line(file, number) for number in range(1, line)))
+    opened = []  # a namespace's name, or '' for any other brace
+    for match in _BRACE_OR_NAMESPACE.finditer(text):
+        if match.group(0) == '}':
+            if opened:
+                opened.pop()
+        else:
+            opened.append(match.group(1) or '')
+    return '::'.join(name for name in opened if name)
 
 
 def _qualified(name, text, column):
@@ -937,6 +978,14 @@ def _render(repairs, source):
                 }[k] for k, m in sorted(members.get(name, ()))]))
         elif kind == FUNCTION:
             body = _one_line(catch_all_function(short))
+        elif kind == SPECIALIZED:
+            # beside the calls' catch-all, a template an explicit
+            # specialisation matches: its return type and parameters are
+            # deduced from the specialisation's (a call deduces no RsiaR,
+            # and explicit template arguments all go to RsiaT)
+            body = _one_line(catch_all_function(short) + [
+                'template <class... RsiaT, class RsiaR, class... RsiaA>',
+                f'RsiaR {short}(RsiaA...);'])
         elif kind == CONSTANT:
             value = constant_values.setdefault(name, len(constant_values) + 1)
             body = f'constexpr int {short} = {value};'

@@ -115,12 +115,36 @@ enum rmw_qos_durability_policy_t
   RMW_QOS_POLICY_DURABILITY_UNKNOWN,
   RMW_QOS_POLICY_DURABILITY_BEST_AVAILABLE
 };
+enum rmw_qos_liveliness_policy_t
+{
+  RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT,
+  RMW_QOS_POLICY_LIVELINESS_AUTOMATIC,
+  RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_NODE,
+  RMW_QOS_POLICY_LIVELINESS_MANUAL_BY_TOPIC,
+  RMW_QOS_POLICY_LIVELINESS_UNKNOWN,
+  RMW_QOS_POLICY_LIVELINESS_BEST_AVAILABLE
+};
+struct rmw_time_t
+{
+  std::uint64_t sec;
+  std::uint64_t nsec;
+};
+#define RMW_DURATION_DEFAULT {0, 0}
+#define RMW_QOS_DEADLINE_DEFAULT RMW_DURATION_DEFAULT
+#define RMW_QOS_LIFESPAN_DEFAULT RMW_DURATION_DEFAULT
+#define RMW_QOS_LIVELINESS_LEASE_DURATION_DEFAULT RMW_DURATION_DEFAULT
+// all nine fields: code writes a profile as an aggregate of them
 struct rmw_qos_profile_t
 {
   rmw_qos_history_policy_t history;
   std::size_t depth;
   rmw_qos_reliability_policy_t reliability;
   rmw_qos_durability_policy_t durability;
+  rmw_time_t deadline;
+  rmw_time_t lifespan;
+  rmw_qos_liveliness_policy_t liveliness;
+  rmw_time_t liveliness_lease_duration;
+  bool avoid_ros_namespace_conventions;
 };
 struct rcutils_allocator_t
 {
@@ -172,14 +196,21 @@ typedef struct rcl_timer_s rcl_timer_t;
 namespace rclcpp
 {
 
+// rclcpp/context.hpp: the handles are rclcpp's, not the context's
+// (`std::unique_ptr<rclcpp::PreShutdownCallbackHandle> handle_`)
+struct ShutdownCallbackHandle
+{
+  using ShutdownCallbackType = std::function<void ()>;
+};
+using OnShutdownCallbackHandle = ShutdownCallbackHandle;
+using PreShutdownCallbackHandle = ShutdownCallbackHandle;
+
 class Context
 {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Context)
-  using OnShutdownCallback = std::function<void ()>;
-  using PreShutdownCallback = std::function<void ()>;
-  struct OnShutdownCallbackHandle {};
-  struct PreShutdownCallbackHandle {};
+  using OnShutdownCallback = ShutdownCallbackHandle::ShutdownCallbackType;
+  using PreShutdownCallback = ShutdownCallbackHandle::ShutdownCallbackType;
   bool is_valid() const;
   bool shutdown(const std::string & reason);
   virtual OnShutdownCallbackHandle add_on_shutdown_callback(
@@ -347,6 +378,7 @@ public:
   rcl_clock_type_t get_clock_type() const;
   // Iron+
   bool started();
+  bool wait_until_started(Context::SharedPtr context = nullptr);
   bool wait_until_started(
     const Duration & timeout, Context::SharedPtr context = nullptr,
     const Duration & wait_tick_ns = Duration(0, 10000000));

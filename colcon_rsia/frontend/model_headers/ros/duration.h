@@ -60,6 +60,12 @@ public:
 
   // sleeps for this duration (not adaptive: a loop paced by it is not a rate loop)
   bool sleep() const;
+
+  // Noetic's (newer than Debian's rostime)
+  static const Duration MIN;
+  static const Duration MAX;
+  static const Duration ZERO;
+  static const Duration UNINITIALIZED;
 };
 
 extern const Duration DURATION_MAX;

@@ -73,6 +73,12 @@ public:
   static bool isValid();
   static bool waitForValid();
   static bool waitForValid(const ros::WallDuration& timeout);
+
+  // Noetic's (newer than Debian's rostime)
+  static const Time MIN;
+  static const Time MAX;
+  static const Time ZERO;
+  static const Time UNINITIALIZED;
 };
 
 extern const Time TIME_MAX;

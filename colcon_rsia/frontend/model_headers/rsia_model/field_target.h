@@ -32,6 +32,16 @@ struct field_target<V, void_t<typename V::iterator_category>> : std::true_type
 {
 };
 
+// scoped enumerations (`status.result = handler_result.second`, of a
+// controller's return_type): nothing else converts to them, so no call
+// overloaded on number types can tie with them
+template <class V>
+struct field_target<
+    V, typename std::enable_if<std::is_enum<V>::value && !std::is_convertible<V, int>::value>::type>
+  : std::true_type
+{
+};
+
 }  // namespace rsia_model
 
 #endif  // RSIA_MODEL_FIELD_TARGET_H

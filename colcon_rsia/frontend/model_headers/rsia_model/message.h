@@ -265,6 +265,17 @@ template <class RsiaV>
 using NotAny =
     typename std::enable_if<!std::is_base_of<Any, typename std::decay<RsiaV>::type>::value, int>::type;
 
+// `switch (msg.mode)`: a switch takes a class only through a single
+// conversion to an integral type, which Any cannot have without tying every
+// call overloaded on number types (f(int) against f(double)). So in the
+// model, every switch passes its condition through switch_value: a field
+// becomes a long, anything else stays as it is. (The standard headers come
+// before this, precompiled; the condition's tokens keep their locations.)
+template <class RsiaV, NotAny<RsiaV> = 0>
+RsiaV&& switch_value(RsiaV&&);
+long switch_value(const Any&);
+#define switch(...) switch (::rsia_model::switch_value(__VA_ARGS__))
+
 #define RSIA_MODEL_ANY_BINARY_(op, result)              \
   result operator op(const Any&, const Any&);           \
   template <class RsiaV, NotAny<RsiaV> = 0>             \
@@ -330,7 +341,9 @@ struct AnyElement : Any
 struct AnyValue : Any
 {
   using value_type = AnyValue;
-  AnyValue();
+  // a literal type, as a field's real type is: a constexpr function may
+  // take it (`constexpr bool f(const State::_id_type id)`)
+  constexpr AnyValue() {}
   template <class RsiaV>
   AnyValue(const RsiaV&);
   using Any::operator=;
@@ -502,6 +515,13 @@ template <class RsiaA, class RsiaB>
 template <class RsiaV, class RsiaLo, class RsiaHi>
 ::rsia_model::MixedResult<RsiaV, RsiaLo, RsiaHi> clamp(const RsiaV&, const RsiaLo&,
                                                      const RsiaHi&);
+// `std::distance(msg.points.begin(), it)` with `it` a real iterator: std's
+// form takes two iterators of one type
+template <class RsiaIt, class = typename iterator_traits<RsiaIt>::iterator_category>
+long distance(::rsia_model::AnyIterator, RsiaIt);
+template <class RsiaIt, class = typename iterator_traits<RsiaIt>::iterator_category>
+long distance(RsiaIt, ::rsia_model::AnyIterator);
+long distance(::rsia_model::AnyIterator, ::rsia_model::AnyIterator);
 }  // namespace std
 
 // `std::dynamic_pointer_cast<const Crosswalk>(element)` of a catch-all value
