@@ -1296,3 +1296,35 @@ int react(const std_msgs::msg::UInt8 & msg, const planning_like::msg::State & st
     arguments = _prepare(package, source, stub_dir)
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_function_templates_deduce_a_vector_from_a_field(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <cstdio>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/point.hpp>
+#include <nav_like/msg/path.hpp>
+#include <std_msgs/msg/float64.hpp>
+
+template <class T>
+std::vector<T> resample(const std::vector<T> & points, double step);
+template <class T>
+double length(const std::vector<T> & points);
+
+double run(const nav_like::msg::Path & path, const std_msgs::msg::Float64 & msg,
+           rclcpp::Node & node)
+{
+  // what such a template returns converts on, and has a size
+  std::vector<geometry_msgs::msg::Point> points = resample(path.points, 1.0);
+  const auto coarse = resample(path.points, 2.0);
+  // a field still passes through `...`
+  std::printf("%f\n", msg.data);
+  RCLCPP_INFO(node.get_logger(), "%f", msg.data);
+  return length(path.points) + length(points) + coarse.size();
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []

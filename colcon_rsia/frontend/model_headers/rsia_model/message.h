@@ -94,6 +94,39 @@ struct field_target<std::shared_ptr<RsiaElement>> : std::true_type
 };
 
 struct AnyElement;
+struct AnyIterator;
+
+}  // namespace rsia_model
+
+// A field is a std::vector of AnyElement as far as a function template's
+// deduction goes (`template <class T> f(const std::vector<T> &)`, called
+// with path.points). The specialisation is empty, so a field stays trivial
+// and still passes through printf's `...`; what such a function returns
+// converts on as a field does (Any's own conversions win over these on a
+// field: its object needs no derived-to-base step).
+namespace std
+{
+template <>
+class vector<::rsia_model::AnyElement, allocator<::rsia_model::AnyElement>>
+{
+public:
+  using value_type = ::rsia_model::AnyElement;
+  ::rsia_model::AnyIterator begin() const;
+  ::rsia_model::AnyIterator end() const;
+  ::rsia_model::AnyElement& operator[](size_t) const;
+  ::rsia_model::AnyElement& front() const;
+  ::rsia_model::AnyElement& back() const;
+  size_t size() const;
+  bool empty() const;
+  template <class RsiaV,
+            typename enable_if<::rsia_model::field_target<typename remove_cv<RsiaV>::type>::value,
+                               int>::type = 0>
+  operator RsiaV&() const;
+};
+}  // namespace std
+
+namespace rsia_model
+{
 
 // What begin() and end() of a field return: iterates over AnyElement (a
 // range-for binds its elements to any reference), and converts to any
@@ -172,7 +205,7 @@ struct Braced
 #define RSIA_MODEL_BRACED_FUNCTION(name) \
   RSIA_MODEL_BRACED_OVERLOADS(template <class... RsiaT> ::rsia_model::Any&, name, ;)
 
-struct Any
+struct Any : std::vector<AnyElement>
 {
   // a container's element (std::back_inserter(msg.points))
   using value_type = AnyValue;
