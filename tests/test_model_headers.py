@@ -1328,3 +1328,60 @@ double run(const nav_like::msg::Path & path, const std_msgs::msg::Float64 & msg,
     arguments = _prepare(package, source, stub_dir)
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_an_element_of_a_field_goes_into_sets_and_optionals(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <optional>
+#include <set>
+#include <unordered_set>
+#include <lanelet_like/lanelet.hpp>
+#include <nav_like/msg/path.hpp>
+#include <sensor_msgs/msg/laser_scan.hpp>
+
+std::optional<lanelet_like::Polygon3d> first(
+  const nav_like::msg::Path & path, std::set<long> & ids, std::unordered_set<long> & seen,
+  sensor_msgs::msg::LaserScan & scan)
+{
+  // an element still binds to a reference of a number
+  for (float & range : scan.ranges) {
+    range = 0.0f;
+  }
+  for (const auto & point : path.points) {
+    for (const auto & lane_id : point.lane_ids) {
+      ids.insert(lane_id);
+      seen.insert(lane_id);
+    }
+  }
+  for (const auto & polygon : path.polygons) {
+    return polygon;
+  }
+  return {};
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
+def test_classes_of_unknown_libraries_are_made_from_braced_lists(tmp_path):
+    package, [source] = _sources(tmp_path, node=r"""
+#include <geo_like/geometry.hpp>
+#include <nav_like/msg/path.hpp>
+
+geo_like::LineString2d segment(const nav_like::msg::Path & path, const geo_like::Point2d & p)
+{
+  const auto & a = path.points.front();
+  const geo_like::LineString2d line{{a.x, a.y}, {a.x + 1.0, a.y}};
+  const geo_like::LineString2d mixed = {p, {a.x, a.y}};
+  geo_like::LineString2d copy = line;
+  geo_like::LineString2d one(p);
+  copy = {};
+  return {{a.x, a.y}, p};
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []

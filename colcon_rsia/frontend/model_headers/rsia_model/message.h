@@ -357,14 +357,41 @@ RSIA_MODEL_ANY_COMPOUND_(>>=)
 // on number types, such as std::to_string(msg.x), would become ambiguous.)
 struct Unknown;
 
+// what an element does not bind to: the classes of unknown libraries, which
+// are made from anything (`lanelets.push_back(element)` would tie between
+// push_back(const T&), reached two ways, and push_back(T&&)); optionals,
+// made from anything their value is (`return polygon;` in a function
+// returning a std::optional would tie); initializer lists (`ids.insert(id)`
+// would tie between a set's insert of a value and of a list)
+template <class RsiaV>
+struct element_target : std::integral_constant<bool, !std::is_base_of<Unknown, RsiaV>::value>
+{
+};
+template <class RsiaV>
+struct element_target<std::initializer_list<RsiaV>> : std::false_type
+{
+};
+#if __cplusplus >= 201703L
+}  // namespace rsia_model
+namespace std
+{
+template <class RsiaV>
+class optional;
+}  // namespace std
+namespace rsia_model
+{
+template <class RsiaV>
+struct element_target<std::optional<RsiaV>> : std::false_type
+{
+};
+#endif
+
 struct AnyElement : Any
 {
   using Any::operator=;
-  // not to the classes of unknown libraries, which are made from anything:
-  // `lanelets.push_back(element)` would tie between push_back(const T&),
-  // reached two ways, and push_back(T&&)
   template <class RsiaV,
-            typename std::enable_if<!std::is_base_of<Unknown, RsiaV>::value, int>::type = 0>
+            typename std::enable_if<element_target<typename std::remove_cv<RsiaV>::type>::value,
+                                    int>::type = 0>
   operator RsiaV&() const;
 };
 
@@ -422,6 +449,9 @@ struct Unknown : Fields
   Unknown();
   template <class RsiaFirst, class... RsiaArgs>
   Unknown(RsiaFirst&&, RsiaArgs&&...);
+  // braced arguments, which deduce nothing (`LineString2d segment{{p.x,
+  // p.y}, {q.x, q.y}}`); the form above is an exact match for the others
+  RSIA_MODEL_BRACED_OVERLOADS(, Unknown, ;)
   Any* operator->() const;
   Any& operator*() const;
   explicit operator bool() const;
