@@ -1299,3 +1299,33 @@ def test_a_specialisation_of_an_unknown_function_template_is_repaired(
         'repair/detector_node_cpp_*.h')
     assert ('specialized-function', 'vendor_stats::customRegister') in \
         repair.read_repairs(str(header))
+
+
+def test_streams_value_member_templates_and_casts_to_a_field_type(tmp_path):
+    # boost::filesystem's ifstream, Eigen's fixed-size blocks and a cast to
+    # a field's declared type, of libraries and messages the model lacks
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(
+        '#include <string>\n'
+        '#include <boost_like/filesystem.hpp>\n'
+        '#include <eigen_like/core.hpp>\n'
+        '#include <ctrl_like/msg/command.hpp>\n'
+        'namespace fs = boost_like::filesystem;\n'
+        'double run(const fs::path & path, ctrl_like::msg::Command & cmd,\n'
+        '           const Eigen::Vector3d & point, Eigen::MatrixXd & cov)\n'
+        '{\n'
+        '  fs::ifstream ifs(path);\n'
+        '  std::string line;\n'
+        '  while (std::getline(ifs, line) && !line.empty()) {}\n'
+        "  std::getline(ifs, line, ',');\n"
+        '  const double velocity = 2.0;\n'
+        '  cmd.velocity = static_cast<decltype(cmd.velocity)>(velocity);\n'
+        '  cov.block<2, 2>(0, 0) = cov;\n'
+        '  return point.head<2>().norm() + point.cast<float>().x() +\n'
+        '    point.norm();\n'
+        '}\n')
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.errors == 0, summary.diagnostics

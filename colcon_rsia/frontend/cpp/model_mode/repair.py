@@ -974,7 +974,10 @@ def _render(repairs, source):
                     MEMBER: f'static ::rsia_model::Any {m};',
                     MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
                     MEMBER_TEMPLATE: 'template <class... RsiaT, class... RsiaA>'
-                                     f' static ::rsia_model::Any& {m}(RsiaA&&...);',
+                                     f' static ::rsia_model::Any& {m}(RsiaA&&...);'
+                                     ' template <long long RsiaN, long long...'
+                                     ' RsiaM, class... RsiaA> static'
+                                     f' ::rsia_model::Any& {m}(RsiaA&&...);',
                 }[k] for k, m in sorted(members.get(name, ()))]))
         elif kind == FUNCTION:
             body = _one_line(catch_all_function(short))

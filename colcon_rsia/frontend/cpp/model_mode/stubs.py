@@ -270,6 +270,10 @@ def _unknown_namespaces(stubs, codes):
                 if after and after.strip() == '<':
                     template_kinds.setdefault(name, set()).add(
                         template_kind(code[match.end(1):].lstrip()))
+                elif _ALIASED.search(
+                        code, max(0, match.start() - 80), match.start()):
+                    # `namespace fs = boost::filesystem;`: a namespace
+                    nested.setdefault(name, set())
                 elif member and re.match(r'^[a-z][a-z0-9_]*$', name):
                     # ns::inner::calc(), ns::inner::Type: a nested
                     # namespace (a class would break `using ns::inner::f;`)
@@ -307,6 +311,10 @@ def _unknown_namespaces(stubs, codes):
             result[namespace] = (types, objects, constants, templates,
                                  nested)
     return result, own
+
+
+# what precedes the target of a namespace alias
+_ALIASED = re.compile(r'\bnamespace\s+\w+\s*=\s*(?:::\s*)?\Z')
 
 
 def _templates_used_unqualified(namespace, codes):

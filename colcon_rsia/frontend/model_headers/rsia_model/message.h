@@ -209,6 +209,11 @@ struct Any : std::vector<AnyElement>
 {
   // a container's element (std::back_inserter(msg.points))
   using value_type = AnyValue;
+  Any() = default;
+  // `static_cast<decltype(cmd.velocity)>(v)`; explicit, so that no call
+  // taking an Any takes anything else
+  template <class RsiaV>
+  explicit Any(const RsiaV&);
   Any& operator=(const Any&);
   template <class RsiaV>
   Any& operator=(const RsiaV&);
@@ -278,8 +283,12 @@ struct Any : std::vector<AnyElement>
 #ifdef RSIA_MODEL_HAVE_FIELDS
 // member templates, field types and known methods are the same in Fields
 // below (their macros stay defined until its include)
-#define RSIA_MODEL_FIELD_TEMPLATE(name) \
-  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const;
+// (and with values as template arguments: Eigen's `v.head<2>()`; one value
+// at least, so that a call with none is not ambiguous)
+#define RSIA_MODEL_FIELD_TEMPLATE(name)                                    \
+  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const; \
+  template <long long RsiaN, long long... RsiaM, class... RsiaA>         \
+  Any& name(RsiaA&&...) const;
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #define RSIA_MODEL_METHOD(name, result) \
   template <class... RsiaA> result name(RsiaA&&...) const;
@@ -476,6 +485,24 @@ struct Unknown : Fields
   template <class RsiaV>
   Unknown& operator=(RsiaV&&);
 };
+
+}  // namespace rsia_model
+
+// `std::getline(ifs, line)` on a stream of an unknown library
+// (boost::filesystem::ifstream, boost::process::ipstream): std's form
+// deduces its character type from a std::basic_istream
+namespace std
+{
+template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
+          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
+RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&);
+template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
+          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
+RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&, RsiaC);
+}  // namespace std
+
+namespace rsia_model
+{
 
 // The hash of a class the repairs declare (repair.py specialises std::hash
 // with it): `std::unordered_map<boost::uuids::uuid, T>` is constructible
