@@ -1329,3 +1329,33 @@ def test_streams_value_member_templates_and_casts_to_a_field_type(tmp_path):
     summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
     [unit] = summary.coverage.units
     assert unit.errors == 0, summary.diagnostics
+
+
+def test_a_widget_declared_with_qts_keywords_parses(tmp_path):
+    # an rviz panel: Qt's widget headers are not in the model, its moc
+    # keywords are
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(
+        '#include <QPushButton>\n'
+        '#include <QtWidgets/QWidget>\n'
+        'class DoorPanel : public QWidget\n'
+        '{\n'
+        'public:\n'
+        '  void update_doors(int count) { count_ = count; emit changed(); }\n'
+        '\n'
+        'Q_SIGNALS:\n'
+        '  void changed();\n'
+        '\n'
+        'private slots:\n'
+        '  void on_button(unsigned index);\n'
+        '\n'
+        'private:\n'
+        '  QPushButton * button_ = nullptr;\n'
+        '  int count_ = 0;\n'
+        '};\n'
+        'void DoorPanel::on_button(unsigned index) { update_doors(index); }\n')
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.package_errors == 0, summary.diagnostics

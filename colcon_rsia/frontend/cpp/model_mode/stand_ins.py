@@ -29,6 +29,9 @@ def empty_stub(name):
     lines = [f'{STUB_MARKER} kind=empty: <{printable(name)}>',
              '// an include the model mode does not provide',
              '#pragma once']
+    if _QT_HEADER.match(name):
+        # a class declaration of the unit's uses the moc keywords
+        lines.append('#include <rsia_model/qt_keywords.h>')
     namespace = guessed_namespace(name)
     if namespace:
         # what the sources use of `namespace::`, if it is declared nowhere
@@ -41,6 +44,9 @@ def empty_stub(name):
             '#endif']
     return '\n'.join(lines) + '\n'
 
+
+# <QPushButton>, <QtWidgets/QWidget>, <QtGui/qpainter.h>
+_QT_HEADER = re.compile(r'^Qt?[A-Z]\w*(?:/|$)')
 
 # include directories whose libraries use another namespace name
 _NAMESPACE_OF_DIRECTORY = {'opencv2': 'cv', 'opencv': 'cv'}

@@ -30,11 +30,7 @@ public: \
 \
 private:
 #define Q_GADGET
-#define Q_SLOTS
-#define Q_SIGNALS public
-#define slots
-#define signals public
-#define emit
+#include <rsia_model/qt_keywords.h>
 // the real macros also make strings of the signature: the analysis reads
 // the slot's name from the source as written
 #define SIGNAL(a) "2" #a
