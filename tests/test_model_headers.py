@@ -1271,6 +1271,18 @@ def test_a_switch_takes_a_message_field(tmp_path):
 
 enum class Mode { Idle, Driving };
 
+// a switch that is no field's still works in a constant expression
+constexpr int weight(Mode mode)
+{
+  switch (mode) {
+    case Mode::Driving:
+      return 2;
+    default:
+      return 1;
+  }
+}
+static_assert(weight(Mode::Driving) == 2, "a switch in a constant expression");
+
 int react(const std_msgs::msg::UInt8 & msg, const planning_like::msg::State & state, Mode mode)
 {
   switch (msg.data) {

@@ -311,10 +311,14 @@ using NotAny =
 // conversion to an integral type, which Any cannot have without tying every
 // call overloaded on number types (f(int) against f(double)). So in the
 // model, every switch passes its condition through switch_value: a field
-// becomes a long, anything else stays as it is. (The standard headers come
-// before this, precompiled; the condition's tokens keep their locations.)
+// becomes a long, anything else stays as it is, also in a constant
+// expression (a constexpr function's switch). The condition's tokens keep
+// their locations.
 template <class RsiaV, NotAny<RsiaV> = 0>
-RsiaV&& switch_value(RsiaV&&);
+constexpr RsiaV&& switch_value(RsiaV&& value) noexcept
+{
+  return static_cast<RsiaV&&>(value);
+}
 long switch_value(const Any&);
 #define switch(...) switch (::rsia_model::switch_value(__VA_ARGS__))
 
