@@ -777,6 +777,14 @@ def _prepare(package, source, stub_dir):
         stub_dir=str(stub_dir))
 
 
+def _assert_parses_clean(tmp_path, code):
+    """A package of this one source parses in model mode without errors."""
+    package, [source] = _sources(tmp_path, node=code)
+    arguments = _prepare(package, source, tmp_path / 'stubs')
+    tu = _parse(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
+
+
 def test_real_code_idioms_type_check_without_repairs(tmp_path):
     # what autoware-style code does with the ROS model and libraries the
     # model lacks; each line was a parse error before the model took it
@@ -1077,7 +1085,7 @@ void run(const nav_msgs::msg::Path & path, std::vector<lanelet_like::ConstLanele
 
 
 def test_catch_all_calls_take_braced_arguments(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <vector>
 #include <geometry_msgs/msg/point.hpp>
 #include <grid_like/polygon.hpp>
@@ -1093,15 +1101,11 @@ void run(const geometry_msgs::msg::Point & p, grid_like::Polygon & polygon, cv_l
   const std::vector<double> values = grid_like::spline({1.0}, std::vector<double>{2.0}, {p.x});
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_rates_policies_iterators_and_pointer_casts_of_catch_all_values(
         tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <iterator>
 #include <memory>
 #include <rclcpp/rclcpp.hpp>
@@ -1125,10 +1129,6 @@ double run(rclcpp::Node & node, const std_msgs::msg::Float64 & rate,
   return period.count() + step.seconds() + (next != vertices.cend()) + (element != nullptr);
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_a_known_member_whose_result_has_members_stays_a_catch_all():
@@ -1168,7 +1168,7 @@ int level(trt_like::ILogger::Severity severity)
 
 
 def test_a_catch_all_value_becomes_a_pair(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <utility>
 #include <vector>
 #include <opt_like/minima.hpp>
@@ -1180,16 +1180,12 @@ float run(const std::vector<double> & xs)
   return best.first;
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_profiles_clock_waits_enum_results_and_constexpr_field_checks(
         tmp_path):
     # forms of ros2_control's controller manager
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <rclcpp/rclcpp.hpp>
 #include <lifecycle_msgs/msg/state.hpp>
 #include <handler_like/async_handler.hpp>
@@ -1231,15 +1227,11 @@ return_type update(rclcpp::Node & node, handler_like::AsyncHandler & handler,
 }
 }  // namespace pkg
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_noetic_time_constants_and_distances_from_a_field_iterator(tmp_path):
     # forms of ros_controllers' joint_state and joint_trajectory controllers
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <iterator>
 #include <vector>
 #include <ros/ros.h>
@@ -1257,14 +1249,10 @@ double check(const trajectory_msgs::JointTrajectory & msg, std::vector<double> &
   return n + (last == ros::Time::ZERO) + ros::Duration::MAX.toSec();
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_a_switch_takes_a_message_field(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/u_int8.hpp>
 #include <planning_like/msg/state.hpp>
@@ -1304,14 +1292,10 @@ int react(const std_msgs::msg::UInt8 & msg, const planning_like::msg::State & st
   }
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_function_templates_deduce_a_vector_from_a_field(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <cstdio>
 #include <vector>
 #include <rclcpp/rclcpp.hpp>
@@ -1336,14 +1320,10 @@ double run(const nav_like::msg::Path & path, const std_msgs::msg::Float64 & msg,
   return length(path.points) + length(points) + coarse.size();
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_an_element_of_a_field_goes_into_sets_and_optionals(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <optional>
 #include <set>
 #include <unordered_set>
@@ -1371,14 +1351,10 @@ std::optional<lanelet_like::Polygon3d> first(
   return {};
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_classes_of_unknown_libraries_are_made_from_braced_lists(tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <geo_like/geometry.hpp>
 #include <nav_like/msg/path.hpp>
 
@@ -1393,7 +1369,3 @@ geo_like::LineString2d segment(const nav_like::msg::Path & path, const geo_like:
   return {{a.x, a.y}, p};
 }
 """)
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    tu = _parse(file=source, arguments=arguments, directory=package)
-    assert cpp.parse_diagnostics(tu) == []

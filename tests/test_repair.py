@@ -117,6 +117,17 @@ def test_model_mode_repairs_what_unknown_libraries_leave_undeclared(
     assert (unit.package_errors, unit.repair_rounds) == (0, 0)
 
 
+def _analyze_one_unit(tmp_path, code):
+    """The summary of a package of this one source, and its unit."""
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(code)
+    (package / 'CMakeLists.txt').write_text(CMAKE)
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    return summary, unit
+
+
 def _lines(text):
     lines = text.split('\n')
 
@@ -1190,17 +1201,12 @@ def test_a_model_header_a_repair_includes_gets_its_stand_ins(tmp_path):
     # library would have): the repair includes the model's rclcpp.hpp,
     # which includes generated rcl_interfaces messages the unit's scan
     # never met; without them the parse stopped at a missing file
-    package = tmp_path / 'src' / 'acme_vision'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'detector_node.cpp').write_text(
+    summary, unit = _analyze_one_unit(tmp_path, (
         '#include <vendor_sdk/clock.hpp>\n'
         'double period() {\n'
         '  rclcpp::Duration d = rclcpp::Duration::from_seconds(0.5);\n'
         '  return d.seconds();\n'
-        '}\n')
-    (package / 'CMakeLists.txt').write_text(CMAKE)
-    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
-    [unit] = summary.coverage.units
+        '}\n'))
     assert unit.repair_rounds >= 1
     assert unit.errors == 0, summary.diagnostics
 
@@ -1263,9 +1269,7 @@ def test_a_specialisation_of_an_unknown_function_template_is_repaired(
     # customRegister(Registry &, const std::string &, const T *)`; the
     # package specialises it for its own type (ros2_control does, for
     # pal_statistics) and calls it
-    package = tmp_path / 'src' / 'acme_vision'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'detector_node.cpp').write_text(
+    summary, unit = _analyze_one_unit(tmp_path, (
         '#include <string>\n'
         '#include <vendor_stats/registry.hpp>\n'
         'struct Sample { double max; };\n'
@@ -1290,10 +1294,7 @@ def test_a_specialisation_of_an_unknown_function_template_is_repaired(
         '{\n'
         '  vendor_stats::customRegister(registry, "sample", &s, true);\n'
         '  vendor_stats::customRegister<Sample>(registry);\n'
-        '}\n')
-    (package / 'CMakeLists.txt').write_text(CMAKE)
-    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
-    [unit] = summary.coverage.units
+        '}\n'))
     assert unit.errors == 0, summary.diagnostics
     [header] = (tmp_path / 'build' / 'acme_vision').rglob(
         'repair/detector_node_cpp_*.h')
@@ -1304,9 +1305,7 @@ def test_a_specialisation_of_an_unknown_function_template_is_repaired(
 def test_streams_value_member_templates_and_casts_to_a_field_type(tmp_path):
     # boost::filesystem's ifstream, Eigen's fixed-size blocks and a cast to
     # a field's declared type, of libraries and messages the model lacks
-    package = tmp_path / 'src' / 'acme_vision'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'detector_node.cpp').write_text(
+    summary, unit = _analyze_one_unit(tmp_path, (
         '#include <string>\n'
         '#include <boost_like/filesystem.hpp>\n'
         '#include <eigen_like/core.hpp>\n'
@@ -1324,19 +1323,14 @@ def test_streams_value_member_templates_and_casts_to_a_field_type(tmp_path):
         '  cov.block<2, 2>(0, 0) = cov;\n'
         '  return point.head<2>().norm() + point.cast<float>().x() +\n'
         '    point.norm();\n'
-        '}\n')
-    (package / 'CMakeLists.txt').write_text(CMAKE)
-    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
-    [unit] = summary.coverage.units
+        '}\n'))
     assert unit.errors == 0, summary.diagnostics
 
 
 def test_a_widget_declared_with_qts_keywords_parses(tmp_path):
     # an rviz panel: Qt's widget headers are not in the model, its moc
     # keywords are
-    package = tmp_path / 'src' / 'acme_vision'
-    (package / 'src').mkdir(parents=True)
-    (package / 'src' / 'detector_node.cpp').write_text(
+    summary, unit = _analyze_one_unit(tmp_path, (
         '#include <QPushButton>\n'
         '#include <QtWidgets/QWidget>\n'
         'class DoorPanel : public QWidget\n'
@@ -1354,8 +1348,5 @@ def test_a_widget_declared_with_qts_keywords_parses(tmp_path):
         '  QPushButton * button_ = nullptr;\n'
         '  int count_ = 0;\n'
         '};\n'
-        'void DoorPanel::on_button(unsigned index) { update_doors(index); }\n')
-    (package / 'CMakeLists.txt').write_text(CMAKE)
-    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
-    [unit] = summary.coverage.units
+        'void DoorPanel::on_button(unsigned index) { update_doors(index); }\n'))
     assert unit.package_errors == 0, summary.diagnostics
