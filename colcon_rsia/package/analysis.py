@@ -458,8 +458,12 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
                 texts[file] = ''
         return texts[file]
 
+    lines_of = {}  # a file's lines, split once (a repair reads many)
+
     def read_line(file, line):
-        lines = text_of(file).split('\n')
+        if file not in lines_of:
+            lines_of[file] = text_of(file).split('\n')
+        lines = lines_of[file]
         return lines[line - 1] if 0 < line <= len(lines) else ''
 
     from colcon_rsia.frontend.cpp.model_mode import MODEL_HEADERS_DIR

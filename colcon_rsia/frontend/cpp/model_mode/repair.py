@@ -374,9 +374,10 @@ def _included(repair, stand_in):
     if kind in INCLUDES or kind in MEMBER_KINDS + (TEMPLATE_USE,) or \
             kind.startswith('macro-') or kind == NO_OVERRIDE:
         return repair
-    if name.split('::')[0] in _SYSTEM_NAMESPACE_HEADER:
+    system_header = _SYSTEM_NAMESPACE_HEADER.get(name.split('::')[0])
+    if system_header:
         # abi::__cxa_demangle: the compiler's own header has it
-        return (STD_HEADER, _SYSTEM_NAMESPACE_HEADER[name.split('::')[0]])
+        return (STD_HEADER, system_header)
     header = model_header_for(name)
     if header is None and stand_in is not None:
         header = _interface_header(name)
@@ -973,11 +974,8 @@ def _render(repairs, source):
                 members=[{
                     MEMBER: f'static ::rsia_model::Any {m};',
                     MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
-                    MEMBER_TEMPLATE: 'template <class... RsiaT, class... RsiaA>'
-                                     f' static ::rsia_model::Any& {m}(RsiaA&&...);'
-                                     ' template <long long RsiaN, long long...'
-                                     ' RsiaM, class... RsiaA> static'
-                                     f' ::rsia_model::Any& {m}(RsiaA&&...);',
+                    MEMBER_TEMPLATE:
+                        f'RSIA_MODEL_MEMBER_TEMPLATE(static, {m}, )',
                 }[k] for k, m in sorted(members.get(name, ()))]))
         elif kind == FUNCTION:
             body = _one_line(catch_all_function(short))

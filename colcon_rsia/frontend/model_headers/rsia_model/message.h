@@ -204,6 +204,15 @@ struct Braced
 // the braced forms of a function of an unknown library (stubs.py)
 #define RSIA_MODEL_BRACED_FUNCTION(name) \
   RSIA_MODEL_BRACED_OVERLOADS(template <class... RsiaT> ::rsia_model::Any&, name, ;)
+// a member called with template arguments: types (`x.cast<double>()`) or
+// values (Eigen's `v.head<2>()`; one value at least, so that a call with
+// none is not ambiguous). Of fields (below) and of the classes the repairs
+// declare (repair.py, with `static`)
+#define RSIA_MODEL_MEMBER_TEMPLATE(head, name, tail)             \
+  template <class... RsiaT, class... RsiaA>                      \
+  head ::rsia_model::Any& name(RsiaA&&...) tail;                 \
+  template <long long RsiaN, long long... RsiaM, class... RsiaA> \
+  head ::rsia_model::Any& name(RsiaA&&...) tail;
 
 struct Any : std::vector<AnyElement>
 {
@@ -283,12 +292,7 @@ struct Any : std::vector<AnyElement>
 #ifdef RSIA_MODEL_HAVE_FIELDS
 // member templates, field types and known methods are the same in Fields
 // below (their macros stay defined until its include)
-// (and with values as template arguments: Eigen's `v.head<2>()`; one value
-// at least, so that a call with none is not ambiguous)
-#define RSIA_MODEL_FIELD_TEMPLATE(name)                                    \
-  template <class... RsiaT, class... RsiaA> Any& name(RsiaA&&...) const; \
-  template <long long RsiaN, long long... RsiaM, class... RsiaA>         \
-  Any& name(RsiaA&&...) const;
+#define RSIA_MODEL_FIELD_TEMPLATE(name) RSIA_MODEL_MEMBER_TEMPLATE(, name, const)
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #define RSIA_MODEL_METHOD(name, result) \
   template <class... RsiaA> result name(RsiaA&&...) const;
@@ -490,24 +494,6 @@ struct Unknown : Fields
   Unknown& operator=(RsiaV&&);
 };
 
-}  // namespace rsia_model
-
-// `std::getline(ifs, line)` on a stream of an unknown library
-// (boost::filesystem::ifstream, boost::process::ipstream): std's form
-// deduces its character type from a std::basic_istream
-namespace std
-{
-template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
-          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
-RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&);
-template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
-          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
-RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&, RsiaC);
-}  // namespace std
-
-namespace rsia_model
-{
-
 // The hash of a class the repairs declare (repair.py specialises std::hash
 // with it): `std::unordered_map<boost::uuids::uuid, T>` is constructible
 struct UnknownHash
@@ -637,6 +623,16 @@ template <class RsiaT, class RsiaV, ::rsia_model::CatchAll<RsiaV> = 0>
 shared_ptr<RsiaT> static_pointer_cast(const RsiaV&);
 template <class RsiaT, class RsiaV, ::rsia_model::CatchAll<RsiaV> = 0>
 shared_ptr<RsiaT> const_pointer_cast(const RsiaV&);
+
+// `std::getline(ifs, line)` on a stream of an unknown library
+// (boost::filesystem::ifstream, boost::process::ipstream): std's form
+// deduces its character type from a std::basic_istream
+template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
+          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
+RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&);
+template <class RsiaS, class RsiaC, class RsiaT, class RsiaA,
+          typename enable_if<is_base_of<::rsia_model::Unknown, RsiaS>::value, int>::type = 0>
+RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&, RsiaC);
 }  // namespace std
 
 // field values as keys of unordered containers (a DiagnosticLevel key)
