@@ -1369,3 +1369,19 @@ geo_like::LineString2d segment(const nav_like::msg::Path & path, const geo_like:
   return {{a.x, a.y}, p};
 }
 """)
+
+
+def test_static_assertions_on_stand_ins_are_no_errors(tmp_path):
+    # they hold in the package's real build; the model's types differ
+    _assert_parses_clean(tmp_path, (
+        '#include <cstdint>\n'
+        '#include <type_traits>\n'
+        '#include <sensor_msgs/msg/point_cloud2.hpp>\n'
+        'static_assert(std::is_same<decltype(sensor_msgs::msg::PointCloud2()'
+        '.height), uint32_t>::value, "height is 32 bits");\n'
+        'template <class T> struct Buffer\n'
+        '{\n'
+        '  static_assert(sizeof(T) == 32, "a cloud is 32 bytes");\n'
+        '};\n'
+        'Buffer<sensor_msgs::msg::PointCloud2> buffer;\n'
+        'void check() { static_assert(sizeof(buffer) > 0); }\n'))

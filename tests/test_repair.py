@@ -328,14 +328,17 @@ def test_a_message_named_before_its_header_is_included_from_the_stand_ins():
     diagnostics = [("no type named 'Polygon' in namespace 'geometry_msgs::msg'",
                     'a.cpp', 1, 20)]
     line = _lines('geometry_msgs::msg::Polygon footprint;')
-    # the stand-in exists: include it (a declaration would clash with it)
-    assert repair.repairs_from_diagnostics(
-        diagnostics, line, stand_in=lambda header: True) == {
-            ('header', 'geometry_msgs/msg/polygon.hpp')}
-    # no such stand-in: declare the type
-    assert repair.repairs_from_diagnostics(
-        diagnostics, line, stand_in=lambda header: False) == {
-            ('type', 'geometry_msgs::msg::Polygon')}
+    # the stand-in exists: include it (a declaration would clash with it);
+    # none yet: include it too, the analysis writes it with the repair (a
+    # catch-all class would tie rclcpp::Time's conversion to the message
+    # with its own constructor from anything)
+    for exists in (True, False):
+        assert repair.repairs_from_diagnostics(
+            diagnostics, line, stand_in=lambda header: exists) == {
+                ('header', 'geometry_msgs/msg/polygon.hpp')}
+    # no stand-ins at all: declare the type
+    assert repair.repairs_from_diagnostics(diagnostics, line) == {
+        ('type', 'geometry_msgs::msg::Polygon')}
 
 
 def test_a_new_namespace_gets_what_the_code_uses_of_it():
@@ -1349,4 +1352,101 @@ def test_a_widget_declared_with_qts_keywords_parses(tmp_path):
         '  int count_ = 0;\n'
         '};\n'
         'void DoorPanel::on_button(unsigned index) { update_doors(index); }\n'))
+    assert unit.package_errors == 0, summary.diagnostics
+
+
+def test_a_name_among_a_macros_arguments_on_a_later_line():
+    # clang gives the line the macro's call starts on; the name is on one
+    # of the lines its arguments go on to
+    lines = _lines(
+        '  CHECK_CUDA_ERROR(cudaMemcpy(\n'
+        '    device_ptr, host.data(),\n'
+        '    host.size() * sizeof(float), cudaMemcpyHostToDevice));\n'
+        '  kernel(cudaMemcpyHostToDevice);')
+    diagnostics = [(
+        "use of undeclared identifier 'cudaMemcpyHostToDevice'", 'a.cu', 1,
+        3)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+        ('object', 'cudaMemcpyHostToDevice')}
+    # spelled in the body of a macro: no later line of the call has it
+    lines = _lines('  LOG_FAILURE(code);\n  next(code);')
+    diagnostics = [("use of undeclared identifier 'logging'", 'a.cpp', 1, 3)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+        ('namespace', 'logging')}
+
+
+@pytest.mark.parametrize('message,line,column,expected', [
+    # a tag among template arguments is a type
+    ("no member named 'cartesian' in namespace 'boost::geometry::cs'",
+     'using P = bg::model::point<double, 2, bg::cs::cartesian>;', 48,
+     {('type', 'boost::geometry::cs::cartesian')}),
+    # a constant by its name stays a value
+    ("no member named 'kSize' in namespace 'acme::limits'",
+     'std::array<float, acme::limits::kSize> values;', 35,
+     {('object', 'acme::limits::kSize')}),
+    # a nested type of an unknown class, as a template argument
+    ("no member named 'Result' in 'acme::Buffer'",
+     'std::optional<acme::Buffer::Result>', 29,
+     {('member-type', 'acme::Buffer::Result')}),
+    # a member of the catch-all base (a field named `type`) is no type
+    ("typename specifier refers to non-type member 'type' in "
+     "'pcl::traits::fieldList<pcl::PointXYZ>'",
+     'typedef typename pcl::traits::fieldList<PointT>::type FieldList;', 50,
+     {('member-type', 'pcl::traits::fieldList::type')}),
+])
+def test_types_among_template_arguments(message, line, column, expected):
+    assert repair.repairs_from_diagnostics(
+        [(message, 'a.cpp', 1, column)], _lines(line)) == expected
+
+
+def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
+    # what autoware's NDT and lidar packages write with PCL, Eigen and
+    # CUDA, none of them in the model: traits of a class template, its
+    # pointer types, an allocator, an index type, static assertions on a
+    # point type's layout, a macro's call over several lines, and a time
+    # passed as a message before the message's header is included
+    summary, unit = _analyze_one_unit(tmp_path, (
+        '#include <cstddef>\n'
+        '#include <vector>\n'
+        '#include <pcl/filters/voxel_grid.h>\n'
+        '#include <pcl/registration/registration.h>\n'
+        '#include <Eigen/Core>\n'
+        '#include <cuda_runtime_api.h>\n'
+        '#include <rclcpp/rclcpp.hpp>\n'
+        '#include <std_srvs/srv/trigger.hpp>\n'
+        '#define CHECK_CUDA_ERROR(e) (e)\n'
+        'struct LidarPoint { float x; lidar_types::Stamp t; float y; };\n'
+        'static_assert(offsetof(LidarPoint, y) == 12, "layout");\n'
+        'template <typename PointT>\n'
+        'class Grid : public pcl::VoxelGrid<PointT>\n'
+        '{\n'
+        '  typedef typename pcl::traits::fieldList<PointT>::type FieldList;\n'
+        '  typedef pcl::Registration<PointT, PointT> Base;\n'
+        '  typedef typename Base::PointCloudSource Source;\n'
+        '  typedef typename Source::Ptr SourcePtr;\n'
+        '  std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<'
+        'Eigen::Matrix4f>> poses_;\n'
+        'public:\n'
+        '  pcl::PointCloud<PointT> cloud(const SourcePtr & source) const\n'
+        '  {\n'
+        '    pcl::shared_ptr<pcl::PointCloud<PointT>> out(\n'
+        '      new pcl::PointCloud<PointT>);\n'
+        '    return *source;\n'
+        '  }\n'
+        '};\n'
+        'float stamped(const builtin_interfaces::msg::Time & stamp);\n'
+        'void upload(float * device, const std::vector<float> & host,\n'
+        '            const rclcpp::Time & now,\n'
+        '            rclcpp::Client<std_srvs::srv::Trigger> & client)\n'
+        '{\n'
+        '  CHECK_CUDA_ERROR(cudaMemcpy(\n'
+        '    device, host.data(),\n'
+        '    host.size() * sizeof(float), cudaMemcpyHostToDevice));\n'
+        '  for (Eigen::Index i = 0; i < 3; ++i) {}\n'
+        '  stamped(now);\n'
+        '  auto result = client.async_send_request(\n'
+        '    std::make_shared<std_srvs::srv::Trigger::Request>(),\n'
+        '    [](rclcpp::Client<std_srvs::srv::Trigger>::SharedFuture) {});\n'
+        '  result.wait_for(std::chrono::seconds(0));\n'
+        '}\n'))
     assert unit.package_errors == 0, summary.diagnostics

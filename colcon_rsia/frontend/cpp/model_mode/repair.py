@@ -58,7 +58,10 @@ _NOT_NAMESPACE = re.compile(
 _IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
 # (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
 _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
-_TYPE_IN_CLASS = re.compile(r"^no type named '(\w+)' in '([\w:]+)(<.*>)?'$")
+# (a field the catch-all base has, `type`, is no type)
+_TYPE_IN_CLASS = re.compile(
+    r'^(?:no type named|typename specifier refers to non-type member) '
+    r"'(\w+)' in '([\w:]+)(<.*>)?'$")
 _INCOMPLETE = re.compile(
     r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
     r'^(?:member access into|variable has|field has) incomplete type '
@@ -301,8 +304,10 @@ def repairs_from_diagnostics(diagnostics, read_line, texts=(),
       :func:`declared_names`): never declared again, their errors come
       from elsewhere
     :param stand_in: whether the unit's stand-ins hold a header (relative
-      path), so that a message named before its header is included is
-      included, not declared; None: never
+      path): a member of a class of an unknown library's stand-in is
+      declared with its class. None: the unit has no stand-ins, and a
+      message named before its header is included is declared (otherwise
+      its header is included, and written if no stand-in holds it yet)
     """
     aliases = _aliases(texts)
     repairs = _unaliased(
@@ -380,9 +385,9 @@ def _included(repair, stand_in):
         return (STD_HEADER, system_header)
     header = model_header_for(name)
     if header is None and stand_in is not None:
+        # (a header no stand-in holds yet is written with the repair:
+        # see analysis._write_stand_ins_of_repair)
         header = _interface_header(name)
-        if header is not None and not stand_in(header):
-            header = None
     return (HEADER, header) if header else repair
 
 
@@ -599,9 +604,9 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
             if kind == NAMESPACE:
                 inner.add(f'{namespace}::{name}')
             if member and kind == TYPE and member not in _KEYWORDS:
-                # `ns::Grid::Ptr grid` names a nested type
                 nested = _by_use(member, rest, unqualified=False)[0] == TYPE \
-                    and re.match(r'(?:[&*]\s*)?[A-Za-z_]', rest)
+                    and _names_nested_type(rest, text[
+                        max(0, match.start() - 200):match.start()])
                 found.add((MEMBER_TYPE if nested else MEMBER,
                            f'{namespace}::{name}::{member}'))
     if depth < 3:
@@ -610,10 +615,23 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
     return found
 
 
+def _names_nested_type(after, before):
+    """Whether `Owner::Member`, between these, is a type of the class.
+
+    So is one that declares a variable (`ns::Grid::Ptr grid`) and one among
+    template arguments (`std::optional<Buffer::Result>`).
+    """
+    return bool(re.match(r'(?:[&*]\s*)?[A-Za-z_]', after)) or (
+        after.startswith(('>', ',')) and _in_template_arguments(before))
+
+
 def _repairs(diagnostics, read_line, stand_in=None, texts=()):
     repairs = set()
     for message, file, line, column in diagnostics:
         text = read_line(file, line) if file else ''
+        if file:
+            text, column = _in_macro_arguments(
+                read_line, file, line, text, column, message)
         after = _after(text, column, message)
         match = _UNDECLARED.match(message)
         if match:
@@ -680,10 +698,9 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             continue
         match = _IN_CLASS.match(message)
         if match:
-            # a member of a class we declared (added only if we did); one
-            # followed by a name declares a variable: a nested type
-            nested = _CAMEL.match(match.group(1)) and \
-                re.match(r'(?:[&*]\s*)?[A-Za-z_]', after)
+            # a member of a class we declared (added only if we did)
+            nested = _CAMEL.match(match.group(1)) and _names_nested_type(
+                after, text[:max(0, column - 1)])
             kind = MEMBER_TYPE if nested else \
                 MEMBER_TEMPLATE if after.startswith('<') else MEMBER
             repairs.add((kind, f'{match.group(2)}::{match.group(1)}'))
@@ -814,6 +831,34 @@ def _namespace_at(read_line, file, line):
     return '::'.join(name for name in opened if name)
 
 
+# how many lines past its first the arguments of a macro's call may go on
+_MACRO_CALL_LINES = 12
+
+
+def _in_macro_arguments(read_line, file, line, text, column, message):
+    """(text, column) of the line that spells the name a message is about.
+
+    Of a name in the arguments of a macro's call, clang gives the line the
+    call starts on: `CHECK_CUDA_ERROR(cudaMemcpy(` with the name on one of
+    the lines that follow, inside the call's parentheses.
+    """
+    match = re.search(r"'(\w+)'", message)
+    if not match or re.search(r'\b' + match.group(1) + r'\b', text):
+        return text, column
+    spelled = re.compile(r'\b' + match.group(1) + r'\b')
+    depth = text[max(0, column - 1):].count('(') - \
+        text[max(0, column - 1):].count(')')
+    for number in range(line + 1, line + 1 + _MACRO_CALL_LINES):
+        if depth <= 0:
+            break
+        following = read_line(file, number)
+        found = spelled.search(following)
+        if found:
+            return following, found.start() + 1
+        depth += following.count('(') - following.count(')')
+    return text, column
+
+
 def _qualified(name, text, column):
     """`ns::Name` when the line qualifies the name clang calls unknown."""
     before = text[:max(0, column - 1)]
@@ -865,6 +910,10 @@ def _declared_as_variable(name, texts):
                for text in texts for match in pattern.finditer(text))
 
 
+# a constant by Google's style: kMaxSize
+_K_CONSTANT = re.compile(r'^k[A-Z]')
+
+
 def _by_qualified_use(name, after, before):
     """The kind of ``ns::name`` from the code around it on its line."""
     kind = _by_use(name, after, unqualified=False)[0]
@@ -874,6 +923,12 @@ def _by_qualified_use(name, after, before):
     if kind in (OBJECT, CONSTANT) and _FIRST_TEMPLATE_ARGUMENT.search(before):
         # std::pair<boost::uuids::uuid, T>: a first template argument is a
         # type far more often than a value
+        return TYPE
+    if kind == OBJECT and after.startswith(('>', ',')) and \
+            _in_template_arguments(before) and not _K_CONSTANT.match(name):
+        # model::point<double, 2, bg::cs::cartesian>: a lower-case name
+        # among template arguments is a type (a tag), as template_kind
+        # takes it; a value would be a constant (kSize, MAX_SIZE)
         return TYPE
     if kind == CONSTANT and after.startswith(',') and \
             _in_template_arguments(before):
@@ -924,6 +979,18 @@ def _by_use(name, after, *, unqualified):
     return OBJECT, name
 
 
+# types of libraries the model lacks that are numbers: a loop counts with
+# them (`for (Eigen::Index i = 0; i < n; ++i)`)
+_NUMBER_TYPES = {
+    'Eigen::Index': 'std::ptrdiff_t',
+    'Eigen::DenseIndex': 'std::ptrdiff_t',
+}
+
+# allocators of libraries the model lacks: a standard container takes only
+# a real allocator (`std::vector<T, Eigen::aligned_allocator<T>>`)
+_ALLOCATORS = frozenset({'Eigen::aligned_allocator'})
+
+
 def _render(repairs, source):
     """The repair header holding these declarations."""
     lines = [
@@ -964,6 +1031,11 @@ def _render(repairs, source):
             # lanelet2) a vector of them; as a class of its own, it would
             # differ from the `std::vector<VirtualWall>` other code writes
             body = f'using {short} = std::vector<{short[:-1]}>;'
+        elif kind == TYPE and name in _NUMBER_TYPES:
+            body = f'using {short} = {_NUMBER_TYPES[name]};'
+        elif _base_kind(kind) == TEMPLATE and name in _ALLOCATORS:
+            body = f'template <class RsiaT> using {short} = ' \
+                'std::allocator<RsiaT>;'
         elif _base_kind(kind) in (TYPE, TEMPLATE):
             if kind == TYPE:
                 # a key of std::unordered_map (boost::uuids::uuid)

@@ -261,6 +261,7 @@ def _unknown_namespaces(stubs, codes):
         nested = {}  # nested namespace -> the names used in it
         class_templates = set()  # (nested namespace, name)
         template_kinds = {}  # name -> the kinds of its uses (template_kind)
+        scoped = set()  # templates whose use names a type
         for code in codes:
             for match in use.finditer(code):
                 name, after, member = match.group(1), match.group(2), \
@@ -270,6 +271,8 @@ def _unknown_namespaces(stubs, codes):
                 if after and after.strip() == '<':
                     template_kinds.setdefault(name, set()).add(
                         template_kind(code[match.end(1):].lstrip()))
+                    if _class_template_use(code, match.end(1)):
+                        scoped.add(name)
                 elif _ALIASED.search(
                         code, max(0, match.start() - 80), match.start()):
                     # `namespace fs = boost::filesystem;`: a namespace
@@ -282,8 +285,9 @@ def _unknown_namespaces(stubs, codes):
                     if member_ok(member) and not re.match(
                             r'\s*::', code[match.end(3):]):
                         names.add(member)
-                    if member[:1].isupper() and re.match(
-                            r'\s*<(?![<=])', code[match.end(3):]):
+                    if re.match(r'\s*<(?![<=])', code[match.end(3):]) and (
+                            member[:1].isupper() or
+                            _class_template_use(code, match.end(3))):
                         # a class template: the repairs declare it with
                         # the parameters of its use
                         class_templates.add((name, member))
@@ -298,7 +302,7 @@ def _unknown_namespaces(stubs, codes):
                     objects.add(name)
         for name, kinds in _templates_used_unqualified(namespace, codes):
             template_kinds.setdefault(name, set()).update(kinds)
-        templates = {name: not name[:1].isupper()
+        templates = {name: not name[:1].isupper() and name not in scoped
                      for name, kinds in template_kinds.items()
                      if kinds == {'template'}}
         for name, member in class_templates:
@@ -311,6 +315,32 @@ def _unknown_namespaces(stubs, codes):
             result[namespace] = (types, objects, constants, templates,
                                  nested)
     return result, own
+
+
+# what follows the arguments of a class template's use: a member
+# (`fieldList<PointT>::type`) or a declared name (`shared_ptr<T> cloud`)
+_AFTER_CLASS_TEMPLATE = re.compile(r'\s*(?:::|[&*]*\s*[A-Za-z_])')
+
+
+def _class_template_use(code, start):
+    """Whether the template's use from ``start`` (its `<`) names a type.
+
+    As `pcl::traits::fieldList<PointT>::type` and `pcl::shared_ptr<T> p`
+    do, whatever the case of the template's name.
+    """
+    depth = 0
+    for position in range(start, min(len(code), start + 400)):
+        char = code[position]
+        if char == '<':
+            depth += 1
+        elif char == '>':
+            depth -= 1
+            if depth == 0:
+                return _AFTER_CLASS_TEMPLATE.match(
+                    code, position + 1) is not None
+        elif char in ';{}' or (depth == 0 and not char.isspace()):
+            return False
+    return False
 
 
 # what precedes the target of a namespace alias
@@ -425,9 +455,13 @@ def catch_all_class(name, *, head='', members=()):
     """The lines of a class of an unknown library, made from anything."""
     # its own assignment from anything (see rsia_model::Unknown), which
     # also hides the base's copy and move assignments: with them, `x = {}`
-    # would tie between the class's and the base's
+    # would tie between the class's and the base's. Made from an Unknown
+    # too (`Filter<P>::PointCloud`, repaired as one): C++ takes no
+    # inherited constructor for that
     return [f'{head}struct {name} : ::rsia_model::Unknown', '{',
             '  using ::rsia_model::Unknown::Unknown;',
+            f'  {name}() = default;',
+            f'  {name}(const ::rsia_model::Unknown&);',
             f'  template <class RsiaV> {name}& operator=(RsiaV&&);',
             *members, '};']
 

@@ -928,6 +928,9 @@ public:
     template<class RepT, class RatioT>
     std::future_status wait_for(
       const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
+    template<class ClockT, class DurationT>
+    std::future_status wait_until(
+      const std::chrono::time_point<ClockT, DurationT> & timeout_time) const;
     SharedFuture share() noexcept;
   };
 
@@ -937,6 +940,13 @@ public:
     int64_t request_id;
     SharedResponse get() const;
     bool valid() const;
+    void wait() const;
+    template<class RepT, class RatioT>
+    std::future_status wait_for(
+      const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
+    template<class ClockT, class DurationT>
+    std::future_status wait_until(
+      const std::chrono::time_point<ClockT, DurationT> & timeout_time) const;
   };
 
   FutureAndRequestId async_send_request(SharedRequest request);
