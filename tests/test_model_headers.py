@@ -1385,3 +1385,16 @@ def test_static_assertions_on_stand_ins_are_no_errors(tmp_path):
         '};\n'
         'Buffer<sensor_msgs::msg::PointCloud2> buffer;\n'
         'void check() { static_assert(sizeof(buffer) > 0); }\n'))
+
+
+def test_ros2_messages_keep_ros1s_pointer_names_and_qos_from_rmw(tmp_path):
+    # rosidl still declares Ptr and ConstPtr (deprecated); a QoS is made
+    # from an rmw profile through QoSInitialization::from_rmw
+    _assert_parses_clean(tmp_path, (
+        '#include <rclcpp/rclcpp.hpp>\n'
+        '#include <sensor_msgs/msg/point_cloud2.hpp>\n'
+        'void on_cloud(const sensor_msgs::msg::PointCloud2::ConstPtr & msg);\n'
+        'sensor_msgs::msg::PointCloud2::Ptr copy;\n'
+        'sensor_msgs::msg::PointCloud2::ConstWeakPtr last;\n'
+        'rclcpp::QoS qos(rclcpp::QoSInitialization::from_rmw(\n'
+        '  rmw_qos_profile_sensor_data), rmw_qos_profile_sensor_data);\n'))

@@ -1450,3 +1450,141 @@ def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
         '  result.wait_for(std::chrono::seconds(0));\n'
         '}\n'))
     assert unit.package_errors == 0, summary.diagnostics
+
+
+def test_headers_beside_a_subdirectorys_sources_are_found(tmp_path):
+    # a library in a subdirectory whose CMake adds its `src` directory
+    # (`target_include_directories(rules PUBLIC src)` there): its sources
+    # include "rule_helper/area.hpp" from it
+    package = tmp_path / 'src' / 'acme_vision'
+    helper = package / 'rules' / 'src' / 'rule_helper'
+    helper.mkdir(parents=True)
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\n'
+        'project(acme_vision)\n'
+        'add_subdirectory(rules)\n')
+    (package / 'rules' / 'CMakeLists.txt').write_text(
+        'add_library(rules src/rule_helper/area.cpp)\n'
+        'target_include_directories(rules PUBLIC src)\n')
+    (helper / 'area.hpp').write_text(
+        '#include <rclcpp/rclcpp.hpp>\n'
+        '#include <std_msgs/msg/string.hpp>\n'
+        'namespace rule_helper\n'
+        '{\n'
+        'class Area\n'
+        '{\n'
+        'public:\n'
+        '  explicit Area(rclcpp::Node & node);\n'
+        'private:\n'
+        '  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n'
+        '};\n'
+        '}  // namespace rule_helper\n')
+    (helper / 'area.cpp').write_text(
+        '#include "rule_helper/area.hpp"\n'
+        'namespace rule_helper\n'
+        '{\n'
+        'Area::Area(rclcpp::Node & node)\n'
+        '{\n'
+        '  pub_ = node.create_publisher<std_msgs::msg::String>("area", 1);\n'
+        '}\n'
+        '}  // namespace rule_helper\n')
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.file == 'rules/src/rule_helper/area.cpp'
+    assert unit.package_errors == 0, summary.diagnostics
+    recorded = {(c.role, c.recorded) for c in summary.coverage.call_sites}
+    # a library's: its facts are the unit's, no node of its own runs them
+    assert recorded == {('publisher', 'unit')}, summary.coverage.call_sites
+
+
+def test_a_name_that_ends_its_line_is_known_by_the_next_one():
+    # `cond ? Qt::ForbiddenCursor` goes on with `: Qt::ArrowCursor`: a
+    # value, as `Qt::ForbiddenCursor :` on one line would be
+    lines = _lines(
+        '  setCursor(disabled ? Qt::ForbiddenCursor\n'
+        '                     : Qt::ArrowCursor);')
+    diagnostics = [("no member named 'ForbiddenCursor' in namespace 'Qt'",
+                    'a.cpp', 1, 29)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+        ('constant', 'Qt::ForbiddenCursor')}
+    # and a type at the end of its line stays one
+    lines = _lines('  std::unique_ptr<acme::Device>\n    device_;')
+    diagnostics = [("no member named 'Device' in namespace 'acme'",
+                    'a.cpp', 1, 25)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+        ('type', 'acme::Device')}
+
+
+def test_an_attribute_macro_before_a_class_name_is_empty():
+    # `struct EIGEN_ALIGN16 Point {` reads as a variable of an incomplete
+    # `struct EIGEN_ALIGN16`
+    diagnostics = [("variable has incomplete type 'struct EIGEN_ALIGN16'",
+                    'a.cpp', 1, 8)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines('struct EIGEN_ALIGN16 LivoxPoint')) == {
+            ('macro-empty', 'EIGEN_ALIGN16')}
+
+
+def test_a_member_of_an_unknown_base_multiplied_is_no_local():
+    # `size_x_ * resolution_` multiplies a member the unknown base class
+    # (nav2_costmap_2d::Costmap2D) has; `Cell * cell_` would declare one
+    code = ('void Grid::update(double wx)\n'
+            '{\n'
+            '  // the origin_x_ of the world\n'
+            '  const double end = origin + size_x_ * resolution_;\n'
+            '  int mx = static_cast<int>((wx - origin_x_) / resolution_);\n'
+            '}\n')
+    lines = _lines(code)
+    for name, line, column in (('resolution_', 4, 41), ('origin_x_', 5, 36)):
+        diagnostics = [(f"use of undeclared identifier '{name}'", 'a.cpp',
+                        line, column)]
+        assert repair.repairs_from_diagnostics(
+            diagnostics, lines, texts=[code]) == {('object', name)}
+    code = 'void f()\n{\n  Cell * cell_ = find();\n  use(cell_);\n}\n'
+    diagnostics = [("use of undeclared identifier 'cell_'", 'a.cpp', 4, 7)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines(code), texts=[code]) == set()
+
+
+def test_ids_indices_and_allocators_of_libraries_are_the_real_kinds(tmp_path):
+    # lanelet::Id is an int64_t (ids go into std::vector<int64_t>),
+    # Eigen::Index counts a loop, Eigen::aligned_allocator is an allocator
+    # std::vector takes
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'lanelet::Id'), ('type', 'lanelet::Ids'),
+        ('type', 'Eigen::Index'), ('template', 'Eigen::aligned_allocator')})
+    text = header.read_text()
+    assert 'using Id = std::int64_t;' in text
+    assert 'using Ids = std::vector<Id>;' in text
+    assert 'using Index = std::ptrdiff_t;' in text
+    assert 'template <class RsiaT> using aligned_allocator = ' \
+        'std::allocator<RsiaT>;' in text
+
+
+def test_a_static_member_template_of_a_repaired_namespaces_class():
+    # the namespace's uses are repaired at once: `toImage<uint16_t, 1>`
+    # is a member template, not a value
+    code = ('void f(const Map & map, Image & image)\n'
+            '{\n'
+            '  grid_map::GridMapCvConverter::toImage<uint16_t, 1>(\n'
+            '    map, "elevation", image);\n'
+            '}\n')
+    diagnostics = [("use of undeclared identifier 'grid_map'", 'a.cpp', 3, 3)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines(code), texts=[code]) == {
+            ('namespace', 'grid_map'),
+            ('type', 'grid_map::GridMapCvConverter'),
+            ('member-template', 'grid_map::GridMapCvConverter::toImage')}
+
+
+def test_a_value_used_with_template_arguments_becomes_a_function(tmp_path):
+    # `using boost::geometry::return_centroid;` read as a value, then
+    # `return_centroid<Point2d>(polygon)`
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('object', 'boost::geometry::return_centroid')})
+    assert repair.add_repairs(str(header), 'a.cpp', {
+        ('template-use', 'return_centroid')})
+    assert repair.read_repairs(str(header)) == {
+        ('function', 'boost::geometry::return_centroid')}

@@ -233,12 +233,27 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
             if not file.endswith(CXX_SOURCE_EXTENSIONS):
                 continue
             arguments = ['-x', 'c++', f'-std={std}', '-I', root]
+            # "rule_helper/area.hpp" from rules/src/rule_helper/area.cpp:
+            # the directories between the source and the package, which a
+            # subdirectory's CMake adds (target_include_directories(x src))
+            for directory in _directories_up_to(root, path):
+                arguments += ['-I', directory]
             for directory in include_dirs:
                 arguments += ['-I', directory]
             entries.append(CompileEntry(
                 file=os.path.join(root, file), directory=path,
                 arguments=arguments))
     return entries
+
+
+def _directories_up_to(directory, package):
+    """The directories above ``directory``, below ``package``."""
+    found = []
+    parent = os.path.dirname(directory)
+    while _inside(parent, package):
+        found.append(parent)
+        parent = os.path.dirname(parent)
+    return found
 
 
 def _own_include_dirs(path):

@@ -230,11 +230,13 @@ def read_repairs(path):
 def add_repairs(path, source, repairs):
     """Add declarations to a unit's repair header; return whether it grew."""
     known = read_repairs(path)
-    # a member declared as a value and then used as `obj.name<T>()`
+    # a member declared as a value and then used as `obj.name<T>()`, a
+    # name as `name<T>(x)` after `using ns::name;`
     uses = {name for kind, name in repairs if kind == TEMPLATE_USE}
+    templates = {MEMBER: MEMBER_TEMPLATE, OBJECT: FUNCTION}
     merged = _one_kind_each({
-        (MEMBER_TEMPLATE, name)
-        if kind == MEMBER and name.rsplit('::', 1)[-1] in uses
+        (templates[kind], name)
+        if kind in templates and name.rsplit('::', 1)[-1] in uses
         else (kind, name)
         for kind, name in known | repairs if kind != TEMPLATE_USE})
     if merged == known:
@@ -588,7 +590,7 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
         '(?<![\\w:])(?:' + '|'.join(
             re.escape(spelling).replace('::', r'\s*::\s*')
             for spelling in spellings) +
-        r')\s*::\s*(\w+)(?:\s*::\s*(\w+))?(?=([^\n]{0,200}))')
+        r')\s*::\s*(\w+)(?:\s*::\s*(\w+))?(?=(\s*[^\n]{0,200}))')
     found = set()
     inner = set()
     for text in texts:
@@ -607,8 +609,11 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
                 nested = _by_use(member, rest, unqualified=False)[0] == TYPE \
                     and _names_nested_type(rest, text[
                         max(0, match.start() - 200):match.start()])
-                found.add((MEMBER_TYPE if nested else MEMBER,
-                           f'{namespace}::{name}::{member}'))
+                # (`Converter::toImage<uint16_t, 1>(...)`: a template)
+                found.add((
+                    MEMBER_TYPE if nested else MEMBER_TEMPLATE
+                    if re.match(r'<(?![<=])', rest) else MEMBER,
+                    f'{namespace}::{name}::{member}'))
     if depth < 3:
         for name in sorted(inner):
             found |= _uses_of_namespace(name, texts, aliases, depth + 1)
@@ -632,7 +637,8 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
         if file:
             text, column = _in_macro_arguments(
                 read_line, file, line, text, column, message)
-        after = _after(text, column, message)
+        after = _after(text, column, message) or \
+            _next_line(read_line, file, line, text, message)
         match = _UNDECLARED.match(message)
         if match:
             kind, name = _by_use(match.group(1), after, unqualified=True)
@@ -693,8 +699,13 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             continue
         match = _INCOMPLETE.search(message)
         if match:
-            # a class only forward-declared (its definition is generated)
-            repairs.add((TYPE, match.group(1) or match.group(2)))
+            name = match.group(1) or match.group(2)
+            if _ALL_CAPS.match(name) and '_' in name:
+                # `struct EIGEN_ALIGN16 Point {`: an attribute's macro
+                repairs.add((MACRO_EMPTY, name))
+            else:
+                # a class only forward-declared (its definition generated)
+                repairs.add((TYPE, name))
             continue
         match = _IN_CLASS.match(message)
         if match:
@@ -883,6 +894,20 @@ def _after(text, column, message):
     return text[found + len(name):].lstrip()
 
 
+def _next_line(read_line, file, line, text, message):
+    """What follows the name of a message that ends its line.
+
+    `cond ? Qt::ForbiddenCursor` with `: Qt::ArrowCursor` below: what the
+    next line starts with tells a value from a type as the rest of the
+    name's own line would.
+    """
+    match = re.search(r"'(\w+)'", message)
+    if not file or not match or not re.search(
+            r'\b' + match.group(1) + r'\s*$', text):
+        return ''
+    return read_line(file, line + 1).lstrip()
+
+
 # a name (@) as the type of a cast: `static_cast<@>(`, `(@)value`
 _CAST_TYPE = re.compile(r'_cast\s*<\s*@>|(?<![\w\])])\s*\(\s*@\)\s*[\w(]')
 # what comes before `ns::name` in `std::pair<ns::name, ...>`
@@ -905,9 +930,17 @@ _NOT_DECLARING = frozenset("""
 def _declared_as_variable(name, texts):
     """Whether the code declares `name` (`Type name = ...`, `auto & name :`)."""
     pattern = re.compile(
-        r'(\w+|[>*&])\s*\b' + re.escape(name) + r'\s*[=;({\[,):]')
-    return any(match.group(1) not in _NOT_DECLARING
-               for text in texts for match in pattern.finditer(text))
+        r'(\w+\s*[*&]+|\w+|>)\s*\b' + re.escape(name) + r'\s*[=;({\[,):]')
+    for text in texts:
+        for match in pattern.finditer(_SOURCE_NOISE.sub(' ', text)):
+            before = match.group(1)
+            word = before.rstrip('*& \t\n')
+            if before[-1] in '*&' and (word.endswith('_') or
+                                       word[-1].isdigit()):
+                continue  # `size_x_ * resolution_`: a product
+            if word not in _NOT_DECLARING:
+                return True
+    return False
 
 
 # a constant by Google's style: kMaxSize
@@ -984,6 +1017,8 @@ def _by_use(name, after, *, unqualified):
 _NUMBER_TYPES = {
     'Eigen::Index': 'std::ptrdiff_t',
     'Eigen::DenseIndex': 'std::ptrdiff_t',
+    # a map element's id, which ids are kept in std::vector<int64_t> with
+    'lanelet::Id': 'std::int64_t',
 }
 
 # allocators of libraries the model lacks: a standard container takes only

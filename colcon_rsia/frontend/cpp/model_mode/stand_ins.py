@@ -199,6 +199,10 @@ def ros2_interface_text(package, kind, file_name, names):
             f'  using UniquePtr = std::unique_ptr<{struct_name}_>;',
             f'  using ConstUniquePtr = std::unique_ptr<const {struct_name}_>;',
             f'  using WeakPtr = std::weak_ptr<{struct_name}_>;',
+            f'  using ConstWeakPtr = std::weak_ptr<const {struct_name}_>;',
+            '  // (deprecated in rosidl, as in ROS 1)',
+            '  using Ptr = SharedPtr;',
+            '  using ConstPtr = ConstSharedPtr;',
             '};',
             f'using {struct_name} = {struct_name}_<std::allocator<void>>;', '']
     for name in names:

@@ -398,6 +398,7 @@ struct KeepAll
 struct QoSInitialization
 {
   QoSInitialization(int history_policy, std::size_t depth);
+  static QoSInitialization from_rmw(const rmw_qos_profile_t & rmw_qos);
 };
 
 // rclcpp/qos.hpp (Galactic+): the policies as rclcpp's own enums
