@@ -1398,3 +1398,24 @@ def test_ros2_messages_keep_ros1s_pointer_names_and_qos_from_rmw(tmp_path):
         'sensor_msgs::msg::PointCloud2::ConstWeakPtr last;\n'
         'rclcpp::QoS qos(rclcpp::QoSInitialization::from_rmw(\n'
         '  rmw_qos_profile_sensor_data), rmw_qos_profile_sensor_data);\n'))
+
+
+def test_typed_iterators_of_unknown_classes_and_one_argument_to_msg(tmp_path):
+    # OpenCV's `image.begin<ushort>()`; tf2::toMsg of a tf2 type where only
+    # <tf2/convert.h> is included (the overload is in tf2_geometry_msgs)
+    _assert_parses_clean(tmp_path, (
+        '#include <algorithm>\n'
+        '#include <vector>\n'
+        '#include <opencv_like/core.hpp>\n'
+        '#include <tf2/convert.h>\n'
+        '#include <tf2/LinearMath/Quaternion.h>\n'
+        '#include <geometry_msgs/Pose.h>\n'
+        'void f(const opencv_like::Mat & image, const std::vector<double> & p,\n'
+        '       const tf2::Quaternion & q)\n'
+        '{\n'
+        '  auto first = image.begin<unsigned short>();\n'
+        '  auto last = std::unique(first, image.end<unsigned short>());\n'
+        '  std::copy(p.begin(), p.end(), image.begin<double>());\n'
+        '  geometry_msgs::Pose pose;\n'
+        '  pose.orientation = tf2::toMsg(q);\n'
+        '}\n'))

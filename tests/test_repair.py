@@ -1588,3 +1588,40 @@ def test_a_value_used_with_template_arguments_becomes_a_function(tmp_path):
         ('template-use', 'return_centroid')})
     assert repair.read_repairs(str(header)) == {
         ('function', 'boost::geometry::return_centroid')}
+
+
+@pytest.mark.parametrize('message,line,column,expected', [
+    # a function template called with explicit arguments
+    ("use of undeclared identifier 'qobject_cast'",
+     '  auto * button = qobject_cast<QPushButton *>(sender());', 19,
+     {('function', 'qobject_cast')}),
+    # a value before `&& !`: an enumerator, not an rvalue reference's type
+    ("no member named 'LeftButton' in namespace 'Qt'",
+     '  if (event->button() == Qt::LeftButton && !disabled) {', 30,
+     {('constant', 'Qt::LeftButton')}),
+    # a function of the model, named before the unit includes the model
+    ("no member named 'get_logger' in namespace 'rclcpp'",
+     '  rclcpp::Logger logger_{rclcpp::get_logger("smoother")};', 35,
+     {('header', 'rclcpp/rclcpp.hpp')}),
+])
+def test_functions_templates_and_values_by_their_use(
+        message, line, column, expected):
+    assert repair.repairs_from_diagnostics(
+        [(message, 'a.cpp', 1, column)], _lines(line)) == expected
+
+
+def test_a_comparison_declares_no_variable():
+    # `cell_size_y > size_y_` compares a member of the unknown base class;
+    # `std::vector<int> cells_;` declares one
+    code = ('void Grid::move()\n'
+            '{\n'
+            '  if (start_y + cell_size_y > size_y_) {}\n'
+            '  int size_y{static_cast<int>(size_y_)};\n'
+            '}\n')
+    diagnostics = [("use of undeclared identifier 'size_y_'", 'a.cpp', 4, 30)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines(code), texts=[code]) == {('object', 'size_y_')}
+    code = 'void f()\n{\n  std::vector<int> cells_;\n  use(cells_);\n}\n'
+    diagnostics = [("use of undeclared identifier 'cells_'", 'a.cpp', 4, 7)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines(code), texts=[code]) == set()

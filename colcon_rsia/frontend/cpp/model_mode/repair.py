@@ -541,6 +541,12 @@ def model_declarations():
 
 
 _model_header_index = []
+# a function at namespace level (`Logger get_logger(const std::string &);`):
+# a repair of one of its calls includes the model header instead of
+# declaring a catch-all the call would prefer
+_FUNCTION_DECLARED = re.compile(
+    r'^(?!return\b)(?:[A-Za-z_][\w:<>,]*(?:\s+[\w:<>,]+)*\s*[*&]*\s*)?'
+    r'\b([a-z_]\w*)\s*\(', re.MULTILINE)
 _NAMESPACE_OPENED = re.compile(r'\bnamespace\s+(\w+)\s*\{')
 
 
@@ -565,7 +571,8 @@ def model_header_for(name):
                     if line[:1] not in (' ', '\t'))
                 _model_header_index.append((
                     path, set(_NAMESPACE_OPENED.findall(text)),
-                    declared_names([top_level])))
+                    declared_names([top_level]) |
+                    set(_FUNCTION_DECLARED.findall(top_level))))
     found = [path for path, opened, names in _model_header_index
              if namespaces[0] in opened and short in names]
     if not found:
@@ -930,7 +937,8 @@ _NOT_DECLARING = frozenset("""
 def _declared_as_variable(name, texts):
     """Whether the code declares `name` (`Type name = ...`, `auto & name :`)."""
     pattern = re.compile(
-        r'(\w+\s*[*&]+|\w+|>)\s*\b' + re.escape(name) + r'\s*[=;({\[,):]')
+        r'(\w+\s*[*&]+|\w+|(?<=[\w>])>)\s*\b' + re.escape(name) +
+        r'\s*[=;({\[,):]')
     for text in texts:
         for match in pattern.finditer(_SOURCE_NOISE.sub(' ', text)):
             before = match.group(1)
@@ -979,6 +987,19 @@ def _in_template_arguments(before):
     return statement.count('<') > statement.count('>')
 
 
+_CALL = re.compile(r'\s*\(')
+
+
+def _after_template_arguments(after):
+    """What follows the template arguments `after` starts with."""
+    depth = 0
+    for position, char in enumerate(after):
+        depth += {'<': 1, '>': -1}.get(char, 0)
+        if depth == 0:
+            return after[position + 1:]
+    return ''
+
+
 def _by_use(name, after, *, unqualified):
     """(kind, name) of a name from what follows it."""
     if after.startswith('::'):
@@ -995,11 +1016,16 @@ def _by_use(name, after, *, unqualified):
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')):
+        if unqualified and not _CAMEL.match(name) and \
+                _CALL.match(_after_template_arguments(after)):
+            # qobject_cast<QPushButton *>(sender()): a function template
+            return FUNCTION, name
         return template_kind(after), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
-            re.match(r'(?:\)|;|,|\||\+|-|=|\?|\]|\}|!|:(?!:))', after):
+            re.match(r'(?:\)|;|,|\||\+|-|=|\?|\]|\}|!|:(?!:)|&&\s*[!(])',
+                     after):
         # a CamelCase value, where a value ends or an operator follows: an
         # enumerator (Qt::AlignCenter), a constant (lanelet::InvalId, as an
         # argument; a first template argument is a type, see

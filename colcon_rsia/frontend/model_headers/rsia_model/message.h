@@ -490,6 +490,11 @@ struct Unknown : Fields
   Any* cend() const;
   Any* rbegin() const;
   Any* rend() const;
+  // an image's typed iterators (OpenCV's `image.begin<ushort>()`)
+  template <class RsiaT>
+  Any* begin() const;
+  template <class RsiaT>
+  Any* end() const;
   template <class RsiaI>
   Any& operator[](RsiaI&&) const;
   // assignment from anything in one exact step: otherwise `handle =

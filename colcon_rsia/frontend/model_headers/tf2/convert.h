@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include <rsia_model/message.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/time.h>
 #include <tf2/exceptions.h>
@@ -21,6 +22,16 @@ template <class T>
 const std::string& getFrameId(const T& t);
 template <class A, class B>
 B toMsg(const A& a);
+// The overloads of tf2_geometry_msgs and the like (ROS 1 and ROS 2), which
+// code also reaches through headers the model lacks: one template each,
+// with a one-argument toMsg returning a catch-all value that converts to
+// any message.
+template <class A>
+::rsia_model::Any toMsg(const A& in);
+template <class A, class B>
+B& toMsg(const A& in, B& out);
+template <class A, class B, class C>
+void doTransform(const A& in, B& out, const C& transform);
 template <class A, class B>
 void fromMsg(const A& a, B& b);
 template <class A, class B>

@@ -6,8 +6,7 @@
 // Quaternion, with its operators).
 //
 // The real header has one toMsg/fromMsg/doTransform overload per pair of
-// types; these templates stand for all of them. A one-argument toMsg
-// returns a catch-all value that converts to any message.
+// types; the templates of <tf2/convert.h> stand for all of them.
 #ifndef RSIA_MODEL_TF2_GEOMETRY_MSGS_H
 #define RSIA_MODEL_TF2_GEOMETRY_MSGS_H
 
@@ -16,17 +15,5 @@
 #include <tf2/LinearMath/Transform.h>
 #include <tf2/LinearMath/Vector3.h>
 #include <tf2/convert.h>
-
-namespace tf2
-{
-
-template <class A>
-::rsia_model::Any toMsg(const A& in);
-template <class A, class B>
-B& toMsg(const A& in, B& out);
-template <class A, class B, class C>
-void doTransform(const A& in, B& out, const C& transform);
-
-}  // namespace tf2
 
 #endif  // RSIA_MODEL_TF2_GEOMETRY_MSGS_H
