@@ -466,12 +466,15 @@ def _declared(name, declared):
     *namespaces, short = name.split('::')
     if short not in declared:
         return False
-    # tf2::Transform is missing even if karto::Transform exists: only a
-    # namespace the package opens itself may hold its declaration
-    return not namespaces or namespaces[0] in declared
+    # tf2::Transform is missing even if karto::Transform exists, and
+    # autoware::trajectory::Trajectory even if the package's own
+    # `using Trajectory = ...` in namespace autoware does: only namespaces
+    # the package opens itself may hold its declaration
+    return all(namespace in declared for namespace in namespaces)
 
 
 _DECLARATION = re.compile(
+    r'\bnamespace\s+((?:\w+\s*::\s*)+\w+)\s*\{|'
     r'\b(?:class|struct|union|enum(?:\s+class)?|namespace)\s+'
     r'(?:\w+\s+)?(\w+)\s*(?:final\s*)?[:{]|'
     r'\busing\s+(\w+)\s*=|\btypedef\b[^;{}]*?\b(\w+)\s*;|'
@@ -485,7 +488,9 @@ def declared_names(texts):
         # `class X  // : public Base` then `{` on the next line
         code = COMMENT_OR_STRING.sub(' ', text)
         for match in _DECLARATION.finditer(code):
-            names.update(g for g in match.groups() if g)
+            # (each namespace of `namespace autoware::planning {`)
+            names.update(part.strip() for g in match.groups() if g
+                         for part in g.split('::'))
     return names
 
 

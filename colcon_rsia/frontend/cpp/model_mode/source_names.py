@@ -48,6 +48,7 @@ _NOT_MESSAGES = frozenset(
     ('PointCloud2Iterator', 'PointCloud2ConstIterator', 'PointCloud2Modifier'))
 IDENTIFIER = re.compile(r'^[A-Za-z_]\w*$')
 CAMEL = re.compile(r'^[A-Z][A-Za-z0-9]*$')
+ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]+$')
 PACKAGE = re.compile(r'^[a-z][a-z0-9_]*$')
 
 # names that can never be members: C++ keywords and alternative tokens,
@@ -175,8 +176,13 @@ def used_names(codes):
         for m in _ROS2_MSGS_TYPE.finditer(code):
             msgs_types.setdefault(m.group(1), set()).add(
                 f'{m.group(1)}/msg/{snake_case(m.group(2))}.hpp')
-    members = {n for n in members if member_ok(n)}
-    constants = {n for n in constants if member_ok(n)} - members
+    # an ALL_CAPS name is a message's constant, also where the code reads
+    # it through an object (`filter.UNKNOWN` beside `Label::UNKNOWN`): a
+    # static member takes both
+    constants = {n for n in constants if member_ok(n)}
+    members = {n for n in members if member_ok(n)} - {
+        n for n in constants if ALL_CAPS.match(n)}
+    constants -= members
     # a member function template, unless some use takes it for a value
     values &= members
     templates = {n for n in templates - values if n in members}

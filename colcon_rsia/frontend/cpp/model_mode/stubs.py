@@ -13,6 +13,8 @@ import threading
 
 from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
+from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS \
+    as _ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.source_names import KNOWN_METHODS
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
@@ -27,7 +29,6 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
 FIELDS_HEADER = os.path.join('rsia_model', 'fields.h')
 IMPLICIT_MESSAGES_HEADER = os.path.join('rsia_model', 'implicit_messages.h')
-_ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]+$')
 
 
 # directory level each)
@@ -162,7 +163,12 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     old_templates = set(re.findall(
         r'RSIA_MODEL_FIELD_TEMPLATE\((\w+)\)', old))
     old_values = set(re.findall(r'^// value (\w+)$', old, re.M))
+    # an ALL_CAPS constant of one unit, a member of another's code
+    # (`filter.UNKNOWN`): a constant (see used_names)
+    capitals = {n for n in old_constants | set(constants)
+                if _ALL_CAPS.match(n)}
     if old and members <= old_members | old_templates and \
+            not capitals & old_members and \
             constants <= old_constants | old_members and \
             set(field_types) <= old_types | old_members and \
             set(templates) <= old_templates | old_values and \
@@ -174,7 +180,8 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     all_values = sorted(old_values | set(values))
     all_templates = sorted(
         (old_templates | set(templates)) - set(all_values))
-    all_members = sorted((old_members | members) - set(all_templates))
+    all_members = sorted(
+        (old_members | members) - set(all_templates) - capitals)
     taken = set(all_members) | set(all_templates)
     methods = [n for n in all_members
                if n in KNOWN_METHODS and n not in all_values]

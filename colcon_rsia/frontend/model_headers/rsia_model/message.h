@@ -490,6 +490,11 @@ struct Unknown : Fields
   Any* cend() const;
   Any* rbegin() const;
   Any* rend() const;
+  // an iterator of the unknown library (grid_map::GridMapIterator)
+  Unknown& operator++();
+  Unknown& operator--();
+  Unknown operator++(int);
+  Unknown operator--(int);
   // an image's typed iterators (OpenCV's `image.begin<ushort>()`)
   template <class RsiaT>
   Any* begin() const;
