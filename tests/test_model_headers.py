@@ -1419,3 +1419,26 @@ def test_typed_iterators_of_unknown_classes_and_one_argument_to_msg(tmp_path):
         '  geometry_msgs::Pose pose;\n'
         '  pose.orientation = tf2::toMsg(q);\n'
         '}\n'))
+
+
+def test_a_constant_read_through_an_object_and_unknown_iterators(tmp_path):
+    # `filter.UNKNOWN` (the package's struct) beside `Label::UNKNOWN` (a
+    # message's constant); grid_map's iterator, of a library the model lacks
+    _assert_parses_clean(tmp_path, (
+        '#include <cstdint>\n'
+        '#include <perception_like_msgs/msg/object_classification.hpp>\n'
+        '#include <grid_map_like/iterators.hpp>\n'
+        'struct Filter { bool UNKNOWN; bool CAR; };\n'
+        'using Label = perception_like_msgs::msg::ObjectClassification;\n'
+        'bool is_target(const Filter & filter, const uint8_t label)\n'
+        '{\n'
+        '  return (label == Label::UNKNOWN && filter.UNKNOWN) ||\n'
+        '    (label == Label::CAR && filter.CAR);\n'
+        '}\n'
+        'void walk(const grid_map_like::GridMap & map)\n'
+        '{\n'
+        '  for (grid_map_like::GridMapIterator it(map); !it.isPastEnd();'
+        ' ++it) {}\n'
+        '  grid_map_like::GridMapIterator back(map);\n'
+        '  back--;\n'
+        '}\n'))

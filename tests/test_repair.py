@@ -247,6 +247,35 @@ def _lines(text):
     ('expected function body after function declarator',
      'REGISTER_POINT_3D(Point, double, cs::cartesian, x, y, z)', 58,
      {('macro-void', 'REGISTER_POINT_3D')}),
+    # a tag among template arguments is a type
+    ("no member named 'cartesian' in namespace 'boost::geometry::cs'",
+     'using P = bg::model::point<double, 2, bg::cs::cartesian>;', 48,
+     {('type', 'boost::geometry::cs::cartesian')}),
+    # a constant by its name stays a value
+    ("no member named 'kSize' in namespace 'acme::limits'",
+     'std::array<float, acme::limits::kSize> values;', 35,
+     {('object', 'acme::limits::kSize')}),
+    # a nested type of an unknown class, as a template argument
+    ("no member named 'Result' in 'acme::Buffer'",
+     'std::optional<acme::Buffer::Result>', 29,
+     {('member-type', 'acme::Buffer::Result')}),
+    # a member of the catch-all base (a field named `type`) is no type
+    ("typename specifier refers to non-type member 'type' in "
+     "'pcl::traits::fieldList<pcl::PointXYZ>'",
+     'typedef typename pcl::traits::fieldList<PointT>::type FieldList;', 50,
+     {('member-type', 'pcl::traits::fieldList::type')}),
+    # a function template called with explicit arguments
+    ("use of undeclared identifier 'qobject_cast'",
+     '  auto * button = qobject_cast<QPushButton *>(sender());', 19,
+     {('function', 'qobject_cast')}),
+    # a value before `&& !`: an enumerator, not an rvalue reference's type
+    ("no member named 'LeftButton' in namespace 'Qt'",
+     '  if (event->button() == Qt::LeftButton && !disabled) {', 30,
+     {('constant', 'Qt::LeftButton')}),
+    # a function of the model, named before the unit includes the model
+    ("no member named 'get_logger' in namespace 'rclcpp'",
+     '  rclcpp::Logger logger_{rclcpp::get_logger("smoother")};', 35,
+     {('header', 'rclcpp/rclcpp.hpp')}),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
     found = repair.repairs_from_diagnostics(
@@ -1375,30 +1404,6 @@ def test_a_name_among_a_macros_arguments_on_a_later_line():
         ('namespace', 'logging')}
 
 
-@pytest.mark.parametrize('message,line,column,expected', [
-    # a tag among template arguments is a type
-    ("no member named 'cartesian' in namespace 'boost::geometry::cs'",
-     'using P = bg::model::point<double, 2, bg::cs::cartesian>;', 48,
-     {('type', 'boost::geometry::cs::cartesian')}),
-    # a constant by its name stays a value
-    ("no member named 'kSize' in namespace 'acme::limits'",
-     'std::array<float, acme::limits::kSize> values;', 35,
-     {('object', 'acme::limits::kSize')}),
-    # a nested type of an unknown class, as a template argument
-    ("no member named 'Result' in 'acme::Buffer'",
-     'std::optional<acme::Buffer::Result>', 29,
-     {('member-type', 'acme::Buffer::Result')}),
-    # a member of the catch-all base (a field named `type`) is no type
-    ("typename specifier refers to non-type member 'type' in "
-     "'pcl::traits::fieldList<pcl::PointXYZ>'",
-     'typedef typename pcl::traits::fieldList<PointT>::type FieldList;', 50,
-     {('member-type', 'pcl::traits::fieldList::type')}),
-])
-def test_types_among_template_arguments(message, line, column, expected):
-    assert repair.repairs_from_diagnostics(
-        [(message, 'a.cpp', 1, column)], _lines(line)) == expected
-
-
 def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
     # what autoware's NDT and lidar packages write with PCL, Eigen and
     # CUDA, none of them in the model: traits of a class template, its
@@ -1590,26 +1595,6 @@ def test_a_value_used_with_template_arguments_becomes_a_function(tmp_path):
         ('function', 'boost::geometry::return_centroid')}
 
 
-@pytest.mark.parametrize('message,line,column,expected', [
-    # a function template called with explicit arguments
-    ("use of undeclared identifier 'qobject_cast'",
-     '  auto * button = qobject_cast<QPushButton *>(sender());', 19,
-     {('function', 'qobject_cast')}),
-    # a value before `&& !`: an enumerator, not an rvalue reference's type
-    ("no member named 'LeftButton' in namespace 'Qt'",
-     '  if (event->button() == Qt::LeftButton && !disabled) {', 30,
-     {('constant', 'Qt::LeftButton')}),
-    # a function of the model, named before the unit includes the model
-    ("no member named 'get_logger' in namespace 'rclcpp'",
-     '  rclcpp::Logger logger_{rclcpp::get_logger("smoother")};', 35,
-     {('header', 'rclcpp/rclcpp.hpp')}),
-])
-def test_functions_templates_and_values_by_their_use(
-        message, line, column, expected):
-    assert repair.repairs_from_diagnostics(
-        [(message, 'a.cpp', 1, column)], _lines(line)) == expected
-
-
 def test_a_comparison_declares_no_variable():
     # `cell_size_y > size_y_` compares a member of the unknown base class;
     # `std::vector<int> cells_;` declares one
@@ -1625,3 +1610,28 @@ def test_a_comparison_declares_no_variable():
     diagnostics = [("use of undeclared identifier 'cells_'", 'a.cpp', 4, 7)]
     assert repair.repairs_from_diagnostics(
         diagnostics, _lines(code), texts=[code]) == set()
+
+
+def test_a_name_the_package_declares_in_another_namespace_is_repaired():
+    # the package's `using Trajectory = autoware::trajectory::Trajectory<P>;`
+    # inside its own `namespace autoware::planning` declares no
+    # autoware::trajectory::Trajectory
+    declared = repair.declared_names([
+        'namespace autoware::planning\n{\n'
+        'class Module\n{\n'
+        '  using Trajectory = autoware::trajectory::Trajectory<Point>;\n'
+        '};\n}\n'])
+    assert {'autoware', 'planning', 'Module', 'Trajectory'} <= declared
+    line = _lines(
+        '  using Trajectory = autoware::trajectory::Trajectory<Point>;')
+    diagnostics = [("no template named 'Trajectory' in namespace "
+                    "'autoware::trajectory'", 'a.hpp', 1, 44)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, line, declared=declared) == {
+            ('template', 'autoware::trajectory::Trajectory')}
+    # one in the package's own namespaces stays the package's
+    diagnostics = [("no member named 'Module' in namespace "
+                    "'autoware::planning'", 'a.hpp', 1, 1)]
+    assert repair.repairs_from_diagnostics(
+        diagnostics, _lines('autoware::planning::Module m;'),
+        declared=declared) == set()

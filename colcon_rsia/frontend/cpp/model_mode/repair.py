@@ -29,6 +29,8 @@ import threading
 
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
+from colcon_rsia.frontend.cpp.model_mode.source_names import \
+    end_of_template_arguments
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_class
@@ -995,16 +997,6 @@ def _in_template_arguments(before):
 _CALL = re.compile(r'\s*\(')
 
 
-def _after_template_arguments(after):
-    """What follows the template arguments `after` starts with."""
-    depth = 0
-    for position, char in enumerate(after):
-        depth += {'<': 1, '>': -1}.get(char, 0)
-        if depth == 0:
-            return after[position + 1:]
-    return ''
-
-
 def _by_use(name, after, *, unqualified):
     """(kind, name) of a name from what follows it."""
     if after.startswith('::'):
@@ -1021,8 +1013,9 @@ def _by_use(name, after, *, unqualified):
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')):
-        if unqualified and not _CAMEL.match(name) and \
-                _CALL.match(_after_template_arguments(after)):
+        end = end_of_template_arguments(after)
+        if unqualified and not _CAMEL.match(name) and end is not None and \
+                _CALL.match(after, end):
             # qobject_cast<QPushButton *>(sender()): a function template
             return FUNCTION, name
         return template_kind(after), name

@@ -256,6 +256,27 @@ VALUE_ARGUMENT = re.compile(
     r'\w\s*[-+/%]\s*\w')
 
 
+def end_of_template_arguments(text, start=0):
+    """Where the template arguments that open at ``start`` end, or None.
+
+    ``start`` is at their `<` (or at blanks before it); the result is past
+    the matching `>`. None when no `<` opens there, or when a statement
+    or a block ends first (`a < b;`).
+    """
+    depth = 0
+    for position in range(start, min(len(text), start + 400)):
+        char = text[position]
+        if char == '<':
+            depth += 1
+        elif char == '>':
+            depth -= 1
+            if depth == 0:
+                return position + 1
+        elif char in ';{}' or (depth == 0 and not char.isspace()):
+            return None
+    return None
+
+
 def template_arguments(after):
     """The arguments of `<...>` at the start of ``after`` (all on the line)."""
     if not after.startswith('<'):

@@ -16,6 +16,8 @@ from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS \
     as _ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
+from colcon_rsia.frontend.cpp.model_mode.source_names import \
+    end_of_template_arguments
 from colcon_rsia.frontend.cpp.model_mode.source_names import KNOWN_METHODS
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
@@ -335,19 +337,9 @@ def _class_template_use(code, start):
     As `pcl::traits::fieldList<PointT>::type` and `pcl::shared_ptr<T> p`
     do, whatever the case of the template's name.
     """
-    depth = 0
-    for position in range(start, min(len(code), start + 400)):
-        char = code[position]
-        if char == '<':
-            depth += 1
-        elif char == '>':
-            depth -= 1
-            if depth == 0:
-                return _AFTER_CLASS_TEMPLATE.match(
-                    code, position + 1) is not None
-        elif char in ';{}' or (depth == 0 and not char.isspace()):
-            return False
-    return False
+    end = end_of_template_arguments(code, start)
+    return end is not None and \
+        _AFTER_CLASS_TEMPLATE.match(code, end) is not None
 
 
 # what precedes the target of a namespace alias

@@ -891,6 +891,28 @@ public:
 
 enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
 
+namespace detail
+{
+// what a client's future of a request and the one of a request with a
+// callback share (Humble+)
+template<class FutureT>
+struct FutureAndRequestId
+{
+  FutureT future;
+  int64_t request_id;
+  operator FutureT &();
+  decltype(std::declval<FutureT &>().get()) get();
+  bool valid() const noexcept;
+  void wait() const;
+  template<class RepT, class RatioT>
+  std::future_status wait_for(
+    const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
+  template<class ClockT, class DurationT>
+  std::future_status wait_until(
+    const std::chrono::time_point<ClockT, DurationT> & timeout_time) const;
+};
+}  // namespace detail
+
 class ClientBase
 {
 public:
@@ -919,35 +941,12 @@ public:
   using SharedFuture = std::shared_future<SharedResponse>;
   using CallbackType = std::function<void(SharedFuture)>;
 
-  struct FutureAndRequestId
+  struct FutureAndRequestId : detail::FutureAndRequestId<Future>
   {
-    Future future;
-    int64_t request_id;
-    SharedResponse get();
-    bool valid() const;
-    void wait() const;
-    template<class RepT, class RatioT>
-    std::future_status wait_for(
-      const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
-    template<class ClockT, class DurationT>
-    std::future_status wait_until(
-      const std::chrono::time_point<ClockT, DurationT> & timeout_time) const;
     SharedFuture share() noexcept;
   };
-
-  struct SharedFutureAndRequestId
+  struct SharedFutureAndRequestId : detail::FutureAndRequestId<SharedFuture>
   {
-    SharedFuture future;
-    int64_t request_id;
-    SharedResponse get() const;
-    bool valid() const;
-    void wait() const;
-    template<class RepT, class RatioT>
-    std::future_status wait_for(
-      const std::chrono::duration<RepT, RatioT> & timeout_duration) const;
-    template<class ClockT, class DurationT>
-    std::future_status wait_until(
-      const std::chrono::time_point<ClockT, DurationT> & timeout_time) const;
   };
 
   FutureAndRequestId async_send_request(SharedRequest request);
