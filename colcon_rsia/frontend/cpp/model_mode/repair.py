@@ -1041,7 +1041,7 @@ def _by_use(name, after, *, unqualified):
 _NUMBER_TYPES = {
     'Eigen::Index': 'std::ptrdiff_t',
     'Eigen::DenseIndex': 'std::ptrdiff_t',
-    # a map element's id, which ids are kept in std::vector<int64_t> with
+    # lanelet2's element ids, which code mixes with std::vector<int64_t>
     'lanelet::Id': 'std::int64_t',
 }
 
