@@ -229,20 +229,19 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
         dirs[:] = sorted(
             d for d in dirs
             if d not in SKIPPED_DIRECTORIES and not d.startswith('.'))
+        # the source's directory, then those between it and the package
+        # ("rule_helper/area.hpp" from rules/src/rule_helper/area.cpp, as a
+        # subdirectory's CMake adds them: target_include_directories(x
+        # src)), then the include directories above
+        arguments = ['-x', 'c++', f'-std={std}']
+        for directory in [root, *_directories_up_to(root, path),
+                          *include_dirs]:
+            arguments += ['-I', directory]
         for file in sorted(files):
-            if not file.endswith(CXX_SOURCE_EXTENSIONS):
-                continue
-            arguments = ['-x', 'c++', f'-std={std}', '-I', root]
-            # "rule_helper/area.hpp" from rules/src/rule_helper/area.cpp:
-            # the directories between the source and the package, which a
-            # subdirectory's CMake adds (target_include_directories(x src))
-            for directory in _directories_up_to(root, path):
-                arguments += ['-I', directory]
-            for directory in include_dirs:
-                arguments += ['-I', directory]
-            entries.append(CompileEntry(
-                file=os.path.join(root, file), directory=path,
-                arguments=arguments))
+            if file.endswith(CXX_SOURCE_EXTENSIONS):
+                entries.append(CompileEntry(
+                    file=os.path.join(root, file), directory=path,
+                    arguments=list(arguments)))
     return entries
 
 

@@ -648,11 +648,14 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
     repairs = set()
     for message, file, line, column in diagnostics:
         text = read_line(file, line) if file else ''
-        if file:
+        # the name the message is about, and the code that follows it
+        quoted = _QUOTED_NAME.search(message)
+        subject = quoted.group(1) if quoted else None
+        if file and subject:
             text, column = _in_macro_arguments(
-                read_line, file, line, text, column, message)
-        after = _after(text, column, message) or \
-            _next_line(read_line, file, line, text, message)
+                read_line, file, line, text, column, subject)
+        after = _after(text, column, subject) or \
+            _next_line(read_line, file, line, text, subject)
         match = _UNDECLARED.match(message)
         if match:
             kind, name = _by_use(match.group(1), after, unqualified=True)
@@ -856,21 +859,23 @@ def _namespace_at(read_line, file, line):
     return '::'.join(name for name in opened if name)
 
 
+# the first quoted name of a message: 'cudaMemcpyHostToDevice' of "use of
+# undeclared identifier 'cudaMemcpyHostToDevice'"
+_QUOTED_NAME = re.compile(r"'(\w+)'")
 # how many lines past its first the arguments of a macro's call may go on
 _MACRO_CALL_LINES = 12
 
 
-def _in_macro_arguments(read_line, file, line, text, column, message):
+def _in_macro_arguments(read_line, file, line, text, column, name):
     """(text, column) of the line that spells the name a message is about.
 
     Of a name in the arguments of a macro's call, clang gives the line the
     call starts on: `CHECK_CUDA_ERROR(cudaMemcpy(` with the name on one of
     the lines that follow, inside the call's parentheses.
     """
-    match = re.search(r"'(\w+)'", message)
-    if not match or re.search(r'\b' + match.group(1) + r'\b', text):
+    spelled = re.compile(r'\b' + name + r'\b')
+    if spelled.search(text):
         return text, column
-    spelled = re.compile(r'\b' + match.group(1) + r'\b')
     depth = text[max(0, column - 1):].count('(') - \
         text[max(0, column - 1):].count(')')
     for number in range(line + 1, line + 1 + _MACRO_CALL_LINES):
@@ -893,12 +898,10 @@ def _qualified(name, text, column):
     return re.sub(r'\s+', '', match.group(1)) + name
 
 
-def _after(text, column, message):
-    """What follows the name the message is about, on its line."""
-    match = re.search(r"'(\w+)'", message)
-    if not text or not match:
+def _after(text, column, name):
+    """What follows the name a message is about, on its line."""
+    if not text or not name:
         return ''
-    name = match.group(1)
     start = max(0, column - 1)
     found = text.find(name, start)
     if found < 0:
@@ -908,16 +911,14 @@ def _after(text, column, message):
     return text[found + len(name):].lstrip()
 
 
-def _next_line(read_line, file, line, text, message):
+def _next_line(read_line, file, line, text, name):
     """What follows the name of a message that ends its line.
 
     `cond ? Qt::ForbiddenCursor` with `: Qt::ArrowCursor` below: what the
     next line starts with tells a value from a type as the rest of the
     name's own line would.
     """
-    match = re.search(r"'(\w+)'", message)
-    if not file or not match or not re.search(
-            r'\b' + match.group(1) + r'\s*$', text):
+    if not file or not name or not re.search(r'\b' + name + r'\s*$', text):
         return ''
     return read_line(file, line + 1).lstrip()
 
