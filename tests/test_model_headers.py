@@ -1442,3 +1442,22 @@ def test_a_constant_read_through_an_object_and_unknown_iterators(tmp_path):
         '  grid_map_like::GridMapIterator back(map);\n'
         '  back--;\n'
         '}\n'))
+
+
+def test_messages_of_a_type_compare_as_generated_messages_do(tmp_path):
+    # rosidl and gencpp give every message == and !=; a state kept to
+    # publish only on change compares the new one with the last
+    _assert_parses_clean(tmp_path, (
+        '#include <memory>\n'
+        '#include <optional>\n'
+        '#include <adapi_like_msgs/msg/mrm_state.hpp>\n'
+        '#include <legacy_msgs/ModeState.h>\n'
+        'using MrmState = adapi_like_msgs::msg::MrmState;\n'
+        'bool changed(const MrmState & now,\n'
+        '             const std::shared_ptr<const MrmState> & last,\n'
+        '             const std::optional<MrmState> & kept,\n'
+        '             const legacy_msgs::ModeState & a,\n'
+        '             const legacy_msgs::ModeStateConstPtr & b)\n'
+        '{\n'
+        '  return now != *last || kept != now || !(a == *b);\n'
+        '}\n'))

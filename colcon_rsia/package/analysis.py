@@ -430,8 +430,21 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     from colcon_rsia.frontend import cpp
     from colcon_rsia.frontend.cpp.model_mode import precompiled
     from colcon_rsia.frontend.cpp.model_mode import repair
+    from colcon_rsia.frontend.cpp.model_mode import source_edits
 
     header = _repair_header_of(entry.arguments)
+    codes = {}
+
+    def read_code(file):
+        # latin-1: one character per byte, as clang counts columns
+        if file not in codes:
+            try:
+                codes[file] = safe_files.read_bytes(file).decode('latin-1')
+            except OSError:
+                codes[file] = None
+        return codes[file]
+    # {file: (its text with the repair header's edits, where they inserted)}
+    edited = {}
     pch = precompiled.precompiled_header(
         precompiled_dir, entry.file, entry.arguments, resource_dir) \
         if precompiled_dir and header is not None else None
@@ -440,10 +453,14 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         return cpp.parse(
             index, file=entry.file, arguments=arguments,
             resource_dir=resource_dir, working_directory=entry.directory,
-            unsaved_files=list(unsaved_files))
+            unsaved_files=list(unsaved_files) + [
+                (file, text) for file, (text, _) in edited.items()])
 
     def parse():
-        nonlocal pch
+        nonlocal pch, edited
+        if header is not None:
+            edited = source_edits.edited_files(
+                repair.read_repairs(header), read_code)
         if pch is None:
             return parse_with(entry.arguments)
         try:
@@ -492,9 +509,11 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
 
     def own_errors(tu):
         # errors elsewhere hide none of the package's calls, and
-        # declarations cannot fix them
-        return [e for e in cpp.error_diagnostics(tu)
-                if e[1] and _user_file(e[1])]
+        # declarations cannot fix them; columns as on disk
+        return [(message, file, line, source_edits.disk_column(
+                    edited.get(file, (None, {}))[1], line, column))
+                for message, file, line, column in cpp.error_diagnostics(tu)
+                if file and _user_file(file)]
     errors = own_errors(tu)
     best = (len(errors), 0, tu, _read_text(header))
     rounds = 0
@@ -511,6 +530,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
                 for f in sorted(own_files))),
             stand_in=lambda relative: os.path.isfile(
                 os.path.join(stub_dir, relative)))
+        repairs |= source_edits.edits_from_diagnostics(errors, read_code)
         if not repair.add_repairs(header, relative, repairs):
             break
         if any(kind == repair.HEADER for kind, _ in repairs):

@@ -28,6 +28,7 @@ import re
 import threading
 
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.model_mode.source_edits import EDIT_KINDS
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 from colcon_rsia.frontend.cpp.model_mode.source_names import \
     end_of_template_arguments
@@ -256,6 +257,8 @@ _shared_lock = threading.Lock()
 
 def _shareable(repair):
     kind, name = repair
+    if kind in EDIT_KINDS:
+        return False  # a place in one file, which other units may not include
     # (a member of a qualified class: with its class, which is shared too)
     return kind in INCLUDES or kind.startswith('macro-') or (
         '::' in name and (kind not in MEMBER_KINDS or
@@ -1069,6 +1072,8 @@ def _render(repairs, source):
         trailer = ''  # after the declaration, outside its namespaces
         if kind in MEMBER_KINDS:
             continue  # in its type's declaration
+        if kind in EDIT_KINDS:
+            continue  # made to the code in memory (see source_edits.py)
         if kind in INCLUDES:
             lines.append(f'#include <{name}>')
             continue

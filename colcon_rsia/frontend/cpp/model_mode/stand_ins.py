@@ -203,6 +203,9 @@ def ros2_interface_text(package, kind, file_name, names):
             '  // (deprecated in rosidl, as in ROS 1)',
             '  using Ptr = SharedPtr;',
             '  using ConstPtr = ConstSharedPtr;',
+            '  // rosidl compares two messages of a type field by field',
+            f'  bool operator==(const {struct_name}_&) const;',
+            f'  bool operator!=(const {struct_name}_&) const;',
             '};',
             f'using {struct_name} = {struct_name}_<std::allocator<void>>;', '']
     for name in names:
@@ -270,6 +273,9 @@ def _message_stub(package, name, *, includes=(), typedefs=(), kind='message',
         f'  typedef boost::shared_ptr<{name}_<ContainerAllocator>> Ptr;',
         f'  typedef boost::shared_ptr<{name}_<ContainerAllocator> const> '
         'ConstPtr;',
+        '  // gencpp compares two messages of a type field by field',
+        f'  bool operator==(const {name}_&) const;',
+        f'  bool operator!=(const {name}_&) const;',
         '};',
         '',
         f'typedef ::{package}::{name}_<std::allocator<void>> {name};',

@@ -435,6 +435,46 @@ struct AnyValue : Any
 // `std::cout << msg.x << std::endl`
 Any operator<<(const Any&, std::ostream& (*)(std::ostream&));
 
+// The names of a structured binding of a catch-all (`const auto & [id,
+// path] = any`), which C++ decomposes into no names. source_edits.py
+// writes its initializer as `Bound<2>() <<= any` (a compound assignment:
+// the whole expression is its operand, and no catch-all overloads it on a
+// temporary), and a range-for's range as `BoundEach<2>() <<= any`: as many
+// catch-all values as there are names.
+template <unsigned long RsiaN>
+struct Bound
+{
+  template <unsigned long RsiaI>
+  AnyValue& get() const;
+  template <class RsiaV>
+  Bound operator<<=(RsiaV&&) const;
+};
+template <unsigned long RsiaN>
+struct BoundEach
+{
+  Bound<RsiaN>* begin() const;
+  Bound<RsiaN>* end() const;
+  template <class RsiaV>
+  BoundEach operator<<=(RsiaV&&) const;
+};
+}  // namespace rsia_model
+
+namespace std
+{
+template <unsigned long RsiaN>
+struct tuple_size<::rsia_model::Bound<RsiaN>> : integral_constant<size_t, RsiaN>
+{
+};
+template <size_t RsiaI, unsigned long RsiaN>
+struct tuple_element<RsiaI, ::rsia_model::Bound<RsiaN>>
+{
+  using type = ::rsia_model::AnyValue;
+};
+}  // namespace std
+
+namespace rsia_model
+{
+
 // The base of every generated message stand-in.
 struct Fields
 {

@@ -1,0 +1,202 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""In-memory edits of a unit's code, for errors no declaration settles."""
+
+import os
+
+from colcon_rsia.frontend.cpp.model_mode import source_edits
+from colcon_rsia.frontend.cpp.model_mode.source_edits import AUTO_POINTER
+from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
+from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
+from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
+from test_repair import _analyze_one_unit
+
+MISMATCH = ("return type 'double' must match previous return type 'Any' "
+            'when lambda expression has unspecified explicit return type')
+MISMATCH_OF_ALIASES = (
+    "return type 'Point' (aka 'Point_<std::allocator<void>>') must match "
+    "previous return type 'value_type' (aka 'double') when lambda expression "
+    'has unspecified explicit return type')
+
+CODE = """\
+double f(int i)
+{
+  const double a = [&]() {
+    if (i > 0) {
+      return 1.0;  // a { brace } in a comment
+    }
+    return g(i);
+  }();
+  auto b = [&] { return "}"[0] == 0 ? g(i) : 2.0; };
+  int v[2] = {1, 2};
+  if (i) {
+    return v[0];
+  }
+  auto * const row = img.ptr<float>(i);
+  constexpr double lowest = kmph2mps(10);
+  return a;
+}
+struct Limits {
+  static constexpr float max_angle = deg2rad(40.f);
+};
+"""
+
+
+def _edits(diagnostics, code=CODE):
+    return source_edits.edits_from_diagnostics(
+        [(m, 'a.cpp', line, column) for m, line, column in diagnostics],
+        lambda file: code)
+
+
+def _edited(edits, code=CODE):
+    [(text, insertions)] = source_edits.edited_files(
+        edits, lambda file: code).values()
+    return text.decode('latin-1'), insertions
+
+
+def test_a_lambda_with_mixed_returns_returns_a_catch_all_value():
+    # the returns in line 7 (after an if-block in the lambda) and line 9
+    # (a lambda without parameters, a brace in a string before it)
+    edits = _edits([(MISMATCH, 7, 5), (MISMATCH_OF_ALIASES, 9, 18)])
+    assert edits == {(LAMBDA_RESULT, 'a.cpp:3:26'),
+                     (LAMBDA_RESULT, 'a.cpp:9:16')}
+    text, insertions = _edited(edits)
+    lines = text.split('\n')
+    assert lines[2] == \
+        '  const double a = [&]() -> ::rsia_model::AnyValue {'
+    assert lines[8].startswith(
+        '  auto b = [&] () -> ::rsia_model::AnyValue { return "}"[0]')
+    # every other line as it was, and a column after an insertion maps
+    # back to the file's
+    assert len(lines) == len(CODE.split('\n'))
+    assert [line for i, line in enumerate(lines) if i not in (2, 8)] == \
+        [line for i, line in enumerate(CODE.split('\n')) if i not in (2, 8)]
+    assert source_edits.disk_column(insertions, 9, 16 + 29) == 16
+    assert source_edits.disk_column(insertions, 9, 5) == 5
+    assert source_edits.disk_column(insertions, 3, 5) == 5
+
+
+def test_a_return_outside_any_lambda_is_not_edited():
+    # the return of line 12 is the function's own: no lambda around it
+    assert _edits([(MISMATCH, 12, 5)]) == set()
+
+
+def test_a_pointer_auto_and_constexpr_variables_take_a_catch_all():
+    edits = _edits([
+        ("variable 'row' with type 'auto *const' has incompatible "
+         "initializer of type '::rsia_model::Any'", 14, 16),
+        ("constexpr variable 'lowest' must be initialized by a constant "
+         'expression', 15, 20),
+        ("constexpr variable 'max_angle' must be initialized by a "
+         'constant expression', 19, 26)])
+    assert edits == {(AUTO_POINTER, 'a.cpp:14:8'), (CONSTEXPR, 'a.cpp:15:3'),
+                     (CONSTEXPR, 'a.cpp:19:10')}
+    text, insertions = _edited(edits)
+    lines = text.split('\n')
+    assert lines[13] == '  auto   const row = img.ptr<float>(i);'
+    assert lines[14] == '  const     double lowest = kmph2mps(10);'
+    # a static member keeps its initializer as an inline variable
+    assert lines[18] == '  static inline    float max_angle = deg2rad(40.f);'
+    assert insertions == {}
+
+
+def test_structured_bindings_of_a_catch_all_get_as_many_values():
+    code = (
+        'void f(const Any & any)\n'
+        '{\n'
+        '  const auto & [id, path] = any.at(0) == 1 ? any : any;\n'
+        '  for (auto && [a, b, c] : any) {}\n'
+        '  auto [x, y]{any};\n'
+        '}\n')
+    edits = _edits([
+        ("type 'const Any' decomposes into 0 elements, but 2 names were "
+         'provided', 3, 16),
+        ("type 'const AnyElement' decomposes into 0 elements, but 3 names "
+         'were provided', 4, 16),
+        ("type 'Any' decomposes into 0 elements, but 2 names were "
+         'provided', 5, 8)], code)
+    assert edits == {(BINDING, 'a.cpp:3:16'), (BINDING, 'a.cpp:4:16'),
+                     (BINDING, 'a.cpp:5:8')}
+    text, insertions = _edited(edits, code)
+    assert text.split('\n')[2:5] == [
+        '  const auto & [id, path] = ::rsia_model::Bound<2>() <<=  '
+        'any.at(0) == 1 ? any : any;',
+        '  for (auto && [a, b, c] : ::rsia_model::BoundEach<3>() <<=  any) {}',
+        '  auto [x, y]{ ::rsia_model::Bound<2>() <<= any};']
+    assert source_edits.disk_column(insertions, 4, 62) == 28
+
+
+def test_an_edit_whose_code_changed_is_dropped():
+    edits = {(LAMBDA_RESULT, 'a.cpp:3:26'), (CONSTEXPR, 'a.cpp:15:3')}
+    changed = CODE.replace('  constexpr double lowest', '  double lowest')
+    text, _ = _edited(edits, changed)
+    assert 'double lowest = kmph2mps(10);' in text
+    assert text.count('AnyValue') == 1
+    # nothing left to edit: the file is read as it is
+    assert source_edits.edited_files(
+        {(CONSTEXPR, 'a.cpp:15:3')}, lambda file: changed) == {}
+
+
+UNIT = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <acme_geometry/units.hpp>
+
+class Limiter : public rclcpp::Node
+{
+public:
+  static constexpr float max_angle = acme_geometry::deg2rad(40.f);
+  Limiter() : Node("limiter")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("limit", 1);
+    sub_ = create_subscription<std_msgs::msg::Float64>(
+      "speed", 1, [this](const std_msgs::msg::Float64 & m) { onSpeed(m); });
+  }
+
+private:
+  void onSpeed(const std_msgs::msg::Float64 & m)
+  {
+    constexpr double lowest = acme_geometry::kmph2mps(10);
+    const double limit = [&]() {
+      if (m.data > lowest) return acme_geometry::clamp(m.data);
+      return 0.0;
+    }();
+    auto pick = [&] {
+      if (limit > 1.0) {
+        return 2.0;
+      }
+      return acme_geometry::clamp(limit);
+    };
+    const auto * row = image_.ptr<float>(0);
+    const auto & [low, high] = acme_geometry::bounds(limit);
+    for (const auto & [name, offset] : image_.channels()) {}
+    std_msgs::msg::Float64 out;
+    out.data = limit + pick() + row[0] + max_angle + low;
+    pub_->publish(out);
+  }
+  acme_geometry::Image image_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::Float64>::SharedPtr sub_;
+};
+"""
+
+
+def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
+    summary, unit = _analyze_one_unit(tmp_path, UNIT)
+    assert unit.package_errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    [publisher] = node.publishers
+    assert publisher.topic == 'limit'
+    assert publisher.label == 'dependent'
+    # at its line in the file, which stays as it was on disk
+    assert publisher.publish_sites == ['src/detector_node.cpp:35']
+    source = tmp_path / 'src' / 'acme_vision' / 'src' / 'detector_node.cpp'
+    assert source.read_text() == UNIT
+    [header] = [os.path.join(root, name)
+                for root, _, names in os.walk(tmp_path / 'build')
+                for name in names if '/repair' in root and
+                name.startswith('detector_node')]
+    with open(header) as h:
+        kinds = [line.split()[2] for line in h if line.startswith('// repair')]
+    assert sorted(kinds) == [AUTO_POINTER, BINDING, BINDING, CONSTEXPR,
+                             CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT]
