@@ -187,6 +187,17 @@ def _lines(text):
      {('template:tv', 'Filter')}),
     ("unknown template name 'Buffer'",
      'Buffer<std::vector<int>, T> b;', 1, {('template', 'Buffer')}),
+    # called with template arguments: a lowerCamelCase name is a function
+    # template, a lower-case one may be a class (boost::optional<T>(x))
+    ("no template named 'convertToPath' in namespace 'motion_utils'",
+     'out = motion_utils::convertToPath<Path>(path);', 21,
+     {('function', 'motion_utils::convertToPath')}),
+    ("no template named 'convertToPoints' in namespace 'motion_utils'",
+     'auto points = motion_utils::convertToPoints<', 29,
+     {('function', 'motion_utils::convertToPoints')}),
+    ("no template named 'optional' in namespace 'boost'",
+     'return boost::optional<int>(x);', 15,
+     {('template', 'boost::optional')}),
     ("no member named 'Identity' in 'Eigen::Matrix<double, 3, 3>'",
      'auto m = Eigen::Matrix<double, 3, 3>::Identity();', 39,
      {('member', 'Eigen::Matrix::Identity')}),

@@ -5,8 +5,12 @@
 import os
 
 from colcon_rsia.frontend.cpp.model_mode import source_edits
+from colcon_rsia.frontend.cpp.model_mode.source_edits import ADDRESS
+from colcon_rsia.frontend.cpp.model_mode.source_edits import AS
+from colcon_rsia.frontend.cpp.model_mode.source_edits import ASSIGNED
 from colcon_rsia.frontend.cpp.model_mode.source_edits import AUTO_POINTER
 from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
+from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
 from test_repair import _analyze_one_unit
@@ -126,6 +130,111 @@ def test_structured_bindings_of_a_catch_all_get_as_many_values():
     assert source_edits.disk_column(insertions, 4, 62) == 28
 
 
+def test_the_address_of_a_catch_all_is_the_catch_all():
+    code = ('  fill(&(cell.layout), &out);\n'
+            '  unsigned char * data = &msg.data[0];\n')
+    message = ("cannot initialize a {} of type '{}' with an rvalue of type "
+               "'{}'")
+    edits = _edits([
+        (message.format('parameter', 'std::vector<int> *', 'Any *'), 1, 8),
+        (message.format('variable', 'unsigned char *',
+                        '::rsia_model::Any *'), 2, 19)], code)
+    assert edits == {(ADDRESS, 'a.cpp:1:8'), (ADDRESS, 'a.cpp:2:26')}
+    text, _ = _edited(edits, code)
+    assert text == ('  fill( (cell.layout), &out);\n'
+                    '  unsigned char * data =  msg.data[0];\n')
+
+
+def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
+    code = ('  if (is_timeout(msg.header.stamp, 1.0) ||\n'
+            '      checker.willLeave({lane}, path)) {}\n')
+    time = 'const builtin_interfaces::msg::Time_<std::allocator<void> > &'
+    types = {('h.hpp', 3, 6): None,  # a template
+             ('h.hpp', 4, 6): [time, 'double'],
+             ('h.hpp', 8, 6): ['(lambda at h.hpp:8:20)', 'const Path &'],
+             ('h.hpp', 9, 6): ['const std::vector<int> &', 'const Path &']}
+    candidate = 'candidate function'
+    edits = source_edits.edits_from_notes([
+        ("call to 'is_timeout' is ambiguous", 'a.cpp', 1, 7,
+         [(candidate, 'h.hpp', 3, 6), (candidate, 'h.hpp', 4, 6)]),
+        ("call to member function 'willLeave' is ambiguous", 'a.cpp', 2, 15,
+         [(candidate, 'h.hpp', 8, 6), (candidate, 'h.hpp', 9, 6)]),
+        ("no matching function for call to 'f'", 'a.cpp', 1, 7,
+         [(candidate, 'h.hpp', 9, 6)])], lambda file: code,
+        parameter_types=lambda *at: types.get(at),
+        parameter_type=lambda *at: None)
+    assert {name for _, name in edits} == {'a.cpp:1:7', 'a.cpp:2:15'}
+    text, insertions = _edited(edits, code)
+    assert text.split('\n')[:2] == [
+        f'  if (is_timeout(static_cast<{time}>(msg.header.stamp), '
+        'static_cast<double>(1.0)) ||',
+        # a braced argument has no type to cast
+        '      checker.willLeave({lane}, static_cast<const Path &>(path))) {}']
+    assert source_edits.disk_column(insertions, 2, 59) == 33
+
+
+def test_an_argument_for_a_class_parameter_is_made_of_that_class():
+    code = ('  return correct(params_.get(), shape, pose);\n'
+            '  scale(2.0, gains(x, y));\n'
+            '  Eigen::MatrixXf & m = maps[layer], n;\n'
+            '  return points;\n'
+            '  const Screen * screen_info = DefaultScreenOfDisplay(d);\n')
+    params = 'const acme::Params &'
+    edits = source_edits.edits_from_notes([
+        # at the argument, its parameter in a note
+        ("no viable conversion from 'Any' to 'const Params'", 'a.cpp', 1, 18,
+         [("passing argument to parameter 'param' here", 'h.hpp', 5, 30)]),
+        # at the callee, the argument in a candidate's note
+        ("no matching function for call to 'scale'", 'a.cpp', 2, 3,
+         [('candidate function not viable: requires 3 arguments, but 2 were '
+           'provided', 'h.hpp', 7, 8),
+          ("candidate function not viable: no known conversion from 'Any' to "
+           "'const Params' for 2nd argument", 'h.hpp', 8, 8)]),
+        # no parameter: the class as the code names it
+        # at the variable an initializer initialises
+        ("no viable conversion from 'Any' to 'Eigen::MatrixXf'", 'a.cpp', 3,
+         21, []),
+        ("no viable conversion from returned value of type 'const Any' to "
+         "function return type 'std::optional<Path>'", 'a.cpp', 4, 10, []),
+        # a class a repair declared (Xlib's macro taken for one)
+        ("no viable conversion from 'DefaultScreenOfDisplay' to "
+         "'const Screen *'", 'a.cpp', 5, 18, [])],
+        lambda file: code,
+        parameter_types=lambda *at: {
+            ('h.hpp', 7, 8): ['double', 'double', 'double'],
+            ('h.hpp', 8, 8): ['double', params]}.get(at),
+        parameter_type=lambda *at: {('h.hpp', 5, 30): params}.get(at))
+    assert {name for _, name in edits} == {
+        'a.cpp:1:18', 'a.cpp:2:14', 'a.cpp:3:25', 'a.cpp:4:10', 'a.cpp:5:32'}
+    text, _ = _edited(edits, code)
+    assert text == ('  return correct(::rsia_model::as<const acme::Params>'
+                    '(params_.get()), shape, pose);\n'
+                    '  scale(2.0, ::rsia_model::as<const acme::Params>'
+                    '(gains(x, y)));\n'
+                    '  Eigen::MatrixXf & m = ::rsia_model::as<Eigen::MatrixXf>'
+                    '(maps[layer]), n;\n'
+                    '  return ::rsia_model::as<std::optional<Path>>(points);\n'
+                    '  const Screen * screen_info = ::rsia_model::as<const '
+                    'Screen *>(DefaultScreenOfDisplay(d));\n')
+
+
+def test_a_value_assigned_is_made_of_its_targets_type():
+    code = ('  debug.obstacles[0] = params->polygons;\n'
+            '  if (x) y = z;\n'
+            '  a == b;\n')
+    message = "no viable overloaded '='"
+    edits = source_edits.edits_from_notes(
+        [(message, 'a.cpp', 1, 22, []), (message, 'a.cpp', 2, 12, []),
+         (message, 'a.cpp', 3, 5, [])], lambda file: code,
+        parameter_types=lambda *at: None, parameter_type=lambda *at: None)
+    assert edits == {(ASSIGNED, 'a.cpp:1:22')}
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[0] == (
+        '  debug.obstacles[0] = '
+        '::rsia_model::assigned_as<decltype(debug.obstacles[0])>'
+        '(params->polygons);')
+
+
 def test_an_edit_whose_code_changed_is_dropped():
     edits = {(LAMBDA_RESULT, 'a.cpp:3:26'), (CONSTEXPR, 'a.cpp:15:3')}
     changed = CODE.replace('  constexpr double lowest', '  double lowest')
@@ -141,6 +250,21 @@ UNIT = """\
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/float64.hpp>
 #include <acme_geometry/units.hpp>
+#include <geometry_msgs/msg/pose.hpp>
+#include <geometry_msgs/msg/quaternion.hpp>
+#include <string>
+#include <vector>
+
+struct Store
+{
+  void keep(std::vector<int> * indices);
+  void show(const geometry_msgs::msg::Quaternion & orientation, int id = 0);
+  void show(const geometry_msgs::msg::Pose & pose, int id = 0);
+};
+double yaw_of(const geometry_msgs::msg::Quaternion & orientation);
+double yaw_of(const geometry_msgs::msg::Pose & pose);
+struct Gains { double low, high; };
+double corrected(const Gains & gains, double value);
 
 class Limiter : public rclcpp::Node
 {
@@ -170,11 +294,23 @@ private:
     const auto * row = image_.ptr<float>(0);
     const auto & [low, high] = acme_geometry::bounds(limit);
     for (const auto & [name, offset] : image_.channels()) {}
-    std_msgs::msg::Float64 out;
-    out.data = limit + pick() + row[0] + max_angle + low;
+    store_.keep(&image_.indices);
+    store_.show(m.orientation, 1);
+    const double yaw = yaw_of(m.pose);
+    const double fixed = corrected(image_.gains(), yaw);
+    acme_geometry::Polygons polygons;
+    std::unique_ptr<std::vector<double>> areas;
+    areas = polygons;
+    std::vector<int> * kept = &(image_.kept);
+    const std::string label{acme_geometry::name_of(limit)};
+    image_.points = {m.data, limit};
+    std_msgs::msg::Float64 out =
+      acme_geometry::convertTo<std_msgs::msg::Float64>(limit);
+    out.data = limit + pick() + row[0] + max_angle + low + fixed;
     pub_->publish(out);
   }
   acme_geometry::Image image_;
+  Store store_;
   rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
   rclcpp::Subscription<std_msgs::msg::Float64>::SharedPtr sub_;
 };
@@ -189,7 +325,7 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     assert publisher.topic == 'limit'
     assert publisher.label == 'dependent'
     # at its line in the file, which stays as it was on disk
-    assert publisher.publish_sites == ['src/detector_node.cpp:35']
+    assert publisher.publish_sites == ['src/detector_node.cpp:61']
     source = tmp_path / 'src' / 'acme_vision' / 'src' / 'detector_node.cpp'
     assert source.read_text() == UNIT
     [header] = [os.path.join(root, name)
@@ -198,5 +334,6 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
                 name.startswith('detector_node')]
     with open(header) as h:
         kinds = [line.split()[2] for line in h if line.startswith('// repair')]
-    assert sorted(kinds) == [AUTO_POINTER, BINDING, BINDING, CONSTEXPR,
-                             CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT]
+    assert sorted(k.partition(':')[0] for k in kinds) == [
+        ADDRESS, ADDRESS, AS, ASSIGNED, AUTO_POINTER, BINDING, BINDING,
+        CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT]

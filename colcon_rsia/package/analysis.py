@@ -431,6 +431,9 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     from colcon_rsia.frontend.cpp.model_mode import precompiled
     from colcon_rsia.frontend.cpp.model_mode import repair
     from colcon_rsia.frontend.cpp.model_mode import source_edits
+    from colcon_rsia.frontend.cpp.parse import errors_with_notes
+    from colcon_rsia.frontend.cpp.parse import parameter_type
+    from colcon_rsia.frontend.cpp.parse import parameter_types
 
     header = _repair_header_of(entry.arguments)
     codes = {}
@@ -507,11 +510,14 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
             not _inside(file, MODEL_HEADERS_DIR) and \
             not file.startswith(('/usr/', '/opt/'))
 
+    def disk_column(file, line, column):
+        return source_edits.disk_column(
+            edited.get(file, (None, {}))[1], line, column)
+
     def own_errors(tu):
         # errors elsewhere hide none of the package's calls, and
         # declarations cannot fix them; columns as on disk
-        return [(message, file, line, source_edits.disk_column(
-                    edited.get(file, (None, {}))[1], line, column))
+        return [(message, file, line, disk_column(file, line, column))
                 for message, file, line, column in cpp.error_diagnostics(tu)
                 if file and _user_file(file)]
     errors = own_errors(tu)
@@ -531,6 +537,15 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
             stand_in=lambda relative: os.path.isfile(
                 os.path.join(stub_dir, relative)))
         repairs |= source_edits.edits_from_diagnostics(errors, read_code)
+        # (edits that need the parse's declarations: the parameters a
+        # call passes its arguments to)
+        repairs |= source_edits.edits_from_notes(
+            [(message, file, line, disk_column(file, line, column), notes)
+             for message, file, line, column, notes
+             in errors_with_notes(tu) if file and _user_file(file)],
+            read_code,
+            parameter_types=lambda *at: parameter_types(tu, *at),
+            parameter_type=lambda *at: parameter_type(tu, *at))
         if not repair.add_repairs(header, relative, repairs):
             break
         if any(kind == repair.HEADER for kind, _ in repairs):

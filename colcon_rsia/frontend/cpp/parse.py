@@ -2,6 +2,8 @@
 # Licensed under the Apache License, Version 2.0
 """Parsing a C++ translation unit with libclang, and its parse errors."""
 
+import ctypes
+
 import clang.cindex as ci
 
 # incomplete: we never need the TU's template instantiations at its end
@@ -43,10 +45,68 @@ def parse_diagnostics(tu):
 
 def error_diagnostics(tu):
     """(message, file, line, column) of every error of a parsed unit."""
+    return [error[:4] for error in errors_with_notes(tu)]
+
+
+def errors_with_notes(tu):
+    """(message, file, line, column, notes) of every error.
+
+    The notes are the (message, file, line, column) of the error's notes
+    that have a place (the overloads of an ambiguous call, the parameter
+    an argument is passed to).
+    """
     errors = []
     for diag in tu.diagnostics:
         if diag.severity >= ci.Diagnostic.Error:
             loc = diag.location
+            notes = [
+                (note.spelling, note.location.file.name, note.location.line,
+                 note.location.column)
+                for note in diag.children if note.location.file]
             errors.append((diag.spelling, loc.file.name if loc.file else None,
-                           loc.line, loc.column))
+                           loc.line, loc.column, notes))
     return errors
+
+
+_FUNCTIONS = (ci.CursorKind.FUNCTION_DECL, ci.CursorKind.CXX_METHOD,
+              ci.CursorKind.CONSTRUCTOR)
+
+
+def parameter_types(tu, file, line, column):
+    """The canonical parameter types of the function declared there.
+
+    None when no function (a template, for one) is declared there, or its
+    declaration is invalid (a parameter of an undeclared type reads `int`).
+    """
+    cursor = _cursor_at(tu, file, line, column)
+    if cursor is None or cursor.kind not in _FUNCTIONS or _invalid(cursor):
+        return None
+    return [argument.type.get_canonical().spelling
+            for argument in cursor.get_arguments()]
+
+
+def parameter_type(tu, file, line, column):
+    """The canonical type of the parameter declared there, or None."""
+    cursor = _cursor_at(tu, file, line, column)
+    if cursor is None or cursor.kind != ci.CursorKind.PARM_DECL or \
+            _invalid(cursor):
+        return None
+    return cursor.type.get_canonical().spelling
+
+
+def _cursor_at(tu, file, line, column):
+    return ci.Cursor.from_location(tu, tu.get_location(file, (line, column)))
+
+
+def _invalid(cursor):
+    """Whether clang found the declaration invalid (cindex lacks the call)."""
+    global _is_invalid_declaration
+    if _is_invalid_declaration is None:
+        function = ci.conf.lib.clang_isInvalidDeclaration
+        function.argtypes = [ci.Cursor]
+        function.restype = ctypes.c_uint
+        _is_invalid_declaration = function
+    return bool(_is_invalid_declaration(cursor))
+
+
+_is_invalid_declaration = None

@@ -28,7 +28,7 @@ import re
 import threading
 
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
-from colcon_rsia.frontend.cpp.model_mode.source_edits import EDIT_KINDS
+from colcon_rsia.frontend.cpp.model_mode.source_edits import is_edit
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 from colcon_rsia.frontend.cpp.model_mode.source_names import \
     end_of_template_arguments
@@ -100,6 +100,7 @@ _NAMESPACE_ALIAS = re.compile(
     r'\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)')
 _ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]*$')
 _CAMEL = re.compile(r'^_?[A-Z]')
+_LOWER_CAMEL = re.compile(r'^[a-z][a-z0-9]*[A-Z]\w*$')
 _KEYWORDS = frozenset("""
     alignas alignof asm auto bool break case catch char class const constexpr
     continue decltype default delete do double else enum explicit export
@@ -257,7 +258,7 @@ _shared_lock = threading.Lock()
 
 def _shareable(repair):
     kind, name = repair
-    if kind in EDIT_KINDS:
+    if is_edit(kind):
         return False  # a place in one file, which other units may not include
     # (a member of a qualified class: with its class, which is shared too)
     return kind in INCLUDES or kind.startswith('macro-') or (
@@ -751,9 +752,11 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 # `bg::correct(polygon);` read as a declaration of
                 # `polygon`: a lower-case name called is a function
                 kind = FUNCTION
+            elif what in ('type', 'class', 'template') and \
+                    after.startswith('<'):
+                kind = _template_use(name, after, unqualified=False)
             elif what in ('type', 'class'):
-                kind = template_kind(after) if after.startswith('<') \
-                    else TYPE
+                kind = TYPE
             elif what == 'template':
                 kind = template_kind(after)
             else:
@@ -1017,12 +1020,7 @@ def _by_use(name, after, *, unqualified):
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')):
-        end = end_of_template_arguments(after)
-        if unqualified and not _CAMEL.match(name) and end is not None and \
-                _CALL.match(after, end):
-            # qobject_cast<QPushButton *>(sender()): a function template
-            return FUNCTION, name
-        return template_kind(after), name
+        return _template_use(name, after, unqualified=unqualified), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
@@ -1038,6 +1036,20 @@ def _by_use(name, after, *, unqualified):
         # followed by a name (`ns::archive ar(...)`)
         return TYPE, name
     return OBJECT, name
+
+
+def _template_use(name, after, *, unqualified):
+    """The kind of a name its line follows with template arguments."""
+    end = end_of_template_arguments(after)
+    called = end is not None and _CALL.match(after, end)
+    # (arguments on the lines after: `convertToTrajectoryPoints<` ends it)
+    if unqualified and not _CAMEL.match(name) and called or \
+            _LOWER_CAMEL.match(name) and (called or after.strip() == '<'):
+        # qobject_cast<QPushButton *>(sender()), also qualified in
+        # lowerCamelCase (motion_utils::convertToPath<P>(path)): a
+        # function template; boost::optional<T>(x) is a class
+        return FUNCTION
+    return template_kind(after)
 
 
 # types of libraries the model lacks that are numbers: a loop counts with
@@ -1072,7 +1084,7 @@ def _render(repairs, source):
         trailer = ''  # after the declaration, outside its namespaces
         if kind in MEMBER_KINDS:
             continue  # in its type's declaration
-        if kind in EDIT_KINDS:
+        if is_edit(kind):
             continue  # made to the code in memory (see source_edits.py)
         if kind in INCLUDES:
             lines.append(f'#include <{name}>')

@@ -11,15 +11,28 @@ where C++ asks for one exact type:
 - ``constexpr double v = deg2rad(40.0)``, where the repaired function
   cannot be constant;
 - ``const auto & [id, path] = any``, where the catch-all decomposes into no
-  names.
+  names;
+- ``f(&msg.indices)`` for a ``std::vector<int> *``, where the address of a
+  catch-all is an ``rsia_model::Any *``;
+- ``getRPY(pose.orientation)``, where a catch-all converts to the parameter
+  of every overload alike and the call is ambiguous;
+- ``correct(params_.get())`` for a ``const Params &``, a class of the
+  package that no catch-all converts to, and assignments of the classes a
+  repair declared to real ones (``obstacles = constraints.polygons``).
 
 The real build has the real types and none of these errors. So the unit is
 parsed again with the line edited in memory (libclang's unsaved files,
 never on disk): the lambda returns an ``rsia_model::AnyValue``, the
 ``auto *`` becomes an ``auto``, the ``constexpr`` a ``const``, the binding's
-initializer becomes a value of as many names (see message.h's ``Bound``).
-An edit changes the text of one line only, so every fact keeps its file
-and line.
+initializer becomes a value of as many names (see message.h's ``Bound``),
+the ``&`` goes (the catch-all converts to any pointer), the arguments of
+the ambiguous call are cast to the parameters of its first candidate that
+is no template, spelled as clang spells them canonically so that any
+scope can name them (the real build may take another overload; the call
+and its arguments are there for the facts either way), an argument
+passed to a class parameter becomes ``rsia_model::as<Params>(arg)``, the
+value assigned ``rsia_model::assigned_as<decltype(target)>(value)``. An edit never
+adds or removes a line break, so every fact keeps its file and line.
 
 An edit is kept in the unit's repair header like a declaration, as
 ``(kind, "file:line:column")`` with the position in the file as it is on
@@ -28,15 +41,29 @@ the file changed, an edit whose text is no longer there is dropped.
 """
 
 import re
+from urllib.parse import quote
+from urllib.parse import unquote
 
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
+from colcon_rsia.frontend.cpp.model_mode.source_names import \
+    end_of_template_arguments
 
 # the kinds of edit, as repair headers name them
 LAMBDA_RESULT = 'edit-lambda-result'  # `-> AnyValue` before a lambda's body
 AUTO_POINTER = 'edit-auto-pointer'    # the `*` of `auto *p` blanked
 CONSTEXPR = 'edit-constexpr'          # `constexpr` made `const`
 BINDING = 'edit-binding'              # `[a, b] = Bound<2>() <<= any`
-EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING)
+ADDRESS = 'edit-address'              # the `&` of `&any` blanked
+# `f(static_cast<T>(a))`: a call's arguments cast to one overload's
+# parameters, their types in the kind (`edit-cast:<T1>;<T2>`, quoted)
+CAST = 'edit-cast'
+# `as<T>(a)`: an argument made the parameter's class, the class in the
+# kind (`edit-as:<T>`, quoted)
+AS = 'edit-as'
+# `target = assigned_as<decltype(target)>(value)`, at the `=`
+ASSIGNED = 'edit-assigned'
+EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS, CAST,
+              AS, ASSIGNED)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -52,6 +79,41 @@ _CONSTEXPR_ERROR = re.compile(
 _BINDING_ERROR = re.compile(
     r"^type '.*' decomposes into \d+ elements?, but \d+ names were "
     r'provided$|^cannot decompose ')
+_ADDRESS_ERROR = re.compile(
+    r"^cannot initialize a (?:parameter|variable) of type '.*\*' with an "
+    r"rvalue of type '(?:::)?(?:rsia_model::)?Any \*'$")
+# from a catch-all, or from a class a repair or stand-in declared (the
+# real build converts it, or it would not build); the class as the message
+# spells it: where the code names it
+_NO_CONVERSION = re.compile(
+    r"^no viable conversion from (?:returned value of type )?'[^']*'"
+    r"(?: \(aka '[^']*'\))? to (?:function return type )?'([^']*)'"
+    r"(?: \(aka '[^']*'\))?$")
+_NO_MATCH = re.compile(
+    r"^no matching (?:member )?function for call to '.*'$|"
+    r'^no matching constructor for initialization of ')
+# a candidate's note that names the argument the model's types cannot
+# make the parameter's
+_NOT_CONVERTED = re.compile(
+    r'^candidate (?:function|constructor) not viable: no known conversion '
+    r"from '.*' to '.*' for (\d+)(?:st|nd|rd|th) argument")
+_NO_ASSIGNMENT = re.compile(r"^no viable overloaded '='$")
+# what an assignment's target may be: a name, members, subscripts, getters
+_TARGET = re.compile(
+    r'^\*?\s*[A-Za-z_]\w*(?:\s*(?:\.|->|::)\s*[A-Za-z_]\w*|'
+    r'\s*\[[^\[\];]*\]|\s*\(\s*\))*$')
+_AMBIGUOUS_CALL = re.compile(
+    r"^call to (?:member function |constructor of )?'.*' is ambiguous$")
+# the callee of a call, from where clang reports it: a (qualified) name,
+# its template arguments after it
+_CALLEE = re.compile(r'(?:::)?\s*~?[A-Za-z_]\w*(?:\s*::\s*~?[A-Za-z_]\w*)*\s*')
+# what a canonical type spelling can hold that no scope can name
+_UNNAMEABLE = re.compile(r'\(anonymous|\(lambda|\(unnamed|type-parameter|::\(')
+# a variable's name up to its initializer (`screen = ` of `Screen *screen =
+# DefaultScreenOfDisplay(d)`, where clang reports the conversion)
+_DECLARATOR = re.compile(r'[A-Za-z_]\w*\s*=(?!=)\s*')
+# where a variable's initializer takes an address (`data = &msg.data[0]`)
+_INITIALIZED_ADDRESS = re.compile(r'\w+\s*(?:=|\(|\{)\s*(&)(?!&)')
 
 _RESULT = '-> ::rsia_model::AnyValue '
 # how far before a `return` its lambda's body may open
@@ -62,6 +124,9 @@ _BLOCK_HEADS = frozenset(('if', 'for', 'while', 'switch', 'catch', 'constexpr'))
 # the words a lambda may follow
 _BEFORE_LAMBDA = frozenset(('return', 'co_return', 'co_yield', 'case'))
 _CONSTEXPR_WORD = re.compile(r'\bconstexpr\b')
+# words that begin statements, never an assignment's target
+_KEYWORDS = frozenset(('return', 'if', 'else', 'case', 'throw', 'delete',
+                       'co_return', 'goto'))
 _AUTO_POINTER = re.compile(r'\bauto\s*(\*)\s*(?:const\s*)?$')
 
 
@@ -91,6 +156,7 @@ def edits_from_diagnostics(diagnostics, read_code):
             AUTO_POINTER: _pointer_star,
             CONSTEXPR: _constexpr_keyword,
             BINDING: _binding_names,
+            ADDRESS: _address_of,
         }[kind](masked, offset)
         if anchor is not None:
             at_line, at_column = _position(masked, anchor)
@@ -98,11 +164,132 @@ def edits_from_diagnostics(diagnostics, read_code):
     return edits
 
 
+def is_edit(kind):
+    """Whether a repair's kind is one of these edits."""
+    return kind.partition(':')[0] in EDIT_KINDS
+
+
+def edits_from_notes(errors, read_code, *, parameter_types,
+                     parameter_type):
+    """{(kind, "file:line:column")}: the edits that need declarations.
+
+    Casts that settle ambiguous calls; arguments, initializers and returned
+    values made the class they must be; values assigned made the type of
+    their target.
+
+    :param errors: (message, file, line, column, notes) of the errors,
+      columns on disk, with the (message, file, line, column) of clang's
+      notes
+    :param read_code: as for :func:`edits_from_diagnostics`
+    :param parameter_types: returns the parameter types of the function
+      declared at a (file, line, column), spelled canonically; None for a
+      template or anything else
+    :param parameter_type: the same, of the parameter declared there
+    """
+    edits = set()
+    for message, file, line, column, notes in errors:
+        if not file or ' ' in file:
+            continue
+        if _AMBIGUOUS_CALL.match(message):
+            for note, *candidate in notes:
+                types = parameter_types(*candidate) \
+                    if note.startswith('candidate') else None
+                if types and not any(_UNNAMEABLE.search(t) for t in types):
+                    joined = quote(';'.join(types), safe='')
+                    edits.add((f'{CAST}:{joined}', f'{file}:{line}:{column}'))
+                    break
+        elif _NO_CONVERSION.match(message):
+            # at the argument, its parameter in a note (spelled so that any
+            # scope names it); at a returned value, or at the variable an
+            # initializer initialises, the class as the code names it there
+            parameter = next((parameter_type(*at) for note, *at in notes
+                              if note.startswith('passing argument to')),
+                             None)
+            code = read_code(file)
+            if parameter is None and code is not None and \
+                    'returned value' not in message:
+                line, column = _initializer_of(code, line, column)
+            edits |= _as_parameter(
+                code, file, line, column,
+                parameter or _NO_CONVERSION.match(message).group(1))
+        elif _NO_MATCH.match(message):
+            # at the callee; the argument in a candidate's note
+            for note, *candidate in notes:
+                match = _NOT_CONVERTED.match(note)
+                types = parameter_types(*candidate) if match else None
+                index = int(match.group(1)) - 1 if match else 0
+                if types and index < len(types):
+                    edits |= _as_parameter_of_argument(
+                        read_code(file), file, line, column, index,
+                        types[index])
+                    break
+        elif _NO_ASSIGNMENT.match(message):
+            code = read_code(file)
+            masked = None if code is None else _masked(code)
+            offset = None if masked is None else _offset(masked, line, column)
+            if offset is not None and _assignment(masked, offset):
+                edits.add((ASSIGNED, f'{file}:{line}:{column}'))
+    return edits
+
+
+def _assignment(masked, equals):
+    """(target, value start, value end) of the assignment at its `=`."""
+    if masked[equals] != '=' or masked[equals + 1:equals + 2] == '=' or \
+            masked[equals - 1:equals] in '=!<>+-*/%&|^':
+        return None
+    start = max(masked.rfind(c, 0, equals) for c in ';{}') + 1
+    target = ' '.join(masked[start:equals].split())
+    if not _TARGET.match(target) or target.split()[0] in _KEYWORDS:
+        return None
+    value = equals + 1
+    while value < len(masked) and masked[value].isspace():
+        value += 1
+    end = None if masked[value:value + 1] == '{' else \
+        _end_of_argument(masked, value)
+    return None if end is None else (target, value, end)
+
+
+def _initializer_of(code, line, column):
+    """Where the initializer of the variable at (line, column) begins."""
+    masked = _masked(code)
+    offset = _offset(masked, line, column)
+    declarator = None if offset is None else \
+        _DECLARATOR.match(masked, offset)
+    return (line, column) if declarator is None else \
+        _position(masked, declarator.end())
+
+
+def _as_parameter(code, file, line, column, parameter):
+    """The edit that makes the value at a position a `parameter`."""
+    if code is None or not parameter or _UNNAMEABLE.search(parameter):
+        return set()
+    masked = _masked(code)
+    offset = _offset(masked, line, column)
+    if offset is None or _end_of_argument(masked, offset) is None:
+        return set()
+    target = re.sub(r'\s*&+$', '', parameter)
+    return {(f'{AS}:{quote(target, safe="")}', f'{file}:{line}:{column}')}
+
+
+def _as_parameter_of_argument(code, file, line, column, index, parameter):
+    """The same for the index-th argument of the call at a position."""
+    if code is None:
+        return set()
+    masked = _masked(code)
+    callee = _offset(masked, line, column)
+    arguments = None if callee is None else _call_arguments(masked, callee)
+    if not arguments or index >= len(arguments):
+        return set()
+    at_line, at_column = _position(masked, arguments[index][0])
+    return _as_parameter(code, file, at_line, at_column, parameter)
+
+
 def _kind_of(message):
     for kind, pattern in ((LAMBDA_RESULT, _LAMBDA_RESULT_ERROR),
                           (AUTO_POINTER, _AUTO_POINTER_ERROR),
                           (CONSTEXPR, _CONSTEXPR_ERROR),
-                          (BINDING, _BINDING_ERROR)):
+                          (BINDING, _BINDING_ERROR),
+                          (ADDRESS, _ADDRESS_ERROR)):
         if pattern.match(message):
             return kind
     return None
@@ -117,7 +304,7 @@ def edited_files(edits, read_code):
     """
     by_file = {}
     for kind, name in edits:
-        if kind not in EDIT_KINDS:
+        if not is_edit(kind):
             continue
         file, line, column = name.rsplit(':', 2)
         by_file.setdefault(file, set()).add((kind, int(line), int(column)))
@@ -130,10 +317,8 @@ def edited_files(edits, read_code):
         changes = set()  # (offset, characters replaced, replacement)
         for kind, line, column in sorted(positions):
             offset = _offset(masked, line, column)
-            change = None if offset is None else \
-                _change(kind, masked, offset)
-            if change is not None:
-                changes.add(change)
+            if offset is not None:
+                changes.update(_changes(kind, masked, offset))
         if not changes:
             continue
         insertions = {}
@@ -162,27 +347,124 @@ def disk_column(insertions, line, column):
     return max(1, column - shift)
 
 
-def _change(kind, masked, offset):
-    """(offset, characters replaced, replacement) of the edit at offset.
+def _changes(kind, masked, offset):
+    """[(offset, characters replaced, replacement)] of the edit at offset.
 
-    None if the code there is not what the edit was made for.
+    None when the code there is not what the edit was made for.
     """
+    kind, _, detail = kind.partition(':')
+    if kind == CAST:
+        return _casts(masked, offset, unquote(detail).split(';'))
+    if kind == AS:
+        end = _end_of_argument(masked, offset)
+        return [] if end is None else [
+            (offset, 0, f'::rsia_model::as<{unquote(detail)}>('), (end, 0, ')')]
+    if kind == ASSIGNED:
+        assignment = _assignment(masked, offset)
+        if assignment is None:
+            return []
+        target, value, end = assignment
+        return [(value, 0,
+                 f'::rsia_model::assigned_as<decltype({target})>('),
+                (end, 0, ')')]
+    change = None
     if kind == LAMBDA_RESULT:
-        if masked[offset] != '{' or _lambda_kind(masked, offset) is None:
-            return None
-        has_parameters = _lambda_kind(masked, offset)
-        return offset, 0, _RESULT if has_parameters else '() ' + _RESULT
-    if kind == AUTO_POINTER:
-        return (offset, 1, ' ') if masked[offset] == '*' else None
-    if kind == BINDING:
-        return _bound_initializer(masked, offset)
-    if masked.startswith('constexpr', offset):
+        if masked[offset] == '{' and \
+                _lambda_kind(masked, offset) is not None:
+            has_parameters = _lambda_kind(masked, offset)
+            change = offset, 0, \
+                _RESULT if has_parameters else '() ' + _RESULT
+    elif kind in (AUTO_POINTER, ADDRESS):
+        blanked = '*' if kind == AUTO_POINTER else '&'
+        if masked[offset] == blanked and \
+                masked[offset + 1:offset + 2] != blanked:
+            change = offset, 1, ' '
+    elif kind == BINDING:
+        change = _bound_initializer(masked, offset)
+    elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
         # only as an inline variable; elsewhere a `const` takes any
         static = _word_before(masked, offset) == 'static'
-        return offset, len('constexpr'), \
+        change = offset, len('constexpr'), \
             'inline   ' if static else 'const    '
+    return [] if change is None else [change]
+
+
+def _casts(masked, callee, types):
+    """The insertions that cast a call's arguments to `types`.
+
+    A braced argument (`{lane}`) is left as it is: it has no type to cast.
+    """
+    arguments = _call_arguments(masked, callee)
+    if arguments is None or len(arguments) > len(types):
+        return []
+    changes = []
+    for (start, end), parameter in zip(arguments, types):
+        if masked[start] != '{':
+            changes += [(start, 0, f'static_cast<{parameter}>('),
+                        (end, 0, ')')]
+    return changes
+
+
+def _end_of_argument(masked, start):
+    """The end of the argument or initializer that starts at start.
+
+    Before the `,`, `)` or `;` that ends it.
+    """
+    if masked[start].isspace() or masked[start] in ',)':
+        return None
+    depth = 0
+    for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
+        character = masked[i]
+        if character in '([{':
+            depth += 1
+        elif character in ')]}':
+            if depth == 0:
+                return _end_before(masked, i) if character == ')' else None
+            depth -= 1
+        elif character in ',;' and depth == 0:
+            return _end_before(masked, i)
+        elif character == ';':
+            return None
     return None
+
+
+def _call_arguments(masked, callee):
+    """[(start, end)] of the arguments of the call of the callee there."""
+    name = _CALLEE.match(masked, callee)
+    if name is None:
+        return None
+    opening = end_of_template_arguments(masked, name.end()) or name.end()
+    while opening < len(masked) and masked[opening].isspace():
+        opening += 1
+    if masked[opening:opening + 1] != '(':
+        return None
+    return _arguments(masked, opening)
+
+
+def _arguments(masked, opening):
+    """[(start, end)] of the arguments of the call whose `(` is at opening."""
+    closing = _matching_close(masked, opening, '(', ')')
+    if closing is None:
+        return None
+    spans = []
+    start = opening + 1
+    depth = 0
+    for i in range(opening + 1, closing + 1):
+        character = masked[i]
+        if character in '([{':
+            depth += 1
+        elif character in ')]}' and i < closing:
+            depth -= 1
+        elif character == ',' and depth == 0 or i == closing:
+            first = _end_before(masked, i)  # (the argument's end)
+            begin = start
+            while begin < first and masked[begin].isspace():
+                begin += 1
+            if begin < first:
+                spans.append((begin, first))
+            start = i + 1
+    return spans
 
 
 def _bound_initializer(masked, names):
@@ -202,6 +484,17 @@ def _bound_initializer(masked, names):
     if follows[:1] == ':' and follows != '::':
         return after + 1, 0, f' ::rsia_model::BoundEach<{count}>() <<= '
     return None
+
+
+def _address_of(masked, offset):
+    """Offset of the `&` taking an address clang reported.
+
+    At the argument (a parameter's), or at the variable's name.
+    """
+    if masked[offset] == '&':
+        return offset if masked[offset + 1:offset + 2] != '&' else None
+    match = _INITIALIZED_ADDRESS.match(masked, offset)
+    return match.start(1) if match else None
 
 
 def _binding_names(masked, offset):

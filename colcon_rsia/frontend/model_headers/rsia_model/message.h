@@ -228,6 +228,9 @@ struct Any : std::vector<AnyElement>
   Any& operator=(const RsiaV&);
   template <class RsiaV>
   Any& operator=(std::initializer_list<RsiaV>);
+  // a list of values of different types (`marker.points = {a.position,
+  // b.position}`, one a field)
+  Any& operator=(std::initializer_list<AnyValue>);
 
   // every arithmetic use goes through double (one conversion: no ambiguity
   // between overloads for int, long, float, ...)
@@ -605,6 +608,17 @@ Any operator-(RsiaA&&);
 
 // the value of a function-like macro the model lacks (see repair.py)
 Any& any_value();
+
+// A value of the type the code needs where the model's type has no
+// conversion to it: source_edits.py writes `as<Params>(value)` for an
+// argument of a catch-all passed to a class of the package (an lvalue: a
+// parameter may be a reference to change), and
+// `assigned_as<decltype(target)>(value)` for a class of an unknown library
+// assigned to a real one (an rvalue: the target may be a std::unique_ptr)
+template <class RsiaT, class RsiaV>
+typename std::remove_reference<RsiaT>::type& as(RsiaV&&);
+template <class RsiaT, class RsiaV>
+typename std::remove_reference<RsiaT>::type&& assigned_as(RsiaV&&);
 
 // std::min(msg.speed, 1.0f), std::clamp(msg.x, lo, hi): std's templates
 // cannot deduce one type from a field and a number. The overloads below take
