@@ -136,7 +136,8 @@ def test_the_address_of_a_catch_all_is_the_catch_all():
     message = ("cannot initialize a {} of type '{}' with an rvalue of type "
                "'{}'")
     edits = _edits([
-        (message.format('parameter', 'std::vector<int> *', 'Any *'), 1, 8),
+        (message.format('parameter', "std::string *' (aka 'basic_string<char>"
+                        ' *', 'Any *'), 1, 8),
         (message.format('variable', 'unsigned char *',
                         '::rsia_model::Any *'), 2, 19)], code)
     assert edits == {(ADDRESS, 'a.cpp:1:8'), (ADDRESS, 'a.cpp:2:26')}
@@ -178,7 +179,10 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
             '  scale(2.0, gains(x, y));\n'
             '  Eigen::MatrixXf & m = maps[layer], n;\n'
             '  return points;\n'
-            '  const Screen * screen_info = DefaultScreenOfDisplay(d);\n')
+            '  const Screen * screen_info = DefaultScreenOfDisplay(d);\n'
+            'std::optional<Path> smooth();\n'
+            'std::shared_ptr<Tracker> make();\n'
+            '  return tracker;\n')
     params = 'const acme::Params &'
     edits = source_edits.edits_from_notes([
         # at the argument, its parameter in a note
@@ -198,7 +202,13 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
          "function return type 'std::optional<Path>'", 'a.cpp', 4, 10, []),
         # a class a repair declared (Xlib's macro taken for one)
         ("no viable conversion from 'DefaultScreenOfDisplay' to "
-         "'const Screen *'", 'a.cpp', 5, 18, [])],
+         "'const Screen *'", 'a.cpp', 5, 18, []),
+        # as clang spells it: not the code's `std::shared_ptr<Tracker>`;
+        # an undeclared type reads `int`
+        ("no viable conversion from returned value of type 'Any' to "
+         "function return type 'shared_ptr<Tracker>'", 'a.cpp', 8, 10, []),
+        ("no viable conversion from returned value of type 'Any' to "
+         "function return type 'int'", 'a.cpp', 8, 10, [])],
         lambda file: code,
         parameter_types=lambda *at: {
             ('h.hpp', 7, 8): ['double', 'double', 'double'],
@@ -215,24 +225,34 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     '(maps[layer]), n;\n'
                     '  return ::rsia_model::as<std::optional<Path>>(points);\n'
                     '  const Screen * screen_info = ::rsia_model::as<const '
-                    'Screen *>(DefaultScreenOfDisplay(d));\n')
+                    'Screen *>(DefaultScreenOfDisplay(d));\n'
+                    'std::optional<Path> smooth();\n'
+                    'std::shared_ptr<Tracker> make();\n'
+                    '  return tracker;\n')
 
 
 def test_a_value_assigned_is_made_of_its_targets_type():
     code = ('  debug.obstacles[0] = params->polygons;\n'
             '  if (x) y = z;\n'
-            '  a == b;\n')
+            '  a == b;\n'
+            '  if (log) {*log = handler->result(code);}\n')
     message = "no viable overloaded '='"
     edits = source_edits.edits_from_notes(
         [(message, 'a.cpp', 1, 22, []), (message, 'a.cpp', 2, 12, []),
-         (message, 'a.cpp', 3, 5, [])], lambda file: code,
+         (message, 'a.cpp', 3, 5, []),
+         # at the value (a catch-all, which converts to no `const char *`)
+         ("assigning to 'const char *' from incompatible type 'Any'",
+          'a.cpp', 4, 20, [])], lambda file: code,
         parameter_types=lambda *at: None, parameter_type=lambda *at: None)
-    assert edits == {(ASSIGNED, 'a.cpp:1:22')}
+    assert edits == {(ASSIGNED, 'a.cpp:1:22'), (ASSIGNED, 'a.cpp:4:18')}
     text, _ = _edited(edits, code)
     assert text.split('\n')[0] == (
         '  debug.obstacles[0] = '
         '::rsia_model::assigned_as<decltype(debug.obstacles[0])>'
         '(params->polygons);')
+    assert text.split('\n')[3] == (
+        '  if (log) {*log = ::rsia_model::assigned_as<decltype(*log)>'
+        '(handler->result(code));}')
 
 
 def test_an_edit_whose_code_changed_is_dropped():

@@ -536,16 +536,21 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
                 for f in sorted(own_files))),
             stand_in=lambda relative: os.path.isfile(
                 os.path.join(stub_dir, relative)))
-        repairs |= source_edits.edits_from_diagnostics(errors, read_code)
+        edits = source_edits.edits_from_diagnostics(errors, read_code)
         # (edits that need the parse's declarations: the parameters a
         # call passes its arguments to)
-        repairs |= source_edits.edits_from_notes(
+        edits |= source_edits.edits_from_notes(
             [(message, file, line, disk_column(file, line, column), notes)
              for message, file, line, column, notes
              in errors_with_notes(tu) if file and _user_file(file)],
             read_code,
             parameter_types=lambda *at: parameter_types(tu, *at),
             parameter_type=lambda *at: parameter_type(tu, *at))
+        # one edit a place: one made in an earlier round stays (a second
+        # would wrap the first)
+        edited_places = {name for kind, name in repair.read_repairs(header)
+                         if source_edits.is_edit(kind)}
+        repairs |= {edit for edit in edits if edit[1] not in edited_places}
         if not repair.add_repairs(header, relative, repairs):
             break
         if any(kind == repair.HEADER for kind, _ in repairs):

@@ -1043,8 +1043,8 @@ def _template_use(name, after, *, unqualified):
     end = end_of_template_arguments(after)
     called = end is not None and _CALL.match(after, end)
     # (arguments on the lines after: `convertToTrajectoryPoints<` ends it)
-    if unqualified and not _CAMEL.match(name) and called or \
-            _LOWER_CAMEL.match(name) and (called or after.strip() == '<'):
+    if (unqualified and not _CAMEL.match(name) and called) or \
+            (_LOWER_CAMEL.match(name) and (called or after.strip() == '<')):
         # qobject_cast<QPushButton *>(sender()), also qualified in
         # lowerCamelCase (motion_utils::convertToPath<P>(path)): a
         # function template; boost::optional<T>(x) is a class

@@ -80,8 +80,9 @@ _BINDING_ERROR = re.compile(
     r"^type '.*' decomposes into \d+ elements?, but \d+ names were "
     r'provided$|^cannot decompose ')
 _ADDRESS_ERROR = re.compile(
-    r"^cannot initialize a (?:parameter|variable) of type '.*\*' with an "
-    r"rvalue of type '(?:::)?(?:rsia_model::)?Any \*'$")
+    r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
+    r"(?: \(aka '.*'\))? with an rvalue of type "
+    r"'(?:::)?(?:rsia_model::)?Any \*'$")
 # from a catch-all, or from a class a repair or stand-in declared (the
 # real build converts it, or it would not build); the class as the message
 # spells it: where the code names it
@@ -98,6 +99,10 @@ _NOT_CONVERTED = re.compile(
     r'^candidate (?:function|constructor) not viable: no known conversion '
     r"from '.*' to '.*' for (\d+)(?:st|nd|rd|th) argument")
 _NO_ASSIGNMENT = re.compile(r"^no viable overloaded '='$")
+# (at the value assigned: `*log = any` for a `const char *`)
+_NOT_ASSIGNABLE = re.compile(
+    r"^assigning to '.*' from incompatible type "
+    r"'(?:const )?(?:::)?(?:rsia_model::)?Any(?:Element|Value)?'$")
 # what an assignment's target may be: a name, members, subscripts, getters
 _TARGET = re.compile(
     r'^\*?\s*[A-Za-z_]\w*(?:\s*(?:\.|->|::)\s*[A-Za-z_]\w*|'
@@ -107,6 +112,10 @@ _AMBIGUOUS_CALL = re.compile(
 # the callee of a call, from where clang reports it: a (qualified) name,
 # its template arguments after it
 _CALLEE = re.compile(r'(?:::)?\s*~?[A-Za-z_]\w*(?:\s*::\s*~?[A-Za-z_]\w*)*\s*')
+# the types of C++ itself, which a catch-all converts to
+_BUILTIN = re.compile(
+    r'^(?:(?:un)?signed\s+|long\s+|short\s+)*'
+    r'(?:int|long|short|char|bool|float|double|void|size_t)?$')
 # what a canonical type spelling can hold that no scope can name
 _UNNAMEABLE = re.compile(r'\(anonymous|\(lambda|\(unnamed|type-parameter|::\(')
 # a variable's name up to its initializer (`screen = ` of `Screen *screen =
@@ -206,12 +215,12 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                               if note.startswith('passing argument to')),
                              None)
             code = read_code(file)
-            if parameter is None and code is not None and \
-                    'returned value' not in message:
-                line, column = _initializer_of(code, line, column)
-            edits |= _as_parameter(
-                code, file, line, column,
-                parameter or _NO_CONVERSION.match(message).group(1))
+            if parameter is None and code is not None:
+                parameter = _named_in(code, _NO_CONVERSION.match(
+                    message).group(1))
+                if 'returned value' not in message:
+                    line, column = _initializer_of(code, line, column)
+            edits |= _as_parameter(code, file, line, column, parameter)
         elif _NO_MATCH.match(message):
             # at the callee; the argument in a candidate's note
             for note, *candidate in notes:
@@ -223,12 +232,16 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                         read_code(file), file, line, column, index,
                         types[index])
                     break
-        elif _NO_ASSIGNMENT.match(message):
+        elif _NO_ASSIGNMENT.match(message) or \
+                _NOT_ASSIGNABLE.match(message):
             code = read_code(file)
             masked = None if code is None else _masked(code)
             offset = None if masked is None else _offset(masked, line, column)
+            if offset is not None and masked[offset] != '=':
+                offset = _end_before(masked, offset) - 1  # the value's `=`
             if offset is not None and _assignment(masked, offset):
-                edits.add((ASSIGNED, f'{file}:{line}:{column}'))
+                at_line, at_column = _position(masked, offset)
+                edits.add((ASSIGNED, f'{file}:{at_line}:{at_column}'))
     return edits
 
 
@@ -247,6 +260,21 @@ def _assignment(masked, equals):
     end = None if masked[value:value + 1] == '{' else \
         _end_of_argument(masked, value)
     return None if end is None else (target, value, end)
+
+
+def _named_in(code, spelled):
+    """A type as a message spells it, if the code names it so; else None.
+
+    Clang spells a type as the code wrote it, but drops some scopes
+    (`shared_ptr<T>` for `std::shared_ptr<T>`), and an undeclared type
+    reads `int`: a class the file does not name as spelled is no edit's.
+    """
+    core = re.sub(r'^const\s+|[\s*&]+$', '', spelled)
+    if not core or _BUILTIN.match(core):
+        return None
+    pattern = r'(?<![\w:])' + r'\s*'.join(
+        re.escape(part) for part in re.findall(r'\w+|\S', core))
+    return spelled if re.search(pattern, _masked(code)) else None
 
 
 def _initializer_of(code, line, column):
