@@ -542,7 +542,8 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         edits |= source_edits.edits_from_notes(
             [(message, file, line, disk_column(file, line, column), notes)
              for message, file, line, column, notes
-             in errors_with_notes(tu) if file and _user_file(file)],
+             in errors_with_notes(tu, source_edits.needs_notes)
+             if file and _user_file(file)],
             read_code,
             parameter_types=lambda *at: parameter_types(tu, *at),
             parameter_type=lambda *at: parameter_type(tu, *at))

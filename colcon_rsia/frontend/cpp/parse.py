@@ -45,19 +45,26 @@ def parse_diagnostics(tu):
 
 def error_diagnostics(tu):
     """(message, file, line, column) of every error of a parsed unit."""
-    return [error[:4] for error in errors_with_notes(tu)]
-
-
-def errors_with_notes(tu):
-    """(message, file, line, column, notes) of every error.
-
-    The notes are the (message, file, line, column) of the error's notes
-    that have a place (the overloads of an ambiguous call, the parameter
-    an argument is passed to).
-    """
     errors = []
     for diag in tu.diagnostics:
         if diag.severity >= ci.Diagnostic.Error:
+            loc = diag.location
+            errors.append((diag.spelling, loc.file.name if loc.file else None,
+                           loc.line, loc.column))
+    return errors
+
+
+def errors_with_notes(tu, wanted):
+    """(message, file, line, column, notes) of the errors `wanted` takes.
+
+    The notes are the (message, file, line, column) of the error's notes
+    that have a place (the overloads of an ambiguous call, the parameter
+    an argument is passed to). Only errors whose message `wanted` accepts
+    are read: a unit can have thousands of notes.
+    """
+    errors = []
+    for diag in tu.diagnostics:
+        if diag.severity >= ci.Diagnostic.Error and wanted(diag.spelling):
             loc = diag.location
             notes = [
                 (note.spelling, note.location.file.name, note.location.line,

@@ -57,8 +57,9 @@ ADDRESS = 'edit-address'              # the `&` of `&any` blanked
 # `f(static_cast<T>(a))`: a call's arguments cast to one overload's
 # parameters, their types in the kind (`edit-cast:<T1>;<T2>`, quoted)
 CAST = 'edit-cast'
-# `as<T>(a)`: an argument made the parameter's class, the class in the
-# kind (`edit-as:<T>`, quoted)
+# `as<T>(a)`: a value made the class it must be (its parameter's, its
+# variable's, its function's result), the class in the kind
+# (`edit-as:<T>`, quoted)
 AS = 'edit-as'
 # `target = assigned_as<decltype(target)>(value)`, at the `=`
 ASSIGNED = 'edit-assigned'
@@ -176,6 +177,13 @@ def edits_from_diagnostics(diagnostics, read_code):
 def is_edit(kind):
     """Whether a repair's kind is one of these edits."""
     return kind.partition(':')[0] in EDIT_KINDS
+
+
+def needs_notes(message):
+    """Whether :func:`edits_from_notes` reads an error of this message."""
+    return any(pattern.match(message) for pattern in (
+        _AMBIGUOUS_CALL, _NO_CONVERSION, _NO_MATCH, _NO_ASSIGNMENT,
+        _NOT_ASSIGNABLE))
 
 
 def edits_from_notes(errors, read_code, *, parameter_types,
