@@ -480,7 +480,7 @@ def _call_arguments(masked, callee):
 
 def _arguments(masked, opening):
     """[(start, end)] of the arguments of the call whose `(` is at opening."""
-    closing = _matching_close(masked, opening, '(', ')')
+    closing = _matching(masked, opening)
     if closing is None:
         return None
     spans = []
@@ -507,7 +507,7 @@ def _bound_initializer(masked, names):
     """The insertion that gives the binding `[...]` at `names` a Bound."""
     if masked[names] != '[':
         return None
-    end = _matching_close(masked, names, '[', ']')
+    end = _matching(masked, names)
     if end is None:
         return None
     count = _top_level_commas(masked, names + 1, end) + 1
@@ -565,7 +565,7 @@ def _opened_by(masked, brace):
         return 'lambda'
     end = _end_before(masked, brace)
     if masked[end - 1:end] == ')':
-        opening = _matching_open(masked, end - 1, '(', ')')
+        opening = _matching(masked, end - 1)
         if opening is not None and \
                 _word_before(masked, opening) in _BLOCK_HEADS:
             return 'block'
@@ -582,13 +582,13 @@ def _lambda_kind(masked, brace):
         end = _end_before(masked, end - len(_word_before(masked, end)))
     has_parameters = masked[end - 1:end] == ')'
     if has_parameters:
-        opening = _matching_open(masked, end - 1, '(', ')')
+        opening = _matching(masked, end - 1)
         if opening is None:
             return None
         end = _end_before(masked, opening)
     if masked[end - 1:end] != ']':
         return None
-    introducer = _matching_open(masked, end - 1, '[', ']')
+    introducer = _matching(masked, end - 1)
     if introducer is None:
         return None
     # `a[i] {` subscripts; a lambda follows an operator, `(`, `,`, `=` or
@@ -617,12 +617,23 @@ def _constexpr_keyword(masked, offset):
     return keywords[-1].start() if keywords else None
 
 
-def _matching_close(masked, opening, open_character, close_character):
+_PAIRED = {'(': ')', '[': ']', '{': '}', ')': '(', ']': '[', '}': '{'}
+
+
+def _matching(masked, at):
+    """Offset of the bracket that pairs with the one at `at`, or None.
+
+    Forward from an opening bracket, backward from a closing one.
+    """
+    own = masked[at]
+    other = _PAIRED[own]
+    step = 1 if own in '([{' else -1
     depth = 0
-    for i in range(opening, min(len(masked), opening + _SCAN_LIMIT)):
-        if masked[i] == open_character:
+    for i in range(at, max(-1, min(len(masked), at + step * _SCAN_LIMIT)),
+                   step):
+        if masked[i] == own:
             depth += 1
-        elif masked[i] == close_character:
+        elif masked[i] == other:
             depth -= 1
             if depth == 0:
                 return i
@@ -640,18 +651,6 @@ def _top_level_commas(masked, start, end):
         elif character == ',' and depth == 0:
             commas += 1
     return commas
-
-
-def _matching_open(masked, closing, open_character, close_character):
-    depth = 0
-    for i in range(closing, max(-1, closing - _SCAN_LIMIT), -1):
-        if masked[i] == close_character:
-            depth += 1
-        elif masked[i] == open_character:
-            depth -= 1
-            if depth == 0:
-                return i
-    return None
 
 
 def _end_before(masked, offset):
