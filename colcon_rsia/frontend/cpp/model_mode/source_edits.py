@@ -149,15 +149,12 @@ def edits_from_diagnostics(diagnostics, read_code):
       character per byte, as clang counts columns), or None
     """
     edits = set()
-    masked_code = {}
+    masked_of = _masked_reader(read_code)
     for message, file, line, column in diagnostics:
         kind = _kind_of(message)
         if kind is None or not file or ' ' in file:
             continue  # (a repair header's entry is one word)
-        if file not in masked_code:
-            code = read_code(file)
-            masked_code[file] = None if code is None else _masked(code)
-        masked = masked_code[file]
+        masked = masked_of(file)
         offset = None if masked is None else _offset(masked, line, column)
         if offset is None:
             continue
@@ -204,6 +201,7 @@ def edits_from_notes(errors, read_code, *, parameter_types,
     :param parameter_type: the same, of the parameter declared there
     """
     edits = set()
+    masked_of = _masked_reader(read_code)
     for message, file, line, column, notes in errors:
         if not file or ' ' in file:
             continue
@@ -222,13 +220,13 @@ def edits_from_notes(errors, read_code, *, parameter_types,
             parameter = next((parameter_type(*at) for note, *at in notes
                               if note.startswith('passing argument to')),
                              None)
-            code = read_code(file)
-            if parameter is None and code is not None:
-                parameter = _named_in(code, _NO_CONVERSION.match(
+            masked = masked_of(file)
+            if parameter is None and masked is not None:
+                parameter = _named_in(masked, _NO_CONVERSION.match(
                     message).group(1))
                 if 'returned value' not in message:
-                    line, column = _initializer_of(code, line, column)
-            edits |= _as_parameter(code, file, line, column, parameter)
+                    line, column = _initializer_of(masked, line, column)
+            edits |= _as_parameter(masked, file, line, column, parameter)
         elif _NO_MATCH.match(message):
             # at the callee; the argument in a candidate's note
             for note, *candidate in notes:
@@ -237,13 +235,12 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                 index = int(match.group(1)) - 1 if match else 0
                 if types and index < len(types):
                     edits |= _as_parameter_of_argument(
-                        read_code(file), file, line, column, index,
+                        masked_of(file), file, line, column, index,
                         types[index])
                     break
         elif _NO_ASSIGNMENT.match(message) or \
                 _NOT_ASSIGNABLE.match(message):
-            code = read_code(file)
-            masked = None if code is None else _masked(code)
+            masked = masked_of(file)
             offset = None if masked is None else _offset(masked, line, column)
             if offset is not None and masked[offset] != '=':
                 offset = _end_before(masked, offset) - 1  # the value's `=`
@@ -270,7 +267,7 @@ def _assignment(masked, equals):
     return None if end is None else (target, value, end)
 
 
-def _named_in(code, spelled):
+def _named_in(masked, spelled):
     """A type as a message spells it, if the code names it so; else None.
 
     Clang spells a type as the code wrote it, but drops some scopes
@@ -282,12 +279,11 @@ def _named_in(code, spelled):
         return None
     pattern = r'(?<![\w:])' + r'\s*'.join(
         re.escape(part) for part in re.findall(r'\w+|\S', core))
-    return spelled if re.search(pattern, _masked(code)) else None
+    return spelled if re.search(pattern, masked) else None
 
 
-def _initializer_of(code, line, column):
+def _initializer_of(masked, line, column):
     """Where the initializer of the variable at (line, column) begins."""
-    masked = _masked(code)
     offset = _offset(masked, line, column)
     declarator = None if offset is None else \
         _DECLARATOR.match(masked, offset)
@@ -295,11 +291,10 @@ def _initializer_of(code, line, column):
         _position(masked, declarator.end())
 
 
-def _as_parameter(code, file, line, column, parameter):
+def _as_parameter(masked, file, line, column, parameter):
     """The edit that makes the value at a position a `parameter`."""
-    if code is None or not parameter or _UNNAMEABLE.search(parameter):
+    if masked is None or not parameter or _UNNAMEABLE.search(parameter):
         return set()
-    masked = _masked(code)
     offset = _offset(masked, line, column)
     if offset is None or _end_of_argument(masked, offset) is None:
         return set()
@@ -307,17 +302,17 @@ def _as_parameter(code, file, line, column, parameter):
     return {(f'{AS}:{quote(target, safe="")}', f'{file}:{line}:{column}')}
 
 
-def _as_parameter_of_argument(code, file, line, column, index, parameter):
+def _as_parameter_of_argument(masked, file, line, column, index,
+                              parameter):
     """The same for the index-th argument of the call at a position."""
-    if code is None:
+    if masked is None:
         return set()
-    masked = _masked(code)
     callee = _offset(masked, line, column)
     arguments = None if callee is None else _call_arguments(masked, callee)
     if not arguments or index >= len(arguments):
         return set()
     at_line, at_column = _position(masked, arguments[index][0])
-    return _as_parameter(code, file, at_line, at_column, parameter)
+    return _as_parameter(masked, file, at_line, at_column, parameter)
 
 
 def _kind_of(message):
@@ -667,6 +662,18 @@ def _word_before(masked, offset):
     while start > 0 and (masked[start - 1].isalnum() or masked[start - 1] == '_'):
         start -= 1
     return masked[start:end]
+
+
+def _masked_reader(read_code):
+    """A file's masked code (see :func:`_masked`), masked once a file."""
+    masked_code = {}
+
+    def masked_of(file):
+        if file not in masked_code:
+            code = read_code(file)
+            masked_code[file] = None if code is None else _masked(code)
+        return masked_code[file]
+    return masked_of
 
 
 def _masked(code):
