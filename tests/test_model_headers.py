@@ -1461,3 +1461,44 @@ def test_messages_of_a_type_compare_as_generated_messages_do(tmp_path):
         '{\n'
         '  return now != *last || kept != now || !(a == *b);\n'
         '}\n'))
+
+
+def test_string_constants_and_members_taking_a_type_and_values(tmp_path):
+    # a message's string constant (the stand-in knows only its name) against
+    # a std::string; grid_map's `toImage<unsigned char, 3>(...)`, of a class
+    # a repair declared, beside its type-only and value-only forms; Ogre's
+    # begin with arguments; a field appended to a string; Boost.Asio's
+    # older error_code forms
+    package, [source] = _sources(tmp_path, node=r"""
+#include <string>
+#include <boost/asio.hpp>
+#include <planning_like_msgs/msg/scenario.hpp>
+#include <grid_like/converter.hpp>
+using Scenario = planning_like_msgs::msg::Scenario;
+bool driving(std::string & current, const grid_like::Map & map,
+             const Scenario & scenario)
+{
+  grid_like::Converter::toImage<unsigned char, 3>(map, "layer", 16);
+  grid_like::Converter::toImage<float>(map);
+  grid_like::Converter::toImage<2>(map);
+  map.begin("BaseWhiteNoLighting", 2);
+  for (const auto & cell : map) {}
+  current += scenario.current_scenario;
+  boost::asio::io_service io;
+  boost::system::error_code error;
+  io.run(error);
+  if (error) {
+    current += error.message();
+  }
+  return current == Scenario::LANEDRIVING || Scenario::PARKING != current;
+}
+""")
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    header = repair.repair_header(str(stub_dir), str(source))
+    repair.add_repairs(header, str(source), {
+        ('type', 'grid_like::Converter'),
+        ('member-template', 'grid_like::Converter::toImage')})
+    tu = _parse(file=source, arguments=['-include', header] + arguments,
+                directory=package)
+    assert cpp.parse_diagnostics(tu) == []

@@ -13,6 +13,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
+from colcon_rsia.frontend.cpp.model_mode.source_edits import STRING_OPERAND
 from test_repair import _analyze_one_unit
 
 MISMATCH = ("return type 'double' must match previous return type 'Any' "
@@ -146,6 +147,28 @@ def test_the_address_of_a_catch_all_is_the_catch_all():
                     '  unsigned char * data =  msg.data[0];\n')
 
 
+def test_a_conditionals_string_literal_beside_a_catch_all_is_a_string():
+    code = ('  auto p = unit->path().empty() ? "" : unit->path() + " ";\n'
+            '  s = "a" + (ok ? names[i] : "/" "b") + f(x ? y : z);\n'
+            '  t = ok ? std::string("x") : n::label("?:");\n')
+    message = "incompatible operand types ('{}' and '{}')"
+    edits = _edits([(message.format('const char[1]', 'Any'), 1, 33),
+                    (message.format('AnyElement', 'const char[3]'), 2, 17),
+                    # not a literal's: no edit
+                    (message.format('std::string', 'Any'), 3, 10)], code)
+    assert edits == {(STRING_OPERAND, 'a.cpp:1:33'),
+                     (STRING_OPERAND, 'a.cpp:2:17')}
+    # no operand is a literal alone: the code is left as it is
+    edits.add((STRING_OPERAND, 'a.cpp:3:10'))
+    text, _ = _edited(edits, code)
+    assert text.split('\n') == [
+        '  auto p = unit->path().empty() ? ::std::string( "" ): '
+        'unit->path() + " ";',
+        '  s = "a" + (ok ? names[i] : ::std::string( "/" "b")) + '
+        'f(x ? y : z);',
+        '  t = ok ? std::string("x") : n::label("?:");', '']
+
+
 def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
     code = ('  if (is_timeout(msg.header.stamp, 1.0) ||\n'
             '      checker.willLeave({lane}, path)) {}\n')
@@ -231,6 +254,39 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     '  return tracker;\n')
 
 
+def test_a_catch_all_argument_takes_the_type_its_template_deduces():
+    # `template <class T> void push(T &, const T &)` given a vector and a
+    # catch-all: the catch-all is made the vector
+    code = ('  pushUniqueVector(next_lanes,\n'
+            '                   from_prev);\n'
+            '  merge(any, std::vector<int>{});\n')
+    note = ('candidate template ignored: deduced conflicting types for '
+            "parameter 'T' ({} vs. {})")
+    arguments = {
+        ('a.cpp', 1, 3): [(1, 20, 'std::vector<lanelet::ConstLanelet>'),
+                          (2, 20, 'const rsia_model::Any')],
+        ('a.cpp', 3, 3): [(3, 9, 'rsia_model::AnyValue'),
+                          (3, 14, 'std::vector<int>')]}
+    edits = source_edits.edits_from_notes([
+        ("no matching function for call to 'pushUniqueVector'", 'a.cpp', 1,
+         3, [(note.format("'lanelet::ConstLanelets' (aka "
+                          "'vector<ConstLanelet>')", "'Any'"), 'h.hpp', 4,
+              6)]),
+        # the catch-all deduced first
+        ("no matching function for call to 'merge'", 'a.cpp', 3, 3,
+         [(note.format("'AnyValue'", "'std::vector<int>' (aka "
+                       "'vector<int>')"), 'h.hpp', 9, 6)])],
+        lambda file: code, parameter_types=lambda *at: None,
+        parameter_type=lambda *at: None,
+        call_arguments=lambda *at: arguments.get(at))
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[1:3] == [
+        '                   ::rsia_model::as<std::vector<lanelet::'
+        'ConstLanelet>>(from_prev));',
+        '  merge(::rsia_model::as<std::vector<int>>(any), '
+        'std::vector<int>{});']
+
+
 def test_a_value_assigned_is_made_of_its_targets_type():
     code = ('  debug.obstacles[0] = params->polygons;\n'
             '  if (x) y = z;\n'
@@ -285,6 +341,7 @@ double yaw_of(const geometry_msgs::msg::Quaternion & orientation);
 double yaw_of(const geometry_msgs::msg::Pose & pose);
 struct Gains { double low, high; };
 double corrected(const Gains & gains, double value);
+template <class T> void pushUnique(T & base, const T & more);
 
 class Limiter : public rclcpp::Node
 {
@@ -324,6 +381,9 @@ private:
     std::vector<int> * kept = &(image_.kept);
     const std::string label{acme_geometry::name_of(limit)};
     image_.points = {m.data, limit};
+    std::vector<int> ids;
+    pushUnique(ids, acme_geometry::ids_of(limit));
+    const std::string tag = m.data ? "" : acme_geometry::name_of(m) + "/";
     std_msgs::msg::Float64 out =
       acme_geometry::convertTo<std_msgs::msg::Float64>(limit);
     out.data = limit + pick() + row[0] + max_angle + low + fixed;
@@ -345,7 +405,7 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     assert publisher.topic == 'limit'
     assert publisher.label == 'dependent'
     # at its line in the file, which stays as it was on disk
-    assert publisher.publish_sites == ['src/detector_node.cpp:61']
+    assert publisher.publish_sites == ['src/detector_node.cpp:65']
     source = tmp_path / 'src' / 'acme_vision' / 'src' / 'detector_node.cpp'
     assert source.read_text() == UNIT
     [header] = [os.path.join(root, name)
@@ -354,6 +414,7 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
                 name.startswith('detector_node')]
     with open(header) as h:
         kinds = [line.split()[2] for line in h if line.startswith('// repair')]
-    assert sorted(k.partition(':')[0] for k in kinds) == [
-        ADDRESS, ADDRESS, AS, ASSIGNED, AUTO_POINTER, BINDING, BINDING,
-        CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT]
+    assert sorted(k.partition(':')[0] for k in kinds) == sorted([
+        ADDRESS, ADDRESS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING, BINDING,
+        CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT,
+        STRING_OPERAND])

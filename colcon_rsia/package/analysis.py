@@ -431,6 +431,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
     from colcon_rsia.frontend.cpp.model_mode import precompiled
     from colcon_rsia.frontend.cpp.model_mode import repair
     from colcon_rsia.frontend.cpp.model_mode import source_edits
+    from colcon_rsia.frontend.cpp.parse import call_arguments
     from colcon_rsia.frontend.cpp.parse import errors_with_notes
     from colcon_rsia.frontend.cpp.parse import parameter_type
     from colcon_rsia.frontend.cpp.parse import parameter_types
@@ -514,6 +515,11 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         return source_edits.disk_column(
             edited.get(file, (None, {}))[1], line, column)
 
+    def _on_disk(file, arguments):
+        return None if arguments is None else [
+            (line, disk_column(file, line, column), argument_type)
+            for line, column, argument_type in arguments]
+
     def own_errors(tu):
         # errors elsewhere hide none of the package's calls, and
         # declarations cannot fix them; columns as on disk
@@ -546,7 +552,10 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
              if file and _user_file(file)],
             read_code,
             parameter_types=lambda *at: parameter_types(tu, *at),
-            parameter_type=lambda *at: parameter_type(tu, *at))
+            parameter_type=lambda *at: parameter_type(tu, *at),
+            call_arguments=lambda file, line, column: _on_disk(
+                file, call_arguments(tu, file, line, source_edits.edited_column(
+                    edited.get(file, (None, {}))[1], line, column))))
         # one edit a place: one made in an earlier round stays (a second
         # would wrap the first)
         edited_places = {name for kind, name in repair.read_repairs(header)

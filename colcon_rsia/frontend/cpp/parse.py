@@ -101,6 +101,37 @@ def parameter_type(tu, file, line, column):
     return cursor.type.get_canonical().spelling
 
 
+def call_arguments(tu, file, line, column):
+    """[(line, column, canonical type)] of the arguments of a call.
+
+    Of the innermost call whose callee spans (file, line, column), also
+    one that failed (clang keeps its callee and arguments); None if there
+    is none.
+    """
+    found = None
+    cursor = tu.cursor
+    while cursor is not None:
+        children = list(cursor.get_children())
+        # (a failed call is an unexposed expression, as implicit casts
+        # are, with the callee and the arguments)
+        if (cursor.kind == ci.CursorKind.CALL_EXPR or len(children) > 1 and
+                cursor.kind == ci.CursorKind.UNEXPOSED_EXPR) and \
+                _spans(children[0], file, line, column):
+            found = children[1:]
+        cursor = next((child for child in children
+                       if _spans(child, file, line, column)), None)
+    if found is None:
+        return None
+    return [(argument.extent.start.line, argument.extent.start.column,
+             argument.type.get_canonical().spelling) for argument in found]
+
+
+def _spans(cursor, file, line, column):
+    start, end = cursor.extent.start, cursor.extent.end
+    return start.file is not None and start.file.name == file and \
+        (start.line, start.column) <= (line, column) <= (end.line, end.column)
+
+
 def _cursor_at(tu, file, line, column):
     return ci.Cursor.from_location(tu, tu.get_location(file, (line, column)))
 

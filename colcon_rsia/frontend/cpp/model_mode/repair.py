@@ -59,6 +59,9 @@ _IN_NAMESPACE = re.compile(
 _NOT_NAMESPACE = re.compile(
     r"^use of undeclared identifier '(\w+)'|^expected namespace name")
 _IN_STD = re.compile(r"^no (?:type|template|member) named '(\w+)' in namespace 'std'")
+# `std::ifstream f(path);` where only <iosfwd> came in on the way
+_UNDEFINED_IN_STD = re.compile(
+    r"^implicit instantiation of undefined template 'std::(\w+)<")
 # (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
 _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
 # (a field the catch-all base has, `type`, is no type)
@@ -98,6 +101,12 @@ _OVERRIDE = re.compile(
 _NAMESPACE_ALIAS = re.compile(
     r'\bnamespace\s+\w+\s*=\s*(?:::)?([A-Za-z_][\w:]*)|'
     r'\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)')
+# fmt's `"name"_a = value` without fmt: its literal operator
+_LITERAL = re.compile('^no matching literal operator for call to '
+                      r"'operator\"\"(\w+)'")
+# `template <> struct hash<lanelet::routing::LaneletPath>` of the package,
+# for a class a repair declared hashable
+_HASH_REDEFINED = re.compile(r"^redefinition of 'hash<(?:::)?([\w:]+)>'$")
 _ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]*$')
 _CAMEL = re.compile(r'^_?[A-Z]')
 _LOWER_CAMEL = re.compile(r'^[a-z][a-z0-9]*[A-Z]\w*$')
@@ -119,11 +128,17 @@ FUNCTION = 'function'
 SPECIALIZED = 'specialized-function'  # a function the code specialises
 OBJECT = 'object'
 CONSTANT = 'constant'
+# a constant where clang said the name used as one is no value: it wins
+# over the class an earlier round made of it
+VALUE = 'value'
 MACRO_VALUE = 'macro-value'        # FOO(...) used as a value
 MACRO_EMPTY = 'macro-empty'        # FOO_EXPORT at declaration level
 MACRO_VOID = 'macro-void'          # FOO(...) at declaration level
 MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
 NO_OVERRIDE = 'no-override'        # `override` made a no-op
+LITERAL = 'literal'                # a user-defined literal's suffix
+# a class repaired without its std::hash (the package specialises it)
+NO_HASH = 'no-hash'
 MEMBER = 'member'                  # a static member of a type declared here
 MEMBER_TYPE = 'member-type'        # a nested type of a type declared here
 MEMBER_TEMPLATE = 'member-template'  # a member used with template arguments
@@ -139,7 +154,7 @@ INCLUDES = (STD_HEADER, HEADER)
 # when one name is asked for as several kinds, the first of these wins
 # (a name used as a type somewhere is a class, even where `Name::` made it
 # look like a namespace: QFrame *line; QFrame::HLine)
-_PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION,
+_PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION, VALUE,
              TEMPLATE, TYPE, NAMESPACE, SPECIALIZED, FUNCTION, CONSTANT,
              OBJECT)
 
@@ -164,7 +179,9 @@ _STD_HEADER_OF = {
                   'dynamic_pointer_cast',
         'functional': 'function bind placeholders ref cref hash invoke '
                       'mem_fn reference_wrapper',
-        'sstream': 'stringstream ostringstream istringstream',
+        'sstream': 'stringstream ostringstream istringstream '
+                   'basic_stringstream basic_ostringstream '
+                   'basic_istringstream',
         'iostream': 'cout cerr clog cin',
         'iomanip': 'setprecision setw setfill put_time quoted',
         'limits': 'numeric_limits',
@@ -194,7 +211,8 @@ _STD_HEADER_OF = {
                   'uniform_int_distribution normal_distribution',
         'future': 'future promise async',
         'filesystem': 'filesystem',
-        'fstream': 'ifstream ofstream fstream',
+        'fstream': 'ifstream ofstream fstream basic_ifstream '
+                   'basic_ofstream basic_fstream',
         'iterator': 'back_inserter inserter distance advance next prev '
                     'begin end',
         'stdexcept': 'runtime_error logic_error invalid_argument '
@@ -385,7 +403,8 @@ def _included(repair, stand_in):
     """
     kind, name = repair
     if kind in INCLUDES or kind in MEMBER_KINDS + (TEMPLATE_USE,) or \
-            kind.startswith('macro-') or kind == NO_OVERRIDE:
+            kind.startswith('macro-') or kind in (NO_OVERRIDE, LITERAL,
+                                                  NO_HASH):
         return repair
     system_header = _SYSTEM_NAMESPACE_HEADER.get(name.split('::')[0])
     if system_header:
@@ -494,10 +513,30 @@ def declared_names(texts):
         # `class X  // : public Base` then `{` on the next line
         code = COMMENT_OR_STRING.sub(' ', text)
         for match in _DECLARATION.finditer(code):
+            if _aliases_namesake(code, match):
+                continue
             # (each namespace of `namespace autoware::planning {`)
             names.update(part.strip() for g in match.groups() if g
                          for part in g.split('::'))
     return names
+
+
+def _aliases_namesake(code, match):
+    """Whether a declaration is an alias of its namesake elsewhere.
+
+    `using PointCloud = pcl::PointCloud<P>;` and `typedef pcl::IndicesPtr
+    IndicesPtr;` declare nothing of pcl's: pcl::PointCloud stays missing
+    (and repairable) when the package opens a `namespace pcl` of its own.
+    """
+    alias, typedef = match.group(3), match.group(4)
+    if alias:
+        end = code.find(';', match.end())
+        target = code[match.end():None if end < 0 else end]
+        return re.search(r'::\s*' + alias + r'\b', target) is not None
+    if typedef:
+        return re.search(r'::\s*' + typedef + r'\b',
+                         match.group(0)[:-1]) is not None
+    return False
 
 
 _file_declarations = {}
@@ -561,16 +600,59 @@ _FUNCTION_DECLARED = re.compile(
 _NAMESPACE_OPENED = re.compile(r'\bnamespace\s+(\w+)\s*\{')
 
 
+# `extern const std::string RGB8, RGBA8, ...;` at namespace level (its list
+# may go on over indented lines)
+_EXTERN_DECLARED = re.compile(r'^extern\s+[^;(){}]*;', re.MULTILINE)
+
+
+def _extern_names(text):
+    """The names of the variables the extern declarations of a text declare."""
+    names = set()
+    for match in _EXTERN_DECLARED.finditer(text):
+        *_, first = match.group(0)[:-1].split(',')[0].split()
+        names.update([first.lstrip('*&')] + [
+            name.strip() for name in match.group(0)[:-1].split(',')[1:]])
+    return names
+
+
+_ENUM_BODY = re.compile(r'\benum\s+(?!class\b|struct\b)\w*\s*(?::[^{;]*)?\{([^}]*)\}')
+_global_enumerators = {}
+
+
+def _global_enumerator_header(name):
+    """The model header whose global C enum has this enumerator, or None.
+
+    `RCL_ROS_TIME` of rcl's `rcl_clock_type_t` (rclcpp/rclcpp.hpp), named
+    before the unit includes the model: a constant of our own would clash
+    with it.
+    """
+    texts = _model_header_texts()
+    with _shared_lock:
+        if not _global_enumerators:
+            for path, text in texts:
+                code = _SOURCE_NOISE.sub(' ', text)
+                for match in _ENUM_BODY.finditer(code):
+                    if _opened_namespaces(code[:match.start()]):
+                        continue
+                    for enumerator in match.group(1).split(','):
+                        word = enumerator.split('=')[0].strip()
+                        if word:
+                            _global_enumerators.setdefault(word, path)
+            _global_enumerators.setdefault(None, None)  # read once
+        return _global_enumerators.get(name)
+
+
 def model_header_for(name):
     """The model header (relative path) that declares a qualified name.
 
     One that opens the name's first namespace and declares its last part
     at namespace level (a class member of that name is another name);
     of several, the one in that namespace's directory, then the shortest.
+    An unqualified name: the header of the global enum it is of.
     """
     *namespaces, short = name.split('::')
     if not namespaces:
-        return None
+        return _global_enumerator_header(short)
     texts = _model_header_texts()
     with _shared_lock:
         if not _model_header_index:
@@ -583,7 +665,8 @@ def model_header_for(name):
                 _model_header_index.append((
                     path, set(_NAMESPACE_OPENED.findall(text)),
                     declared_names([top_level]) |
-                    set(_FUNCTION_DECLARED.findall(top_level))))
+                    set(_FUNCTION_DECLARED.findall(top_level)) |
+                    _extern_names(text)))
     found = [path for path, opened, names in _model_header_index
              if namespaces[0] in opened and short in names]
     if not found:
@@ -711,7 +794,7 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             # names repaired inside it become its members
             repairs.add((TYPE, _qualified(match.group(1), text, column)))
             continue
-        match = _IN_STD.match(message)
+        match = _IN_STD.match(message) or _UNDEFINED_IN_STD.match(message)
         if match:
             # a standard header the real headers would have brought in
             header = _STD_HEADER_OF.get(match.group(1))
@@ -799,7 +882,10 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             match = re.match(r'\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)'
                              r'\s*(<?)', text[max(0, column - 1):])
             if match:
-                name = re.sub(r'\s+', '', match.group(1))
+                # (clang's column is at the start of the name or at its
+                # last part: `rviz_common::|ViewController`)
+                name = _qualified(re.sub(r'\s+', '', match.group(1)), text,
+                                  column)
                 rest = text[max(0, column - 1) + match.start(2):]
                 repairs.add((template_kind(rest) if match.group(2) else TYPE,
                              name))
@@ -813,6 +899,11 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
         if _OVERRIDE.search(message):
             repairs.add((NO_OVERRIDE, 'override'))
             continue
+        match = _LITERAL.match(message) or _HASH_REDEFINED.match(message)
+        if match:
+            repairs.add((LITERAL if match.re is _LITERAL else NO_HASH,
+                         match.group(1)))
+            continue
         if _ARGUMENT_NOT_VALUE.match(message):
             # FOO_NVP(Base) with FOO_NVP unknown: the macro's argument is a
             # type; the macro is what is missing
@@ -820,6 +911,10 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             macro = re.search(r'\b([A-Z][A-Z0-9_]*)\s*\(\s*$', before)
             if macro:
                 repairs.add((MACRO_VALUE, macro.group(1)))
+            elif subject and message.startswith(f"'{subject}'"):
+                # `setCursor(Rotate2D)`: an enumerator of an unknown base
+                # class, which its CamelCase made a class of ours
+                repairs.add((VALUE, _qualified(subject, text, column)))
             continue
         if message.startswith('expected namespace name'):
             for match in _NAMESPACE_ALIAS.finditer(text):
@@ -853,16 +948,20 @@ _BRACE_OR_NAMESPACE = re.compile(r'\bnamespace\s*((?:\w|::)*)\s*\{|[{}]')
 
 def _namespace_at(read_line, file, line):
     """The named namespaces open at a line of a file (`a::b`), or ''."""
-    text = _SOURCE_NOISE.sub(' ', '\n'.join(
-        read_line(file, number) for number in range(1, line)))
+    return '::'.join(_opened_namespaces(_SOURCE_NOISE.sub(' ', '\n'.join(
+        read_line(file, number) for number in range(1, line)))))
+
+
+def _opened_namespaces(code):
+    """[name] of the named namespaces still open at the end of code."""
     opened = []  # a namespace's name, or '' for any other brace
-    for match in _BRACE_OR_NAMESPACE.finditer(text):
+    for match in _BRACE_OR_NAMESPACE.finditer(code):
         if match.group(0) == '}':
             if opened:
                 opened.pop()
         else:
             opened.append(match.group(1) or '')
-    return '::'.join(name for name in opened if name)
+    return [name for name in opened if name]
 
 
 # the first quoted name of a message: 'cudaMemcpyHostToDevice' of "use of
@@ -901,7 +1000,12 @@ def _qualified(name, text, column):
     match = re.search(r'((?:[A-Za-z_]\w*\s*::\s*)+)$', before)
     if not match:
         return name
-    return re.sub(r'\s+', '', match.group(1)) + name
+    scopes = re.sub(r'\s+', '', match.group(1)).split('::')[:-1]
+    # (`public ::testing::Test`: a keyword before the global scope)
+    while scopes and scopes[0] in _KEYWORDS and \
+            scopes[0] not in ('std', 'rsia_model'):
+        scopes.pop(0)
+    return '::'.join(scopes + [name])
 
 
 def _after(text, column, name):
@@ -1092,6 +1196,14 @@ def _render(repairs, source):
         if kind == NO_OVERRIDE:
             lines += ['#define override', '#define final']
             continue
+        if kind == NO_HASH:
+            continue  # (see TYPE below)
+        if kind == LITERAL:
+            # (a string's, an integer's and a floating literal's forms)
+            lines += [f'::rsia_model::Any& operator""{short}({parameters});'
+                      for parameters in ('const char*, unsigned long',
+                                         'unsigned long long', 'long double')]
+            continue
         if kind.startswith('macro-'):
             definition = {
                 MACRO_VALUE: f'{short}(...) (::rsia_model::any_value())',
@@ -1114,7 +1226,7 @@ def _render(repairs, source):
             body = f'template <class RsiaT> using {short} = ' \
                 'std::allocator<RsiaT>;'
         elif _base_kind(kind) in (TYPE, TEMPLATE):
-            if kind == TYPE:
+            if kind == TYPE and (NO_HASH, name) not in repairs:
                 # a key of std::unordered_map (boost::uuids::uuid)
                 trailer = f' template <> struct std::hash<::{name}> : ' \
                     '::rsia_model::UnknownHash {};'
@@ -1136,7 +1248,7 @@ def _render(repairs, source):
             body = _one_line(catch_all_function(short) + [
                 'template <class... RsiaT, class RsiaR, class... RsiaA>',
                 f'RsiaR {short}(RsiaA...);'])
-        elif kind == CONSTANT:
+        elif kind in (CONSTANT, VALUE):
             value = constant_values.setdefault(name, len(constant_values) + 1)
             body = f'constexpr int {short} = {value};'
         else:

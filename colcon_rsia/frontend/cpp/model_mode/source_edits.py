@@ -14,6 +14,8 @@ where C++ asks for one exact type:
   names;
 - ``f(&msg.indices)`` for a ``std::vector<int> *``, where the address of a
   catch-all is an ``rsia_model::Any *``;
+- ``cond ? "" : any + "/"``, where a string literal and a catch-all have
+  no common type;
 - ``getRPY(pose.orientation)``, where a catch-all converts to the parameter
   of every overload alike and the call is ambiguous;
 - ``correct(params_.get())`` for a ``const Params &``, a class of the
@@ -25,7 +27,8 @@ parsed again with the line edited in memory (libclang's unsaved files,
 never on disk): the lambda returns an ``rsia_model::AnyValue``, the
 ``auto *`` becomes an ``auto``, the ``constexpr`` a ``const``, the binding's
 initializer becomes a value of as many names (see message.h's ``Bound``),
-the ``&`` goes (the catch-all converts to any pointer), the arguments of
+the ``&`` goes (the catch-all converts to any pointer), the string
+literal of a conditional becomes a ``std::string``, the arguments of
 the ambiguous call are cast to the parameters of its first candidate that
 is no template, spelled as clang spells them canonically so that any
 scope can name them (the real build may take another overload; the call
@@ -54,6 +57,9 @@ AUTO_POINTER = 'edit-auto-pointer'    # the `*` of `auto *p` blanked
 CONSTEXPR = 'edit-constexpr'          # `constexpr` made `const`
 BINDING = 'edit-binding'              # `[a, b] = Bound<2>() <<= any`
 ADDRESS = 'edit-address'              # the `&` of `&any` blanked
+# `c ? ::std::string("") : any`: a conditional's string literal made a
+# std::string, at the `?`
+STRING_OPERAND = 'edit-string-operand'
 # `f(static_cast<T>(a))`: a call's arguments cast to one overload's
 # parameters, their types in the kind (`edit-cast:<T1>;<T2>`, quoted)
 CAST = 'edit-cast'
@@ -63,8 +69,8 @@ CAST = 'edit-cast'
 AS = 'edit-as'
 # `target = assigned_as<decltype(target)>(value)`, at the `=`
 ASSIGNED = 'edit-assigned'
-EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS, CAST,
-              AS, ASSIGNED)
+EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS,
+              STRING_OPERAND, CAST, AS, ASSIGNED)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -84,6 +90,10 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
+# (a literal's type is an array: `const char[1]` of "")
+_STRING_OPERAND_ERROR = re.compile(
+    r"^incompatible operand types \('const char\[\d+\]' and '.*'\)$|"
+    r"^incompatible operand types \('.*' and 'const char\[\d+\]'\)$")
 # from a catch-all, or from a class a repair or stand-in declared (the
 # real build converts it, or it would not build); the class as the message
 # spells it: where the code names it
@@ -99,6 +109,14 @@ _NO_MATCH = re.compile(
 _NOT_CONVERTED = re.compile(
     r'^candidate (?:function|constructor) not viable: no known conversion '
     r"from '.*' to '.*' for (\d+)(?:st|nd|rd|th) argument")
+# a template whose parameter a catch-all argument deduces as well as a real
+# one (`pushUniqueVector(lanes, any)` for `(T &, const T &)`)
+_CONFLICTING = re.compile(
+    r'^candidate template ignored: deduced conflicting types for parameter '
+    r"'\w+' \('(.*?)'(?: \(aka '(.*?)'\))? vs\. '(.*?)'(?: \(aka '(.*?)'\))?\)$")
+# a catch-all's type, canonically spelled
+_CATCH_ALL = re.compile(
+    r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?(?: ?&+)?$')
 _NO_ASSIGNMENT = re.compile(r"^no viable overloaded '='$")
 # (at the value assigned: `*log = any` for a `const char *`)
 _NOT_ASSIGNABLE = re.compile(
@@ -164,6 +182,7 @@ def edits_from_diagnostics(diagnostics, read_code):
             CONSTEXPR: _constexpr_keyword,
             BINDING: _binding_names,
             ADDRESS: _address_of,
+            STRING_OPERAND: _question_mark,
         }[kind](masked, offset)
         if anchor is not None:
             at_line, at_column = _position(masked, anchor)
@@ -184,7 +203,7 @@ def needs_notes(message):
 
 
 def edits_from_notes(errors, read_code, *, parameter_types,
-                     parameter_type):
+                     parameter_type, call_arguments=lambda *at: None):
     """{(kind, "file:line:column")}: the edits that need declarations.
 
     Casts that settle ambiguous calls; arguments, initializers and returned
@@ -199,6 +218,9 @@ def edits_from_notes(errors, read_code, *, parameter_types,
       declared at a (file, line, column), spelled canonically; None for a
       template or anything else
     :param parameter_type: the same, of the parameter declared there
+    :param call_arguments: returns [(line, column, canonical type)] of the
+      arguments of the call whose callee is at (file, line, column), on
+      disk; None if there is none
     """
     edits = set()
     masked_of = _masked_reader(read_code)
@@ -237,6 +259,12 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     edits |= _as_parameter_of_argument(
                         masked_of(file), file, line, column, index,
                         types[index])
+                    break
+                match = _CONFLICTING.match(note)
+                if match:
+                    edits |= _as_deduced(
+                        masked_of(file), file, match,
+                        call_arguments(file, line, column))
                     break
         elif _NO_ASSIGNMENT.match(message) or \
                 _NOT_ASSIGNABLE.match(message):
@@ -315,12 +343,43 @@ def _as_parameter_of_argument(masked, file, line, column, index,
     return _as_parameter(masked, file, at_line, at_column, parameter)
 
 
+def _as_deduced(masked, file, conflict, arguments):
+    """The edits that make a call's catch-all arguments its real type.
+
+    The type is the canonical one of the argument clang deduced it from
+    (the note drops its scopes), found by the spelling the note gives.
+    """
+    if masked is None or not arguments:
+        return set()
+    spellings = [conflict.group(2) or conflict.group(1),
+                 conflict.group(4) or conflict.group(3)]
+    real = [_unscoped(t) for t in spellings if not _CATCH_ALL.match(t)]
+    if len(real) != 1:
+        return set()
+    deduced = next((re.sub(r'^const |\s*&+$', '', t)
+                    for _, _, t in arguments
+                    if _unscoped(t) == real[0]), None)
+    if deduced is None:
+        return set()
+    edits = set()
+    for at_line, at_column, argument_type in arguments:
+        if _CATCH_ALL.match(argument_type):
+            edits |= _as_parameter(masked, file, at_line, at_column, deduced)
+    return edits
+
+
+def _unscoped(spelled):
+    """A type's spelling without `const`, references and scopes."""
+    return re.sub(r'\b\w+::|^const |\s*&+$', '', spelled)
+
+
 def _kind_of(message):
     for kind, pattern in ((LAMBDA_RESULT, _LAMBDA_RESULT_ERROR),
                           (AUTO_POINTER, _AUTO_POINTER_ERROR),
                           (CONSTEXPR, _CONSTEXPR_ERROR),
                           (BINDING, _BINDING_ERROR),
-                          (ADDRESS, _ADDRESS_ERROR)):
+                          (ADDRESS, _ADDRESS_ERROR),
+                          (STRING_OPERAND, _STRING_OPERAND_ERROR)):
         if pattern.match(message):
             return kind
     return None
@@ -378,6 +437,12 @@ def disk_column(insertions, line, column):
     return max(1, column - shift)
 
 
+def edited_column(insertions, line, column):
+    """The column in the edited text of a column on disk (see above)."""
+    return column + sum(length for at, length in insertions.get(line, ())
+                        if at <= column)
+
+
 def _changes(kind, masked, offset):
     """[(offset, characters replaced, replacement)] of the edit at offset.
 
@@ -412,6 +477,8 @@ def _changes(kind, masked, offset):
             change = offset, 1, ' '
     elif kind == BINDING:
         change = _bound_initializer(masked, offset)
+    elif kind == STRING_OPERAND:
+        return _string_operand(masked, offset)
     elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
         # only as an inline variable; elsewhere a `const` takes any
@@ -514,6 +581,68 @@ def _bound_initializer(masked, names):
         return after + 1, 0, f' ::rsia_model::Bound<{count}>() <<= '
     if follows[:1] == ':' and follows != '::':
         return after + 1, 0, f' ::rsia_model::BoundEach<{count}>() <<= '
+    return None
+
+
+def _question_mark(masked, offset):
+    """Offset of the `?` of the conditional clang reported, or None."""
+    return offset if masked[offset] == '?' else None
+
+
+def _string_operand(masked, question):
+    """The insertions that make a conditional's literal operand a string.
+
+    The operand that is only white space once literals are masked is the
+    literal (adjacent literals too); it is wrapped whole, its spaces inside
+    the parentheses.
+    """
+    colon = _conditional_colon(masked, question)
+    if colon is None:
+        return []
+    end = _end_of_operand(masked, colon + 1)
+    for start, stop in ((question + 1, colon), (colon + 1, end)):
+        if stop is not None and stop > start and \
+                not masked[start:stop].strip():
+            return [(start, 0, ' ::std::string('), (stop, 0, ')')]
+    return []
+
+
+def _conditional_colon(masked, question):
+    """Offset of the `:` pairing with the `?` at question, or None."""
+    depth = 0
+    nested = 0
+    for i in range(question + 1, min(len(masked), question + _SCAN_LIMIT)):
+        character = masked[i]
+        if character in '([{':
+            depth += 1
+        elif character in ')]};' and depth == 0:
+            return None
+        elif character in ')]}':
+            depth -= 1
+        elif depth == 0 and character == '?':
+            nested += 1
+        elif depth == 0 and character == ':':
+            if masked[i + 1:i + 2] == ':' or masked[i - 1] == ':':
+                continue  # a scope's `::`
+            if not nested:
+                return i
+            nested -= 1
+    return None
+
+
+def _end_of_operand(masked, start):
+    """The offset of the `,`, `;` or closing bracket ending an operand."""
+    depth = 0
+    for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
+        character = masked[i]
+        if character in '([{':
+            depth += 1
+        elif character in ')]}':
+            if depth == 0:
+                return i
+            depth -= 1
+        elif character in ',;' and depth == 0:
+            return i
     return None
 
 

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <string>
 
 namespace boost
 {
@@ -19,6 +20,7 @@ class error_code
 public:
   error_code() noexcept;
   int value() const noexcept;
+  std::string message() const;
   explicit operator bool() const noexcept;
   bool operator!() const noexcept;
 };
@@ -77,6 +79,10 @@ public:
   std::size_t run();
   std::size_t run_one();
   std::size_t poll();
+  // (the error_code forms of older Boost, still in use)
+  std::size_t run(system::error_code & error);
+  std::size_t run_one(system::error_code & error);
+  std::size_t poll(system::error_code & error);
   void stop();
   bool stopped() const;
   void restart();

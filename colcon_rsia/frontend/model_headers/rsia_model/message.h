@@ -204,14 +204,17 @@ struct Braced
 // the braced forms of a function of an unknown library (stubs.py)
 #define RSIA_MODEL_BRACED_FUNCTION(name) \
   RSIA_MODEL_BRACED_OVERLOADS(template <class... RsiaT> ::rsia_model::Any&, name, ;)
-// a member called with template arguments: types (`x.cast<double>()`) or
+// a member called with template arguments: types (`x.cast<double>()`),
 // values (Eigen's `v.head<2>()`; one value at least, so that a call with
-// none is not ambiguous). Of fields (below) and of the classes the repairs
-// declare (repair.py, with `static`)
-#define RSIA_MODEL_MEMBER_TEMPLATE(head, name, tail)             \
-  template <class... RsiaT, class... RsiaA>                      \
-  head ::rsia_model::Any& name(RsiaA&&...) tail;                 \
-  template <long long RsiaN, long long... RsiaM, class... RsiaA> \
+// none is not ambiguous) or a type and values (grid_map's `toImage<unsigned
+// char, 3>(...)`). Of fields (below) and of the classes the repairs declare
+// (repair.py, with `static`)
+#define RSIA_MODEL_MEMBER_TEMPLATE(head, name, tail)                          \
+  template <class... RsiaT, class... RsiaA>                                   \
+  head ::rsia_model::Any& name(RsiaA&&...) tail;                              \
+  template <long long RsiaN, long long... RsiaM, class... RsiaA>              \
+  head ::rsia_model::Any& name(RsiaA&&...) tail;                              \
+  template <class RsiaT, long long RsiaN, long long... RsiaM, class... RsiaA> \
   head ::rsia_model::Any& name(RsiaA&&...) tail;
 
 struct Any : std::vector<AnyElement>
@@ -437,6 +440,10 @@ struct AnyValue : Any
 
 // `std::cout << msg.x << std::endl`
 Any operator<<(const Any&, std::ostream& (*)(std::ostream&));
+// `text += msg.name`: std::string's own += of anything that converts to a
+// string_view ties with the catch-all's; this form takes both exactly and
+// is no template
+std::string& operator+=(std::string&, const Any&);
 
 // The names of a structured binding of a catch-all (`const auto & [id,
 // path] = any`), which C++ decomposes into no names. source_edits.py
@@ -538,6 +545,10 @@ struct Unknown : Fields
   Unknown& operator--();
   Unknown operator++(int);
   Unknown operator--(int);
+  // a begin that takes arguments (Ogre's `object->begin(material,
+  // operation)`), beside the iteration's
+  template <class RsiaA, class... RsiaB>
+  Any& begin(RsiaA&&, RsiaB&&...) const;
   // an image's typed iterators (OpenCV's `image.begin<ushort>()`)
   template <class RsiaT>
   Any* begin() const;
@@ -715,6 +726,16 @@ RsiaS& getline(RsiaS&, basic_string<RsiaC, RsiaT, RsiaA>&, RsiaC);
 // field values as keys of unordered containers (a DiagnosticLevel key)
 namespace std
 {
+// A message's constant the stand-ins know only by name is an int (a
+// `case` label, a number far more often than not); the string constants
+// of a message (`scenario == Scenario::PARKING`) compare with strings.
+// In std, where a comparison of a std::string looks (a namespace of the
+// package declaring an operator== would hide a global one).
+bool operator==(const string&, int);
+bool operator==(int, const string&);
+bool operator!=(const string&, int);
+bool operator!=(int, const string&);
+
 template <>
 struct hash<::rsia_model::AnyValue>
 {
