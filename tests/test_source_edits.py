@@ -13,7 +13,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
-from colcon_rsia.frontend.cpp.model_mode.source_edits import STRING_OPERAND
+from colcon_rsia.frontend.cpp.model_mode.source_edits import OPERAND
 from test_repair import _analyze_one_unit
 
 MISMATCH = ("return type 'double' must match previous return type 'Any' "
@@ -147,26 +147,42 @@ def test_the_address_of_a_catch_all_is_the_catch_all():
                     '  unsigned char * data =  msg.data[0];\n')
 
 
-def test_a_conditionals_string_literal_beside_a_catch_all_is_a_string():
+def test_a_conditionals_operand_takes_the_type_of_the_other():
     code = ('  auto p = unit->path().empty() ? "" : unit->path() + " ";\n'
             '  s = "a" + (ok ? names[i] : "/" "b") + f(x ? y : z);\n'
-            '  t = ok ? std::string("x") : n::label("?:");\n')
+            '  t = ok ? std::string("x") : n::label("?:");\n'
+            '  auto cloud = use ? sub.take() : nullptr;\n'
+            '  const auto l = ok ? status.level : Status::OK;\n')
     message = "incompatible operand types ('{}' and '{}')"
     edits = _edits([(message.format('const char[1]', 'Any'), 1, 33),
                     (message.format('AnyElement', 'const char[3]'), 2, 17),
                     # not a literal's: no edit
-                    (message.format('std::string', 'Any'), 3, 10)], code)
-    assert edits == {(STRING_OPERAND, 'a.cpp:1:33'),
-                     (STRING_OPERAND, 'a.cpp:2:17')}
+                    (message.format('std::string', 'Any'), 3, 10),
+                    ("non-pointer operand type 'Any' incompatible with "
+                     'nullptr', 4, 20),
+                    ("conditional expression is ambiguous; 'DiagnosticLevel' "
+                     "(aka 'rsia_model::AnyValue') can be converted to "
+                     "'const int' and vice versa", 5, 21)], code)
+    string = 'edit-operand:{}:%3A%3Astd%3A%3Astring'
+    value = 'edit-operand:{}:%3A%3Arsia_model%3A%3AAnyValue'
+    assert edits == {(string.format(2), 'a.cpp:1:33'),
+                     (string.format(3), 'a.cpp:2:17'),
+                     (value.format(3), 'a.cpp:4:20'),
+                     (value.format(3), 'a.cpp:5:21')}
+    assert {kind.partition(':')[0] for kind, _ in edits} == {OPERAND}
     # no operand is a literal alone: the code is left as it is
-    edits.add((STRING_OPERAND, 'a.cpp:3:10'))
+    edits.add((string.format(3), 'a.cpp:3:10'))
     text, _ = _edited(edits, code)
     assert text.split('\n') == [
-        '  auto p = unit->path().empty() ? ::std::string( "" ): '
+        '  auto p = unit->path().empty() ? static_cast<::std::string>( "" ): '
         'unit->path() + " ";',
-        '  s = "a" + (ok ? names[i] : ::std::string( "/" "b")) + '
-        'f(x ? y : z);',
-        '  t = ok ? std::string("x") : n::label("?:");', '']
+        '  s = "a" + (ok ? names[i] : static_cast<::std::string>( "/" "b")) '
+        '+ f(x ? y : z);',
+        '  t = ok ? std::string("x") : n::label("?:");',
+        '  auto cloud = use ? sub.take() : static_cast<::rsia_model::AnyValue>'
+        '( nullptr);',
+        '  const auto l = ok ? status.level : static_cast<::rsia_model::'
+        'AnyValue>( Status::OK);', '']
 
 
 def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
@@ -417,4 +433,4 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     assert sorted(k.partition(':')[0] for k in kinds) == sorted([
         ADDRESS, ADDRESS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING, BINDING,
         CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT,
-        STRING_OPERAND])
+        OPERAND])

@@ -14,8 +14,9 @@ where C++ asks for one exact type:
   names;
 - ``f(&msg.indices)`` for a ``std::vector<int> *``, where the address of a
   catch-all is an ``rsia_model::Any *``;
-- ``cond ? "" : any + "/"``, where a string literal and a catch-all have
-  no common type;
+- ``cond ? "" : any + "/"``, ``cond ? any : nullptr``, where an operand
+  and a catch-all have no common type, or ``cond ? level : Status::OK``,
+  where each converts to the other;
 - ``getRPY(pose.orientation)``, where a catch-all converts to the parameter
   of every overload alike and the call is ambiguous;
 - ``correct(params_.get())`` for a ``const Params &``, a class of the
@@ -27,8 +28,9 @@ parsed again with the line edited in memory (libclang's unsaved files,
 never on disk): the lambda returns an ``rsia_model::AnyValue``, the
 ``auto *`` becomes an ``auto``, the ``constexpr`` a ``const``, the binding's
 initializer becomes a value of as many names (see message.h's ``Bound``),
-the ``&`` goes (the catch-all converts to any pointer), the string
-literal of a conditional becomes a ``std::string``, the arguments of
+the ``&`` goes (the catch-all converts to any pointer), the operand of a
+conditional becomes a ``std::string`` (a literal) or a catch-all value
+(``nullptr``, a number), the arguments of
 the ambiguous call are cast to the parameters of its first candidate that
 is no template, spelled as clang spells them canonically so that any
 scope can name them (the real build may take another overload; the call
@@ -57,9 +59,10 @@ AUTO_POINTER = 'edit-auto-pointer'    # the `*` of `auto *p` blanked
 CONSTEXPR = 'edit-constexpr'          # `constexpr` made `const`
 BINDING = 'edit-binding'              # `[a, b] = Bound<2>() <<= any`
 ADDRESS = 'edit-address'              # the `&` of `&any` blanked
-# `c ? ::std::string("") : any`: a conditional's string literal made a
-# std::string, at the `?`
-STRING_OPERAND = 'edit-string-operand'
+# `c ? static_cast<::std::string>("") : any`: an operand of a conditional
+# made a type, at the `?`; which operand and the type in the kind
+# (`edit-operand:3:<T>`, quoted)
+OPERAND = 'edit-operand'
 # `f(static_cast<T>(a))`: a call's arguments cast to one overload's
 # parameters, their types in the kind (`edit-cast:<T1>;<T2>`, quoted)
 CAST = 'edit-cast'
@@ -70,7 +73,7 @@ AS = 'edit-as'
 # `target = assigned_as<decltype(target)>(value)`, at the `=`
 ASSIGNED = 'edit-assigned'
 EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS,
-              STRING_OPERAND, CAST, AS, ASSIGNED)
+              OPERAND, CAST, AS, ASSIGNED)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -90,10 +93,19 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
-# (a literal's type is an array: `const char[1]` of "")
-_STRING_OPERAND_ERROR = re.compile(
-    r"^incompatible operand types \('const char\[\d+\]' and '.*'\)$|"
-    r"^incompatible operand types \('.*' and 'const char\[\d+\]'\)$")
+# the errors of a conditional's operands (a literal's type is an array:
+# `const char[1]` of "")
+_LITERAL_OPERAND_ERROR = re.compile(
+    r"^incompatible operand types \((?:'(const char\[\d+\])' and .*|"
+    r".* and '(const char\[\d+\])')\)$")
+_NULL_OPERAND_ERROR = re.compile(
+    r"^non-pointer operand type '(?:const )?Any(?:Element|Value)?' "
+    'incompatible with nullptr$')
+_MUTUAL_OPERAND_ERROR = re.compile(
+    rf'^conditional expression is ambiguous; ({_TYPE}) can be converted to '
+    rf'({_TYPE}) and vice versa$')
+_STRING = '::std::string'
+_CATCH_ALL_VALUE = '::rsia_model::AnyValue'
 # from a catch-all, or from a class a repair or stand-in declared (the
 # real build converts it, or it would not build); the class as the message
 # spells it: where the code names it
@@ -176,13 +188,15 @@ def edits_from_diagnostics(diagnostics, read_code):
         offset = None if masked is None else _offset(masked, line, column)
         if offset is None:
             continue
+        if kind == OPERAND:
+            edits |= _operand_edit(masked, file, offset, message)
+            continue
         anchor = {
             LAMBDA_RESULT: _lambda_body,
             AUTO_POINTER: _pointer_star,
             CONSTEXPR: _constexpr_keyword,
             BINDING: _binding_names,
             ADDRESS: _address_of,
-            STRING_OPERAND: _question_mark,
         }[kind](masked, offset)
         if anchor is not None:
             at_line, at_column = _position(masked, anchor)
@@ -379,7 +393,9 @@ def _kind_of(message):
                           (CONSTEXPR, _CONSTEXPR_ERROR),
                           (BINDING, _BINDING_ERROR),
                           (ADDRESS, _ADDRESS_ERROR),
-                          (STRING_OPERAND, _STRING_OPERAND_ERROR)):
+                          (OPERAND, _LITERAL_OPERAND_ERROR),
+                          (OPERAND, _NULL_OPERAND_ERROR),
+                          (OPERAND, _MUTUAL_OPERAND_ERROR)):
         if pattern.match(message):
             return kind
     return None
@@ -477,8 +493,17 @@ def _changes(kind, masked, offset):
             change = offset, 1, ' '
     elif kind == BINDING:
         change = _bound_initializer(masked, offset)
-    elif kind == STRING_OPERAND:
-        return _string_operand(masked, offset)
+    elif kind == OPERAND:
+        which, _, type_name = detail.partition(':')
+        type_name = unquote(type_name)
+        spans = _operands(masked, offset)
+        if spans is None:
+            return []
+        start, end = spans[int(which) - 2]
+        # (only a literal is blank once literals are masked)
+        if (not masked[start:end].strip()) != (type_name == _STRING):
+            return []
+        return [(start, 0, f' static_cast<{type_name}>('), (end, 0, ')')]
     elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
         # only as an inline variable; elsewhere a `const` takes any
@@ -584,27 +609,58 @@ def _bound_initializer(masked, names):
     return None
 
 
-def _question_mark(masked, offset):
-    """Offset of the `?` of the conditional clang reported, or None."""
-    return offset if masked[offset] == '?' else None
+def _operand_edit(masked, file, question, message):
+    """The edit that gives one operand of the conditional at `?` a type.
 
-
-def _string_operand(masked, question):
-    """The insertions that make a conditional's literal operand a string.
-
-    The operand that is only white space once literals are masked is the
-    literal (adjacent literals too); it is wrapped whole, its spaces inside
-    the parentheses.
+    A literal beside a catch-all becomes a std::string; a `nullptr` beside
+    one, and a value each converts to (`level` and `Status::OK`), becomes a
+    catch-all value. The literal is the operand that is only white space
+    once literals are masked (adjacent literals too); it is wrapped whole.
     """
+    spans = _operands(masked, question)
+    if spans is None:
+        return set()
+    texts = [masked[start:end].strip() for start, end in spans]
+    which = type_name = None
+    literal = _LITERAL_OPERAND_ERROR.match(message)
+    mutual = _MUTUAL_OPERAND_ERROR.match(message)
+    if literal and (literal.group(1) or literal.group(2)):
+        which, type_name = (2 if literal.group(1) else 3), _STRING
+        if texts[which - 2]:
+            return set()
+    elif _NULL_OPERAND_ERROR.match(message) and 'nullptr' in texts:
+        which, type_name = texts.index('nullptr') + 2, _CATCH_ALL_VALUE
+    elif mutual:
+        catch_alls = [bool(_CATCH_ALL.match(_aliased(t)))
+                      for t in mutual.groups()]
+        if catch_alls in ([True, False], [False, True]):
+            # the other operand becomes the catch-all's
+            which, type_name = 3 if catch_alls[0] else 2, _CATCH_ALL_VALUE
+    if which is None:
+        return set()
+    at_line, at_column = _position(masked, question)
+    return {(f'{OPERAND}:{which}:{quote(type_name, safe="")}',
+             f'{file}:{at_line}:{at_column}')}
+
+
+def _aliased(spelled):
+    """What a message's type names: its aka's type, or its own."""
+    match = re.match(r"^'(.*?)'(?: \(aka '(.*)'\))?$", spelled)
+    return (match.group(2) or match.group(1)) if match else spelled
+
+
+def _operands(masked, question):
+    """[(start, end)] of the second and third operands of a `?`, or None.
+
+    Each with the white space around it.
+    """
+    if masked[question] != '?':
+        return None
     colon = _conditional_colon(masked, question)
-    if colon is None:
-        return []
-    end = _end_of_operand(masked, colon + 1)
-    for start, stop in ((question + 1, colon), (colon + 1, end)):
-        if stop is not None and stop > start and \
-                not masked[start:stop].strip():
-            return [(start, 0, ' ::std::string('), (stop, 0, ')')]
-    return []
+    end = None if colon is None else _end_of_operand(masked, colon + 1)
+    if end is None:
+        return None
+    return [(question + 1, colon), (colon + 1, end)]
 
 
 def _conditional_colon(masked, question):
