@@ -1502,3 +1502,16 @@ bool driving(std::string & current, const grid_like::Map & map,
     tu = _parse(file=source, arguments=['-include', header] + arguments,
                 directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+def test_an_all_caps_name_of_an_unknown_library_is_a_constant(tmp_path):
+    # ceres' enumerators, one without an underscore, beside its classes
+    _assert_parses_clean(tmp_path, (
+        '#include <ceres_like/ceres.h>\n'
+        'int configure(ceres_like::Problem & problem, bool cg)\n'
+        '{\n'
+        '  problem.setSolver(\n'
+        '    cg ? ceres_like::CGNR : ceres_like::SPARSE_NORMAL_CHOLESKY);\n'
+        '  const int type = ceres_like::CGNR;\n'
+        '  return type;\n'
+        '}\n'))

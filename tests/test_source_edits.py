@@ -156,7 +156,7 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
     message = "incompatible operand types ('{}' and '{}')"
     edits = _edits([(message.format('const char[1]', 'Any'), 1, 33),
                     (message.format('AnyElement', 'const char[3]'), 2, 17),
-                    # not a literal's: no edit
+                    # a catch-all beside a class the code names
                     (message.format('std::string', 'Any'), 3, 10),
                     ("non-pointer operand type 'Any' incompatible with "
                      'nullptr', 4, 20),
@@ -167,21 +167,23 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
     value = 'edit-operand:{}:%3A%3Arsia_model%3A%3AAnyValue'
     assert edits == {(string.format(2), 'a.cpp:1:33'),
                      (string.format(3), 'a.cpp:2:17'),
+                     ('edit-operand:3:std%3A%3Astring', 'a.cpp:3:10'),
                      (value.format(3), 'a.cpp:4:20'),
                      (value.format(3), 'a.cpp:5:21')}
     assert {kind.partition(':')[0] for kind, _ in edits} == {OPERAND}
-    # no operand is a literal alone: the code is left as it is
-    edits.add((string.format(3), 'a.cpp:3:10'))
+    # a literal's edit where the operand is no literal changes nothing
+    edits.add((string.format(2), 'a.cpp:3:10'))
     text, _ = _edited(edits, code)
     assert text.split('\n') == [
-        '  auto p = unit->path().empty() ? static_cast<::std::string>( "" ): '
+        '  auto p = unit->path().empty() ? ::rsia_model::as<::std::string>( "" ): '
         'unit->path() + " ";',
-        '  s = "a" + (ok ? names[i] : static_cast<::std::string>( "/" "b")) '
+        '  s = "a" + (ok ? names[i] : ::rsia_model::as<::std::string>( "/" "b")) '
         '+ f(x ? y : z);',
-        '  t = ok ? std::string("x") : n::label("?:");',
-        '  auto cloud = use ? sub.take() : static_cast<::rsia_model::AnyValue>'
+        '  t = ok ? std::string("x") : ::rsia_model::as<std::string>( '
+        'n::label("?:"));',
+        '  auto cloud = use ? sub.take() : ::rsia_model::as<::rsia_model::AnyValue>'
         '( nullptr);',
-        '  const auto l = ok ? status.level : static_cast<::rsia_model::'
+        '  const auto l = ok ? status.level : ::rsia_model::as<::rsia_model::'
         'AnyValue>( Status::OK);', '']
 
 
@@ -270,6 +272,65 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     '  return tracker;\n')
 
 
+def test_a_constant_passed_for_a_string_is_made_one():
+    # a message's constant the model made an int (bond's parameter names
+    # are strings); clang's note gives the parameter's type with its alias
+    code = '  declare_parameter(bond::msg::Constants::TIMEOUT_PARAM, true);\n'
+    note = ("candidate function not viable: no known conversion from 'const "
+            "int' to 'const std::string' (aka 'const basic_string<char>') "
+            'for 1st argument')
+    edits = source_edits.edits_from_notes(
+        [("no matching member function for call to 'declare_parameter'",
+          'a.cpp', 1, 3, [(note, 'node.hpp', 131, 34)])],
+        lambda file: code,
+        parameter_types=lambda *at: {('node.hpp', 131, 34): [
+            'const std::basic_string<char> &', 'bool']}.get(at),
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text == (
+        '  declare_parameter(::rsia_model::as<const std::basic_string<char>>'
+        '(bond::msg::Constants::TIMEOUT_PARAM), true);\n')
+
+
+def test_a_pointer_to_a_derived_class_of_an_unknown_library_converts():
+    # the model's classes of ceres and Qt know no base classes
+    code = ('  return new ceres::AutoDiffParam<Angle, 1, 1>;\n'
+            '  group->addButton(button);\n'
+            '  ceres::Param * p = make();\n'
+            '  unsigned char * data = bytes();\n')
+    message = ("cannot initialize {} of type '{}' with an {} of type '{}'")
+    edits = _edits([
+        (message.format('return object', 'ceres::Param *', 'rvalue',
+                        'ceres::AutoDiffParam<Angle, 1, 1> *'), 1, 10),
+        (message.format('a parameter', 'QAbstractButton *', 'lvalue',
+                        'CustomButton *') + " (aka 'acme::CustomButton *')",
+         2, 20),  # (no edit: the code does not name the class wanted)
+        (message.format('a variable', 'ceres::Param *', 'rvalue',
+                        'Other *'), 3, 18),
+        # a pointer of C++'s own types: not a class the code names
+        (message.format('a variable', 'unsigned char *', 'rvalue',
+                        'Any *'), 4, 19)], code)
+    assert len(edits) == 2
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[0] == (
+        '  return ::rsia_model::as<ceres::Param *>('
+        'new ceres::AutoDiffParam<Angle, 1, 1>);')
+    assert text.split('\n')[2] == \
+        '  ceres::Param * p = ::rsia_model::as<ceres::Param *>(make());'
+
+
+def test_an_argument_of_a_new_class_is_made_that_class():
+    # clang reports `new Handle(any)` at the class
+    code = '  HandlePtr rt_goal(new Handle(gh));\n'
+    edits = source_edits.edits_from_notes(
+        [("no viable conversion from 'Any' to 'Handle'", 'a.cpp', 1, 25, [])],
+        lambda file: code, parameter_types=lambda *at: None,
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text == \
+        '  HandlePtr rt_goal(new Handle(::rsia_model::as<Handle>(gh)));\n'
+
+
 def test_a_catch_all_argument_takes_the_type_its_template_deduces():
     # `template <class T> void push(T &, const T &)` given a vector and a
     # catch-all: the catch-all is made the vector
@@ -307,16 +368,22 @@ def test_a_value_assigned_is_made_of_its_targets_type():
     code = ('  debug.obstacles[0] = params->polygons;\n'
             '  if (x) y = z;\n'
             '  a == b;\n'
-            '  if (log) {*log = handler->result(code);}\n')
+            '  if (log) {*log = handler->result(code);}\n'
+            '  loss_ = new ceres::HuberLoss(0.7);\n')
     message = "no viable overloaded '='"
     edits = source_edits.edits_from_notes(
         [(message, 'a.cpp', 1, 22, []), (message, 'a.cpp', 2, 12, []),
          (message, 'a.cpp', 3, 5, []),
          # at the value (a catch-all, which converts to no `const char *`)
          ("assigning to 'const char *' from incompatible type 'Any'",
-          'a.cpp', 4, 20, [])], lambda file: code,
+          'a.cpp', 4, 20, []),
+         # a pointer to a class of an unknown library, with no base
+         ("incompatible pointer types assigning to 'ceres::LossFunction *' "
+          "from 'ceres::HuberLoss *'", 'a.cpp', 5, 11, [])],
+        lambda file: code,
         parameter_types=lambda *at: None, parameter_type=lambda *at: None)
-    assert edits == {(ASSIGNED, 'a.cpp:1:22'), (ASSIGNED, 'a.cpp:4:18')}
+    assert edits == {(ASSIGNED, 'a.cpp:1:22'), (ASSIGNED, 'a.cpp:4:18'),
+                     (ASSIGNED, 'a.cpp:5:9')}
     text, _ = _edited(edits, code)
     assert text.split('\n')[0] == (
         '  debug.obstacles[0] = '

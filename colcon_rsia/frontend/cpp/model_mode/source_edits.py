@@ -59,8 +59,8 @@ AUTO_POINTER = 'edit-auto-pointer'    # the `*` of `auto *p` blanked
 CONSTEXPR = 'edit-constexpr'          # `constexpr` made `const`
 BINDING = 'edit-binding'              # `[a, b] = Bound<2>() <<= any`
 ADDRESS = 'edit-address'              # the `&` of `&any` blanked
-# `c ? static_cast<::std::string>("") : any`: an operand of a conditional
-# made a type, at the `?`; which operand and the type in the kind
+# `c ? as<::std::string>("") : any`: an operand of a conditional made a
+# type, at the `?`; which operand and the type in the kind
 # (`edit-operand:3:<T>`, quoted)
 OPERAND = 'edit-operand'
 # `f(static_cast<T>(a))`: a call's arguments cast to one overload's
@@ -93,6 +93,13 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
+# a pointer to a class a repair declared where the real class derives from
+# the one wanted (`return new ceres::AutoDiffLocalParameterization<...>;`
+# for a `ceres::LocalParameterization *`)
+_POINTER_MISMATCH = re.compile(
+    r'^cannot initialize (return object|a variable|a parameter) of type '
+    r"'([^']*\*)'(?: \(aka '[^']*'\))? with an [lr]value of type "
+    r"'[^']*\*'(?: \(aka '[^']*'\))?$")
 # the errors of a conditional's operands (a literal's type is an array:
 # `const char[1]` of "")
 _LITERAL_OPERAND_ERROR = re.compile(
@@ -101,6 +108,9 @@ _LITERAL_OPERAND_ERROR = re.compile(
 _NULL_OPERAND_ERROR = re.compile(
     r"^non-pointer operand type '(?:const )?Any(?:Element|Value)?' "
     'incompatible with nullptr$')
+# (a catch-all beside a class the code names: `ok ? goal.value() : make()`)
+_OTHER_OPERAND_ERROR = re.compile(
+    rf'^incompatible operand types \(({_TYPE}) and ({_TYPE})\)$')
 _MUTUAL_OPERAND_ERROR = re.compile(
     rf'^conditional expression is ambiguous; ({_TYPE}) can be converted to '
     rf'({_TYPE}) and vice versa$')
@@ -120,7 +130,7 @@ _NO_MATCH = re.compile(
 # make the parameter's
 _NOT_CONVERTED = re.compile(
     r'^candidate (?:function|constructor) not viable: no known conversion '
-    r"from '.*' to '.*' for (\d+)(?:st|nd|rd|th) argument")
+    rf'from {_TYPE} to {_TYPE} for (\d+)(?:st|nd|rd|th) argument')
 # a template whose parameter a catch-all argument deduces as well as a real
 # one (`pushUniqueVector(lanes, any)` for `(T &, const T &)`)
 _CONFLICTING = re.compile(
@@ -131,9 +141,13 @@ _CATCH_ALL = re.compile(
     r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?(?: ?&+)?$')
 _NO_ASSIGNMENT = re.compile(r"^no viable overloaded '='$")
 # (at the value assigned: `*log = any` for a `const char *`)
+# (or a pointer to a class of an unknown library to its real base's:
+# `loss_ = new ceres::HuberLoss(0.7)` for a `ceres::LossFunction *`)
 _NOT_ASSIGNABLE = re.compile(
     r"^assigning to '.*' from incompatible type "
-    r"'(?:const )?(?:::)?(?:rsia_model::)?Any(?:Element|Value)?'$")
+    r"'(?:const )?(?:::)?(?:rsia_model::)?Any(?:Element|Value)?'$|"
+    r"^incompatible pointer types assigning to '[^']*\*'"
+    r"(?: \(aka '[^']*'\))? from '[^']*\*'(?: \(aka '[^']*'\))?$")
 # what an assignment's target may be: a name, members, subscripts, getters
 _TARGET = re.compile(
     r'^\*?\s*[A-Za-z_]\w*(?:\s*(?:\.|->|::)\s*[A-Za-z_]\w*|'
@@ -182,6 +196,11 @@ def edits_from_diagnostics(diagnostics, read_code):
     masked_of = _masked_reader(read_code)
     for message, file, line, column in diagnostics:
         kind = _kind_of(message)
+        pointer = _POINTER_MISMATCH.match(message)
+        if pointer and file and ' ' not in file and \
+                not _ADDRESS_ERROR.match(message):
+            edits |= _as_pointer(masked_of(file), file, line, column, pointer)
+            continue
         if kind is None or not file or ' ' in file:
             continue  # (a repair header's entry is one word)
         masked = masked_of(file)
@@ -262,7 +281,12 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     message).group(1))
                 if 'returned value' not in message:
                     line, column = _initializer_of(masked, line, column)
-            edits |= _as_parameter(masked, file, line, column, parameter)
+            if _after_new(masked, line, column):
+                # `new Handle(any)`, at the class: the argument becomes one
+                edits |= _as_parameter_of_argument(
+                    masked, file, line, column, 0, parameter)
+            else:
+                edits |= _as_parameter(masked, file, line, column, parameter)
         elif _NO_MATCH.match(message):
             # at the callee; the argument in a candidate's note
             for note, *candidate in notes:
@@ -307,6 +331,26 @@ def _assignment(masked, equals):
     end = None if masked[value:value + 1] == '{' else \
         _end_of_argument(masked, value)
     return None if end is None else (target, value, end)
+
+
+def _as_pointer(masked, file, line, column, mismatch):
+    """The edit that makes a pointer the pointer type a message wants.
+
+    The type as the message spells it, if the code names it so (see
+    :func:`_named_in`); at a variable, its initializer.
+    """
+    if masked is None:
+        return set()
+    wanted = _named_in(masked, mismatch.group(2))
+    if mismatch.group(1) == 'a variable':
+        line, column = _initializer_of(masked, line, column)
+    return _as_parameter(masked, file, line, column, wanted)
+
+
+def _after_new(masked, line, column):
+    """Whether the code at (line, column) follows a `new`."""
+    offset = None if masked is None else _offset(masked, line, column)
+    return offset is not None and _word_before(masked, offset) == 'new'
 
 
 def _named_in(masked, spelled):
@@ -395,6 +439,7 @@ def _kind_of(message):
                           (ADDRESS, _ADDRESS_ERROR),
                           (OPERAND, _LITERAL_OPERAND_ERROR),
                           (OPERAND, _NULL_OPERAND_ERROR),
+                          (OPERAND, _OTHER_OPERAND_ERROR),
                           (OPERAND, _MUTUAL_OPERAND_ERROR)):
         if pattern.match(message):
             return kind
@@ -503,7 +548,7 @@ def _changes(kind, masked, offset):
         # (only a literal is blank once literals are masked)
         if (not masked[start:end].strip()) != (type_name == _STRING):
             return []
-        return [(start, 0, f' static_cast<{type_name}>('), (end, 0, ')')]
+        return [(start, 0, f' ::rsia_model::as<{type_name}>('), (end, 0, ')')]
     elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
         # only as an inline variable; elsewhere a `const` takes any
@@ -537,9 +582,17 @@ def _end_of_argument(masked, start):
     if masked[start].isspace() or masked[start] in ',)':
         return None
     depth = 0
+    skip_to = start
     for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
+        if i < skip_to:
+            continue
         character = masked[i]
-        if character in '([{':
+        if character == '<' and i > start and \
+                (masked[i - 1].isalnum() or masked[i - 1] == '_'):
+            # template arguments, written against the name (`T<A, 1>`;
+            # a comparison has spaces): their commas end nothing
+            skip_to = end_of_template_arguments(masked, i) or i
+        elif character in '([{':
             depth += 1
         elif character in ')]}':
             if depth == 0:
@@ -636,7 +689,15 @@ def _operand_edit(masked, file, question, message):
         if catch_alls in ([True, False], [False, True]):
             # the other operand becomes the catch-all's
             which, type_name = 3 if catch_alls[0] else 2, _CATCH_ALL_VALUE
-    if which is None:
+    elif _OTHER_OPERAND_ERROR.match(message):
+        types = _OTHER_OPERAND_ERROR.match(message).groups()
+        catch_alls = [bool(_CATCH_ALL.match(_aliased(t))) for t in types]
+        if catch_alls in ([True, False], [False, True]):
+            # the catch-all becomes the other's class, as the code names it
+            which = 2 if catch_alls[0] else 3
+            spelled = re.match(r"^'(.*?)'", types[3 - which]).group(1)
+            type_name = _named_in(masked, re.sub(r'^const ', '', spelled))
+    if which is None or type_name is None:
         return set()
     at_line, at_column = _position(masked, question)
     return {(f'{OPERAND}:{which}:{quote(type_name, safe="")}',

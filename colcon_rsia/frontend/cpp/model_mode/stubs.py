@@ -300,8 +300,11 @@ def _unknown_namespaces(stubs, codes):
                         # a class template: the repairs declare it with
                         # the parameters of its use
                         class_templates.add((name, member))
-                elif member or CAMEL.match(name) or (
+                elif member or (CAMEL.match(name) and
+                                not _ALL_CAPS.match(name)) or (
                         after and not name.isupper()):
+                    # (ceres::CGNR, an enumerator, is a constant; a class
+                    # has lower-case letters)
                     members = types.setdefault(name, set())
                     if member and member_ok(member):
                         members.add(member)

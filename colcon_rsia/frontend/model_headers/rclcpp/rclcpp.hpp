@@ -90,6 +90,18 @@ typedef int32_t rcl_ret_t;
 typedef int32_t rmw_ret_t;
 #define RCL_RET_OK 0
 #define RCL_RET_ERROR 1
+// rcl/arguments.h: the flags of the ROS command line (a launcher or a
+// manager composes them: `args.push_back(RCL_ROS_ARGS_FLAG)`)
+#define RCL_ROS_ARGS_FLAG "--ros-args"
+#define RCL_ROS_ARGS_EXPLICIT_END_TOKEN "--"
+#define RCL_PARAM_FLAG "--param"
+#define RCL_SHORT_PARAM_FLAG "-p"
+#define RCL_PARAM_FILE_FLAG "--params-file"
+#define RCL_REMAP_FLAG "--remap"
+#define RCL_SHORT_REMAP_FLAG "-r"
+#define RCL_ENCLAVE_FLAG "--enclave"
+#define RCL_SHORT_ENCLAVE_FLAG "-e"
+#define RCL_LOG_LEVEL_FLAG "--log-level"
 #define RMW_RET_OK 0
 #define RMW_RET_ERROR 1
 enum rmw_qos_reliability_policy_t
