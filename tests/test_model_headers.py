@@ -1515,3 +1515,35 @@ def test_an_all_caps_name_of_an_unknown_library_is_a_constant(tmp_path):
         '  const int type = ceres_like::CGNR;\n'
         '  return type;\n'
         '}\n'))
+
+
+def test_every_form_of_rclcpps_logging_macros(tmp_path):
+    # the stream forms build their text with an ostream
+    _assert_parses_clean(tmp_path, (
+        '#include <string>\n'
+        '#include <rclcpp/rclcpp.hpp>\n'
+        'void report(rclcpp::Node & node, const std::string & frame)\n'
+        '{\n'
+        '  RCLCPP_ERROR_STREAM_THROTTLE(node.get_logger(), *node.get_clock(),'
+        ' 1000, "no transform from " << frame);\n'
+        '  RCLCPP_DEBUG_STREAM_ONCE(node.get_logger(), "frame " << frame);\n'
+        '  RCLCPP_FATAL_STREAM_EXPRESSION(node.get_logger(), frame.empty(),'
+        ' "empty " << frame);\n'
+        '  RCLCPP_WARN_SKIPFIRST_THROTTLE(node.get_logger(), '
+        '*node.get_clock(), 500, "late %s", frame.c_str());\n'
+        '  RCLCPP_INFO_FUNCTION(node.get_logger(), nullptr, "%d", 1);\n'
+        '}\n'))
+
+
+def test_a_field_compares_with_an_optional_of_its_type(tmp_path):
+    # std::optional's own comparisons with its value, not the catch-all's
+    _assert_parses_clean(tmp_path, (
+        '#include <optional>\n'
+        '#include <diag_like_msgs/msg/status.hpp>\n'
+        'using Level = diag_like_msgs::msg::Status::_level_type;\n'
+        'bool changed(const Level level, std::optional<Level> & last)\n'
+        '{\n'
+        '  if (level == last) return false;\n'
+        '  last = level;\n'
+        '  return last != level || level < 2;\n'
+        '}\n'))

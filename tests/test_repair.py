@@ -384,6 +384,16 @@ def test_a_member_of_an_unknown_librarys_class_goes_into_its_repair():
         == {('member-type', 'pcl::PointCloud::ConstPtr')}
 
 
+def test_a_scope_inside_a_repaired_class_is_a_nested_type(tmp_path):
+    # `Estimator::Direction::MAXIMIZE`: clang says Direction is no scope
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'Estimator'), ('namespace', 'Estimator::Direction')})
+    assert repair.read_repairs(str(header)) == {
+        ('type', 'Estimator'), ('member-type', 'Estimator::Direction')}
+    assert 'using Direction = ::rsia_model::Unknown;' in header.read_text()
+
+
 def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):
     header = tmp_path / 'repair.h'
     repair.add_repairs(str(header), 'a.cpp', {

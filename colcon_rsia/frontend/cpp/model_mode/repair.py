@@ -473,8 +473,10 @@ def _one_kind_each(repairs):
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
         if owner in classes and kind not in MEMBER_KINDS + INCLUDES:
-            kind = MEMBER_TYPE if _base_kind(kind) in (TYPE, TEMPLATE) \
-                else MEMBER
+            # (a scope inside a class, `Estimator::Direction::MAXIMIZE`,
+            # is a nested type)
+            kind = MEMBER_TYPE if _base_kind(kind) in (
+                TYPE, TEMPLATE, NAMESPACE) else MEMBER
         elif any(name.startswith(c + '::') for c in classes if c != owner):
             continue  # deeper inside a class: not declarable from outside
         elif owner is None and name in qualified and \

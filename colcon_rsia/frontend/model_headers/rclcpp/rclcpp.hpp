@@ -1861,4 +1861,88 @@ void rsia_model_rclcpp_log(...);
 #define RCLCPP_WARN_STREAM_THROTTLE(logger, clock, ms, stream) \
   RSIA_MODEL_RCLCPP_STREAM(logger, stream)
 
+// the other forms of rclcpp/logging.hpp, for each severity (the model
+// evaluates the arguments; the conditions, once and throttle are
+// the log's, not the node's rate)
+#define RCLCPP_DEBUG_FUNCTION(logger, function, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, function, __VA_ARGS__)
+#define RCLCPP_DEBUG_SKIPFIRST_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_DEBUG_STREAM_ONCE(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_DEBUG_STREAM_EXPRESSION(logger, expression, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_DEBUG_STREAM_FUNCTION(logger, function, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_DEBUG_STREAM_SKIPFIRST(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_DEBUG_STREAM_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_DEBUG_STREAM_SKIPFIRST_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_FUNCTION(logger, function, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, function, __VA_ARGS__)
+#define RCLCPP_INFO_SKIPFIRST_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_INFO_STREAM_ONCE(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM_EXPRESSION(logger, expression, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM_FUNCTION(logger, function, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM_SKIPFIRST(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_INFO_STREAM_SKIPFIRST_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_FUNCTION(logger, function, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, function, __VA_ARGS__)
+#define RCLCPP_WARN_SKIPFIRST_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_WARN_STREAM_ONCE(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM_EXPRESSION(logger, expression, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM_FUNCTION(logger, function, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM_SKIPFIRST(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_WARN_STREAM_SKIPFIRST_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_FUNCTION(logger, function, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, function, __VA_ARGS__)
+#define RCLCPP_ERROR_SKIPFIRST_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_ERROR_STREAM_ONCE(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM_EXPRESSION(logger, expression, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM_FUNCTION(logger, function, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM_SKIPFIRST(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_ERROR_STREAM_SKIPFIRST_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_EXPRESSION(logger, expression, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, expression, __VA_ARGS__)
+#define RCLCPP_FATAL_FUNCTION(logger, function, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, function, __VA_ARGS__)
+#define RCLCPP_FATAL_SKIPFIRST(logger, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, __VA_ARGS__)
+#define RCLCPP_FATAL_SKIPFIRST_THROTTLE(logger, clock, ms, ...) \
+  RSIA_MODEL_RCLCPP_LOG(logger, clock, ms, __VA_ARGS__)
+#define RCLCPP_FATAL_STREAM_ONCE(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM_EXPRESSION(logger, expression, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM_FUNCTION(logger, function, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM_SKIPFIRST(logger, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+#define RCLCPP_FATAL_STREAM_SKIPFIRST_THROTTLE(logger, clock, ms, stream) \
+  RSIA_MODEL_RCLCPP_STREAM(logger, stream)
+
 #endif  // RSIA_MODEL_RCLCPP_RCLCPP_HPP

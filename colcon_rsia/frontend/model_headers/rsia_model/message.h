@@ -338,11 +338,37 @@ long switch_value(const Any&);
 // a call needs: every static_assert after this point asserts nothing.
 #define static_assert(...) static_assert(true, "")
 
+// (a std::optional's comparisons with its value are std's: `level ==
+// prev_level_` of a field and a std::optional of its type would tie)
+template <class RsiaV>
+struct is_optional : std::false_type
+{
+};
+#if __cplusplus >= 201703L
+}  // namespace rsia_model
+namespace std
+{
+template <class RsiaV>
+class optional;
+}  // namespace std
+namespace rsia_model
+{
+template <class RsiaV>
+struct is_optional<std::optional<RsiaV>> : std::true_type
+{
+};
+#endif
+template <class RsiaV>
+using NotAnyNorOptional = typename std::enable_if<
+    !std::is_base_of<Any, typename std::decay<RsiaV>::type>::value &&
+        !is_optional<typename std::decay<RsiaV>::type>::value,
+    int>::type;
+
 #define RSIA_MODEL_ANY_BINARY_(op, result)              \
   result operator op(const Any&, const Any&);           \
-  template <class RsiaV, NotAny<RsiaV> = 0>             \
+  template <class RsiaV, NotAnyNorOptional<RsiaV> = 0>  \
   result operator op(const Any&, RsiaV&&);              \
-  template <class RsiaV, NotAny<RsiaV> = 0>             \
+  template <class RsiaV, NotAnyNorOptional<RsiaV> = 0>  \
   result operator op(RsiaV&&, const Any&);
 
 RSIA_MODEL_ANY_BINARY_(+, Any)
