@@ -515,7 +515,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         return source_edits.disk_column(
             edited.get(file, (None, {}))[1], line, column)
 
-    def _on_disk(file, arguments):
+    def on_disk(file, arguments):
         return None if arguments is None else [
             (line, disk_column(file, line, column), argument_type)
             for line, column, argument_type in arguments]
@@ -553,7 +553,7 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
             read_code,
             parameter_types=lambda *at: parameter_types(tu, *at),
             parameter_type=lambda *at: parameter_type(tu, *at),
-            call_arguments=lambda file, line, column: _on_disk(
+            call_arguments=lambda file, line, column: on_disk(
                 file, call_arguments(tu, file, line, source_edits.edited_column(
                     edited.get(file, (None, {}))[1], line, column))))
         # one edit a place: one made in an earlier round stays (a second

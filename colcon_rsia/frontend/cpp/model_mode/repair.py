@@ -618,7 +618,7 @@ def _extern_names(text):
 
 
 _ENUM_BODY = re.compile(r'\benum\s+(?!class\b|struct\b)\w*\s*(?::[^{;]*)?\{([^}]*)\}')
-_global_enumerators = {}
+_global_enumerators = []  # [{enumerator: model header}], read once
 
 
 def _global_enumerator_header(name):
@@ -631,6 +631,7 @@ def _global_enumerator_header(name):
     texts = _model_header_texts()
     with _shared_lock:
         if not _global_enumerators:
+            headers = {}
             for path, text in texts:
                 code = _SOURCE_NOISE.sub(' ', text)
                 for match in _ENUM_BODY.finditer(code):
@@ -639,9 +640,9 @@ def _global_enumerator_header(name):
                     for enumerator in match.group(1).split(','):
                         word = enumerator.split('=')[0].strip()
                         if word:
-                            _global_enumerators.setdefault(word, path)
-            _global_enumerators.setdefault(None, None)  # read once
-        return _global_enumerators.get(name)
+                            headers.setdefault(word, path)
+            _global_enumerators.append(headers)
+        return _global_enumerators[0].get(name)
 
 
 def model_header_for(name):

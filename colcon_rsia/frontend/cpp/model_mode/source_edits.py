@@ -21,7 +21,12 @@ where C++ asks for one exact type:
   of every overload alike and the call is ambiguous;
 - ``correct(params_.get())`` for a ``const Params &``, a class of the
   package that no catch-all converts to, and assignments of the classes a
-  repair declared to real ones (``obstacles = constraints.polygons``).
+  repair declared to real ones (``obstacles = constraints.polygons``);
+- ``pushUniqueVector(lanes, any)`` for ``(T &, const T &)``, where the
+  catch-all deduces another ``T``;
+- ``return new ceres::AutoDiffLocalParameterization<...>;`` for a
+  ``ceres::LocalParameterization *``, where the repaired classes know no
+  base classes.
 
 The real build has the real types and none of these errors. So the unit is
 parsed again with the line edited in memory (libclang's unsaved files,
@@ -35,8 +40,10 @@ the ambiguous call are cast to the parameters of its first candidate that
 is no template, spelled as clang spells them canonically so that any
 scope can name them (the real build may take another overload; the call
 and its arguments are there for the facts either way), an argument
-passed to a class parameter becomes ``rsia_model::as<Params>(arg)``, the
-value assigned ``rsia_model::assigned_as<decltype(target)>(value)``. An edit never
+passed to a class parameter becomes ``rsia_model::as<Params>(arg)`` (so
+does one beside a real argument of a template, with that argument's type,
+and a pointer where the code names the pointer wanted), the value
+assigned ``rsia_model::assigned_as<decltype(target)>(value)``. An edit never
 adds or removes a line break, so every fact keeps its file and line.
 
 An edit is kept in the unit's repair header like a declaration, as
@@ -667,8 +674,9 @@ def _operand_edit(masked, file, question, message):
 
     A literal beside a catch-all becomes a std::string; a `nullptr` beside
     one, and a value each converts to (`level` and `Status::OK`), becomes a
-    catch-all value. The literal is the operand that is only white space
-    once literals are masked (adjacent literals too); it is wrapped whole.
+    catch-all value; a catch-all beside a class the code names becomes
+    that class. The literal is the operand that is only white space once
+    literals are masked (adjacent literals too); it is wrapped whole.
     """
     spans = _operands(masked, question)
     if spans is None:
