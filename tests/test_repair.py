@@ -2,6 +2,8 @@
 # Licensed under the Apache License, Version 2.0
 """The self-completing model mode, and failures that stay local."""
 
+import re
+
 from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend.cpp.model_mode import repair
 from colcon_rsia.frontend.cpp.walker import _Walker
@@ -392,6 +394,20 @@ def test_a_scope_inside_a_repaired_class_is_a_nested_type(tmp_path):
     assert repair.read_repairs(str(header)) == {
         ('type', 'Estimator'), ('member-type', 'Estimator::Direction')}
     assert 'using Direction = ::rsia_model::Unknown;' in header.read_text()
+
+
+def test_constant_members_of_a_repaired_class_are_distinct_ints(tmp_path):
+    # TensorRT's `case (nvinfer1::CalibrationAlgoType::kLEGACY_...):`
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'trt::Algo'), ('member', 'trt::Algo::kLEGACY'),
+        ('member', 'trt::Algo::kENTROPY'), ('member', 'trt::Algo::MAX_N'),
+        ('member', 'trt::Algo::instance')})
+    text = header.read_text()
+    values = re.findall(r'static constexpr int (\w+) = (\d+);', text)
+    assert {name for name, _ in values} == {'kLEGACY', 'kENTROPY', 'MAX_N'}
+    assert len({value for _, value in values}) == 3
+    assert 'static ::rsia_model::Any instance;' in text
 
 
 def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):

@@ -1236,7 +1236,9 @@ def _render(repairs, source):
             body = _one_line(catch_all_class(
                 short, head=template_head(kind) if kind != TYPE else '',
                 members=[{
-                    MEMBER: f'static ::rsia_model::Any {m};',
+                    MEMBER: _member_value(
+                        m, lambda: constant_values.setdefault(
+                            f'{name}::{m}', len(constant_values) + 1)),
                     MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
                     MEMBER_TEMPLATE:
                         f'RSIA_MODEL_MEMBER_TEMPLATE(static, {m}, )',
@@ -1265,6 +1267,19 @@ def _render(repairs, source):
                   f'{opening} {body} {closing}{trailer}'.strip(), '#endif']
     lines.append('')
     return '\n'.join(lines)
+
+
+def _member_value(member, value):
+    """The declaration of a static member of a class a repair declared.
+
+    A constant by its name (`kLEGACY_CALIBRATION`, `MAX_SIZE`: an
+    enumerator of the real class, a `case` label) is a distinct int;
+    any other a catch-all.
+    """
+    if _K_CONSTANT.match(member) or (_ALL_CAPS.match(member) and
+                                     len(member) > 1):
+        return f'static constexpr int {member} = {value()};'
+    return f'static ::rsia_model::Any {member};'
 
 
 def _one_line(lines):
