@@ -427,14 +427,7 @@ struct element_target<std::initializer_list<RsiaV>> : std::false_type
 {
 };
 #if __cplusplus >= 201703L
-}  // namespace rsia_model
-namespace std
-{
-template <class RsiaV>
-class optional;
-}  // namespace std
-namespace rsia_model
-{
+// (std::optional is declared above, for is_optional)
 template <class RsiaV>
 struct element_target<std::optional<RsiaV>> : std::false_type
 {
