@@ -152,7 +152,8 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
             '  s = "a" + (ok ? names[i] : "/" "b") + f(x ? y : z);\n'
             '  t = ok ? std::string("x") : n::label("?:");\n'
             '  auto cloud = use ? sub.take() : nullptr;\n'
-            '  const auto l = ok ? status.level : Status::OK;\n')
+            '  const auto l = ok ? status.level : Status::OK;\n'
+            '  const auto m = ok ? status.level : Limits<int, 2>::MAX;\n')
     message = "incompatible operand types ('{}' and '{}')"
     edits = _edits([(message.format('const char[1]', 'Any'), 1, 33),
                     (message.format('AnyElement', 'const char[3]'), 2, 17),
@@ -162,14 +163,19 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
                      'nullptr', 4, 20),
                     ("conditional expression is ambiguous; 'DiagnosticLevel' "
                      "(aka 'rsia_model::AnyValue') can be converted to "
-                     "'const int' and vice versa", 5, 21)], code)
+                     "'const int' and vice versa", 5, 21),
+                    # (template arguments end no operand)
+                    ("conditional expression is ambiguous; 'AnyValue' can "
+                     "be converted to 'const int' and vice versa", 6, 21)],
+                   code)
     string = 'edit-operand:{}:%3A%3Astd%3A%3Astring'
     value = 'edit-operand:{}:%3A%3Arsia_model%3A%3AAnyValue'
     assert edits == {(string.format(2), 'a.cpp:1:33'),
                      (string.format(3), 'a.cpp:2:17'),
                      ('edit-operand:3:std%3A%3Astring', 'a.cpp:3:10'),
                      (value.format(3), 'a.cpp:4:20'),
-                     (value.format(3), 'a.cpp:5:21')}
+                     (value.format(3), 'a.cpp:5:21'),
+                     (value.format(3), 'a.cpp:6:21')}
     assert {kind.partition(':')[0] for kind, _ in edits} == {OPERAND}
     # a literal's edit where the operand is no literal changes nothing
     edits.add((string.format(2), 'a.cpp:3:10'))
@@ -184,7 +190,9 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
         '  auto cloud = use ? sub.take() : ::rsia_model::as<::rsia_model::AnyValue>'
         '( nullptr);',
         '  const auto l = ok ? status.level : ::rsia_model::as<::rsia_model::'
-        'AnyValue>( Status::OK);', '']
+        'AnyValue>( Status::OK);',
+        '  const auto m = ok ? status.level : ::rsia_model::as<::rsia_model::'
+        'AnyValue>( Limits<int, 2>::MAX);', '']
 
 
 def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():

@@ -584,11 +584,29 @@ def _casts(masked, callee, types):
 def _end_of_argument(masked, start):
     """The end of the argument or initializer that starts at start.
 
-    Before the `,`, `)` or `;` that ends it.
+    Before the `,`, `)` or `;` that ends it; None when a block (a `;`
+    inside brackets) comes first.
     """
     if masked[start].isspace() or masked[start] in ',)':
         return None
+    ending = _expression_end(masked, start)
+    if ending is None:
+        return None
+    end, inner_statement = ending
+    if inner_statement or masked[end] in ']}':
+        return None
+    return _end_before(masked, end)
+
+
+def _expression_end(masked, start):
+    """(offset, inner statement) of what ends the expression at start.
+
+    The offset of the first `,` or `;` at the expression's own level, or
+    of the bracket that closes around it; whether a `;` inside brackets
+    (a lambda's body) came before it. None past the scan's limit.
+    """
     depth = 0
+    inner_statement = False
     skip_to = start
     for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
         if i < skip_to:
@@ -603,12 +621,12 @@ def _end_of_argument(masked, start):
             depth += 1
         elif character in ')]}':
             if depth == 0:
-                return _end_before(masked, i) if character == ')' else None
+                return i, inner_statement
             depth -= 1
         elif character in ',;' and depth == 0:
-            return _end_before(masked, i)
+            return i, inner_statement
         elif character == ';':
-            return None
+            inner_statement = True
     return None
 
 
@@ -685,6 +703,7 @@ def _operand_edit(masked, file, question, message):
     which = type_name = None
     literal = _LITERAL_OPERAND_ERROR.match(message)
     mutual = _MUTUAL_OPERAND_ERROR.match(message)
+    other = _OTHER_OPERAND_ERROR.match(message)
     if literal and (literal.group(1) or literal.group(2)):
         which, type_name = (2 if literal.group(1) else 3), _STRING
         if texts[which - 2]:
@@ -697,8 +716,8 @@ def _operand_edit(masked, file, question, message):
         if catch_alls in ([True, False], [False, True]):
             # the other operand becomes the catch-all's
             which, type_name = 3 if catch_alls[0] else 2, _CATCH_ALL_VALUE
-    elif _OTHER_OPERAND_ERROR.match(message):
-        types = _OTHER_OPERAND_ERROR.match(message).groups()
+    elif other:
+        types = other.groups()
         catch_alls = [bool(_CATCH_ALL.match(_aliased(t))) for t in types]
         if catch_alls in ([True, False], [False, True]):
             # the catch-all becomes the other's class, as the code names it
@@ -726,10 +745,10 @@ def _operands(masked, question):
     if masked[question] != '?':
         return None
     colon = _conditional_colon(masked, question)
-    end = None if colon is None else _end_of_operand(masked, colon + 1)
-    if end is None:
+    ending = None if colon is None else _expression_end(masked, colon + 1)
+    if ending is None:
         return None
-    return [(question + 1, colon), (colon + 1, end)]
+    return [(question + 1, colon), (colon + 1, ending[0])]
 
 
 def _conditional_colon(masked, question):
@@ -752,22 +771,6 @@ def _conditional_colon(masked, question):
             if not nested:
                 return i
             nested -= 1
-    return None
-
-
-def _end_of_operand(masked, start):
-    """The offset of the `,`, `;` or closing bracket ending an operand."""
-    depth = 0
-    for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
-        character = masked[i]
-        if character in '([{':
-            depth += 1
-        elif character in ')]}':
-            if depth == 0:
-                return i
-            depth -= 1
-        elif character in ',;' and depth == 0:
-            return i
     return None
 
 
