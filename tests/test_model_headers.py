@@ -777,10 +777,18 @@ def _prepare(package, source, stub_dir):
         stub_dir=str(stub_dir))
 
 
-def _assert_parses_clean(tmp_path, code):
-    """A package of this one source parses in model mode without errors."""
+def _assert_parses_clean(tmp_path, code, repairs=()):
+    """A package of this one source parses in model mode without errors.
+
+    :param repairs: what the unit's repair header declares, if anything
+    """
     package, [source] = _sources(tmp_path, node=code)
-    arguments = _prepare(package, source, tmp_path / 'stubs')
+    stub_dir = tmp_path / 'stubs'
+    arguments = _prepare(package, source, stub_dir)
+    if repairs:
+        header = repair.repair_header(str(stub_dir), str(source))
+        repair.add_repairs(header, str(source), set(repairs))
+        arguments = ['-include', header] + arguments
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
 
@@ -984,7 +992,7 @@ def test_constants_in_the_k_style_are_declared_for_nested_unknown_types():
 
 def test_repaired_classes_hash_and_unknown_values_take_a_comma_initializer(
         tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <unordered_map>
 #include <boost/uuid/uuid.hpp>
 #include <eigen_like/core.hpp>
@@ -1001,14 +1009,7 @@ double run(const boost::uuids::uuid & id)
     (eigen_like::Matrix3d() << 1, 0, 0, 0, 1, 0, 0, 0, 1).finished();
   return ages.count(id) + m(0, 0);
 }
-""")
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    header = repair.repair_header(str(stub_dir), str(source))
-    repair.add_repairs(header, str(source), {('type', 'boost::uuids::uuid')})
-    tu = _parse(file=source, arguments=['-include', header] + arguments,
-                directory=package)
-    assert cpp.parse_diagnostics(tu) == []
+""", {('type', 'boost::uuids::uuid')})
 
 
 def test_sizes_and_c_strings_of_unknown_values_have_their_usual_types(
@@ -1052,7 +1053,7 @@ double run(std_msgs::msg::String & text) { text.size = 3; return text.size * 2; 
 
 def test_classes_of_unknown_libraries_take_braces_and_iterated_elements(
         tmp_path):
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <vector>
 #include <boost/optional.hpp>
 #include <nav_msgs/msg/path.hpp>
@@ -1074,14 +1075,7 @@ void run(const nav_msgs::msg::Path & path, std::vector<lanelet_like::ConstLanele
     const lanelet_like::ConstLanelet copy(lanelet);
   }
 }
-""")
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    header = repair.repair_header(str(stub_dir), str(source))
-    repair.add_repairs(header, str(source), {('template', 'boost::optional')})
-    tu = _parse(file=source, arguments=['-include', header] + arguments,
-                directory=package)
-    assert cpp.parse_diagnostics(tu) == []
+""", {('template', 'boost::optional')})
 
 
 def test_catch_all_calls_take_braced_arguments(tmp_path):
@@ -1141,7 +1135,7 @@ def test_a_known_member_whose_result_has_members_stays_a_catch_all():
 
 def test_a_switch_takes_a_value_of_a_nested_unknown_type(tmp_path):
     # TensorRT's logger: `Severity` is a nested type of an unknown class
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <trt_like/logger.hpp>
 
 int level(trt_like::ILogger::Severity severity)
@@ -1155,16 +1149,9 @@ int level(trt_like::ILogger::Severity severity)
       return severity ? 0 : -1;
   }
 }
-""")
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    header = repair.repair_header(str(stub_dir), str(source))
-    repair.add_repairs(header, str(source), {
+""", {
         ('type', 'trt_like::ILogger'),
         ('member-type', 'trt_like::ILogger::Severity')})
-    tu = _parse(file=source, arguments=['-include', header] + arguments,
-                directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_a_catch_all_value_becomes_a_pair(tmp_path):
@@ -1469,7 +1456,7 @@ def test_string_constants_and_members_taking_a_type_and_values(tmp_path):
     # a repair declared, beside its type-only and value-only forms; Ogre's
     # begin with arguments; a field appended to a string; Boost.Asio's
     # older error_code forms
-    package, [source] = _sources(tmp_path, node=r"""
+    _assert_parses_clean(tmp_path, r"""
 #include <string>
 #include <boost/asio.hpp>
 #include <planning_like_msgs/msg/scenario.hpp>
@@ -1492,16 +1479,9 @@ bool driving(std::string & current, const grid_like::Map & map,
   }
   return current == Scenario::LANEDRIVING || Scenario::PARKING != current;
 }
-""")
-    stub_dir = tmp_path / 'stubs'
-    arguments = _prepare(package, source, stub_dir)
-    header = repair.repair_header(str(stub_dir), str(source))
-    repair.add_repairs(header, str(source), {
+""", {
         ('type', 'grid_like::Converter'),
         ('member-template', 'grid_like::Converter::toImage')})
-    tu = _parse(file=source, arguments=['-include', header] + arguments,
-                directory=package)
-    assert cpp.parse_diagnostics(tu) == []
 
 
 def test_an_all_caps_name_of_an_unknown_library_is_a_constant(tmp_path):
