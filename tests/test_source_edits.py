@@ -211,16 +211,44 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
          [(candidate, 'h.hpp', 8, 6), (candidate, 'h.hpp', 9, 6)]),
         ("no matching function for call to 'f'", 'a.cpp', 1, 7,
          [(candidate, 'h.hpp', 9, 6)])], lambda file: code,
-        parameter_types=lambda *at: types.get(at),
+        parameter_types=lambda *at, callee=None: types.get(at),
         parameter_type=lambda *at: None)
     assert {name for _, name in edits} == {'a.cpp:1:7', 'a.cpp:2:15'}
     text, insertions = _edited(edits, code)
     assert text.split('\n')[:2] == [
-        f'  if (is_timeout(static_cast<{time}>(msg.header.stamp), '
-        'static_cast<double>(1.0)) ||',
+        f'  if (is_timeout(::rsia_model::as<{time}>(msg.header.stamp), '
+        '::rsia_model::as<double>(1.0)) ||',
         # a braced argument has no type to cast
-        '      checker.willLeave({lane}, static_cast<const Path &>(path))) {}']
-    assert source_edits.disk_column(insertions, 2, 59) == 33
+        '      checker.willLeave({lane}, '
+        '::rsia_model::as<const Path &>(path))) {}']
+    assert source_edits.disk_column(insertions, 2, 64) == 33
+
+
+def test_an_ambiguous_constructor_of_one_argument_copies_the_class():
+    # the candidates are a class template's: none names its parameters
+    code = ('  vindices.reset(new std::vector<int>(indices->indices));\n'
+            '  std::vector<size_t> sizes(cluster.width * cluster.height);\n'
+            '  std::vector<size_t> filled(cluster.width, 0);\n')
+    candidate = ('candidate constructor', 'stl_vector.h', 512, 7)
+    edits = source_edits.edits_from_notes([
+        ("call to constructor of 'std::vector<int>' is ambiguous",
+         'a.cpp', 1, 22, [candidate]),
+        ("call to constructor of 'std::vector<size_t>' (aka 'vector<unsigned "
+         "long>') is ambiguous", 'a.cpp', 2, 23, [candidate]),
+        # two arguments: which constructor is meant is not known
+        ("call to constructor of 'std::vector<size_t>' (aka 'vector<unsigned "
+         "long>') is ambiguous", 'a.cpp', 3, 23, [candidate])],
+        lambda file: code,
+        parameter_types=lambda *at, callee=None: None,
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[:3] == [
+        '  vindices.reset(new std::vector<int>('
+        '::rsia_model::as<std::vector<int>>(indices->indices)));',
+        '  std::vector<size_t> sizes('
+        '::rsia_model::as<std::vector<size_t>>(cluster.width * '
+        'cluster.height));',
+        '  std::vector<size_t> filled(cluster.width, 0);']
 
 
 def test_an_argument_for_a_class_parameter_is_made_of_that_class():
@@ -259,7 +287,7 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
         ("no viable conversion from returned value of type 'Any' to "
          "function return type 'int'", 'a.cpp', 8, 10, [])],
         lambda file: code,
-        parameter_types=lambda *at: {
+        parameter_types=lambda *at, callee=None: {
             ('h.hpp', 7, 8): ['double', 'double', 'double'],
             ('h.hpp', 8, 8): ['double', params]}.get(at),
         parameter_type=lambda *at: {('h.hpp', 5, 30): params}.get(at))
@@ -291,7 +319,7 @@ def test_a_constant_passed_for_a_string_is_made_one():
         [("no matching member function for call to 'declare_parameter'",
           'a.cpp', 1, 3, [(note, 'node.hpp', 131, 34)])],
         lambda file: code,
-        parameter_types=lambda *at: {('node.hpp', 131, 34): [
+        parameter_types=lambda *at, callee=None: {('node.hpp', 131, 34): [
             'const std::basic_string<char> &', 'bool']}.get(at),
         parameter_type=lambda *at: None)
     text, _ = _edited(edits, code)
@@ -332,7 +360,7 @@ def test_an_argument_of_a_new_class_is_made_that_class():
     code = '  HandlePtr rt_goal(new Handle(gh));\n'
     edits = source_edits.edits_from_notes(
         [("no viable conversion from 'Any' to 'Handle'", 'a.cpp', 1, 25, [])],
-        lambda file: code, parameter_types=lambda *at: None,
+        lambda file: code, parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None)
     text, _ = _edited(edits, code)
     assert text == \
@@ -361,7 +389,7 @@ def test_a_catch_all_argument_takes_the_type_its_template_deduces():
         ("no matching function for call to 'merge'", 'a.cpp', 3, 3,
          [(note.format("'AnyValue'", "'std::vector<int>' (aka "
                        "'vector<int>')"), 'h.hpp', 9, 6)])],
-        lambda file: code, parameter_types=lambda *at: None,
+        lambda file: code, parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None,
         call_arguments=lambda *at: arguments.get(at))
     text, _ = _edited(edits, code)
@@ -389,7 +417,8 @@ def test_a_value_assigned_is_made_of_its_targets_type():
          ("incompatible pointer types assigning to 'ceres::LossFunction *' "
           "from 'ceres::HuberLoss *'", 'a.cpp', 5, 11, [])],
         lambda file: code,
-        parameter_types=lambda *at: None, parameter_type=lambda *at: None)
+        parameter_types=lambda *at, callee=None: None,
+        parameter_type=lambda *at: None)
     assert edits == {(ASSIGNED, 'a.cpp:1:22'), (ASSIGNED, 'a.cpp:4:18'),
                      (ASSIGNED, 'a.cpp:5:9')}
     text, _ = _edited(edits, code)
@@ -419,6 +448,7 @@ UNIT = """\
 #include <acme_geometry/units.hpp>
 #include <geometry_msgs/msg/pose.hpp>
 #include <geometry_msgs/msg/quaternion.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -474,6 +504,9 @@ private:
     image_.points = {m.data, limit};
     std::vector<int> ids;
     pushUnique(ids, acme_geometry::ids_of(limit));
+    std::map<long, double> starts;
+    starts.erase(acme_geometry::id_of(limit));
+    std::vector<size_t> sizes(acme_geometry::count(limit));
     const std::string tag = m.data ? "" : acme_geometry::name_of(m) + "/";
     std_msgs::msg::Float64 out =
       acme_geometry::convertTo<std_msgs::msg::Float64>(limit);
@@ -496,7 +529,7 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     assert publisher.topic == 'limit'
     assert publisher.label == 'dependent'
     # at its line in the file, which stays as it was on disk
-    assert publisher.publish_sites == ['src/detector_node.cpp:65']
+    assert publisher.publish_sites == ['src/detector_node.cpp:69']
     source = tmp_path / 'src' / 'acme_vision' / 'src' / 'detector_node.cpp'
     assert source.read_text() == UNIT
     [header] = [os.path.join(root, name)
@@ -506,6 +539,6 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     with open(header) as h:
         kinds = [line.split()[2] for line in h if line.startswith('// repair')]
     assert sorted(k.partition(':')[0] for k in kinds) == sorted([
-        ADDRESS, ADDRESS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING, BINDING,
-        CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT, LAMBDA_RESULT,
-        OPERAND])
+        ADDRESS, ADDRESS, AS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING,
+        BINDING, CAST, CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT,
+        LAMBDA_RESULT, OPERAND])

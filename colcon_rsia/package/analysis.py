@@ -515,6 +515,11 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
         return source_edits.disk_column(
             edited.get(file, (None, {}))[1], line, column)
 
+    def in_parse(file, line, column):
+        # a place on disk, as the parse with the edits in memory has it
+        return file, line, source_edits.edited_column(
+            edited.get(file, (None, {}))[1], line, column)
+
     def on_disk(file, arguments):
         return None if arguments is None else [
             (line, disk_column(file, line, column), argument_type)
@@ -551,11 +556,11 @@ def _parse_repaired(index, entry, resource_dir, package_path, relative,
              in errors_with_notes(tu, source_edits.needs_notes)
              if file and _user_file(file)],
             read_code,
-            parameter_types=lambda *at: parameter_types(tu, *at),
+            parameter_types=lambda *at, callee=None: parameter_types(
+                tu, *at, object_at=callee and in_parse(*callee)),
             parameter_type=lambda *at: parameter_type(tu, *at),
             call_arguments=lambda file, line, column: on_disk(
-                file, call_arguments(tu, file, line, source_edits.edited_column(
-                    edited.get(file, (None, {}))[1], line, column))))
+                file, call_arguments(tu, *in_parse(file, line, column))))
         # one edit a place: one made in an earlier round stays (a second
         # would wrap the first)
         edited_places = {name for kind, name in repair.read_repairs(header)

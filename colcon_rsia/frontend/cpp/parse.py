@@ -3,6 +3,7 @@
 """Parsing a C++ translation unit with libclang, and its parse errors."""
 
 import ctypes
+import re
 
 import clang.cindex as ci
 
@@ -79,17 +80,63 @@ _FUNCTIONS = (ci.CursorKind.FUNCTION_DECL, ci.CursorKind.CXX_METHOD,
               ci.CursorKind.CONSTRUCTOR)
 
 
-def parameter_types(tu, file, line, column):
+def parameter_types(tu, file, line, column, *, object_at=None):
     """The canonical parameter types of the function declared there.
 
     None when no function (a template, for one) is declared there, or its
     declaration is invalid (a parameter of an undeclared type reads `int`).
+
+    :param object_at: (file, line, column) of the callee of a member call:
+      a parameter that the template of the object's class spells with a
+      name of its own (`const key_type &` of `std::map::erase`) is spelled
+      as that member of the object's class (`const typename std::map<long,
+      double>::key_type &`): the template's own spelling names nothing
+      outside it
     """
     cursor = _cursor_at(tu, file, line, column)
     if cursor is None or cursor.kind not in _FUNCTIONS or _invalid(cursor):
         return None
-    return [argument.type.get_canonical().spelling
-            for argument in cursor.get_arguments()]
+    types = []
+    owner = None
+    for argument in cursor.get_arguments():
+        canonical = argument.type.get_canonical().spelling
+        if _DEPENDENT in canonical and object_at is not None:
+            member = _MEMBER_TYPE_SPELLING.match(argument.type.spelling)
+            owner = owner or _object_type(tu, *object_at)
+            if member is None or owner is None:
+                return None
+            canonical = (f'{member.group(1) or ""}typename '
+                         f'{owner}::{member.group(2)}{member.group(3) or ""}')
+        types.append(canonical)
+    return types
+
+
+# what canonical types of a class template's members show of its parameters
+_DEPENDENT = 'type-parameter-'
+# a parameter spelled with one name, as a class template's members name its
+# types (`const_iterator`, `const key_type &`)
+_MEMBER_TYPE_SPELLING = re.compile(r'^(const )?([A-Za-z_]\w*)( &{1,2})?$')
+
+
+def _object_type(tu, file, line, column):
+    """The canonical class of a member call's object, or None.
+
+    Of the call whose callee is at (file, line, column): `m` of
+    `m.erase(k)`, `*p` of `p->erase(k)`.
+    """
+    cursor = tu.cursor
+    while cursor is not None:
+        children = list(cursor.get_children())
+        if cursor.kind == ci.CursorKind.MEMBER_REF_EXPR and children and \
+                _spans(cursor, file, line, column) and \
+                not _spans(children[0], file, line, column):
+            spelling = children[0].type.get_canonical().spelling
+            spelling = re.sub(r'^const |\s*(?:\*|&+)$', '', spelling)
+            return spelling if spelling and _DEPENDENT not in spelling \
+                and '<dependent' not in spelling else None
+        cursor = next((child for child in children
+                       if _spans(child, file, line, column)), None)
+    return None
 
 
 def parameter_type(tu, file, line, column):

@@ -17,8 +17,9 @@ where C++ asks for one exact type:
 - ``cond ? "" : any + "/"``, ``cond ? any : nullptr``, where an operand
   and a catch-all have no common type, or ``cond ? level : Status::OK``,
   where each converts to the other;
-- ``getRPY(pose.orientation)``, where a catch-all converts to the parameter
-  of every overload alike and the call is ambiguous;
+- ``getRPY(pose.orientation)``, ``starts.erase(lane.id())``,
+  ``std::vector<int>(indices->indices)``, where a catch-all converts to the
+  parameter of every overload alike and the call is ambiguous;
 - ``correct(params_.get())`` for a ``const Params &``, a class of the
   package that no catch-all converts to, and assignments of the classes a
   repair declared to real ones (``obstacles = constraints.polygons``);
@@ -36,10 +37,13 @@ initializer becomes a value of as many names (see message.h's ``Bound``),
 the ``&`` goes (the catch-all converts to any pointer), the operand of a
 conditional becomes a ``std::string`` (a literal) or a catch-all value
 (``nullptr``, a number), the arguments of
-the ambiguous call are cast to the parameters of its first candidate that
+the ambiguous call are made the parameters of its first candidate that
 is no template, spelled as clang spells them canonically so that any
-scope can name them (the real build may take another overload; the call
-and its arguments are there for the facts either way), an argument
+scope can name them, or, for a member of a class template, as members of
+the object's class (``typename std::map<long, double>::const_iterator``;
+the real build may take another overload; the call and its arguments are
+there for the facts either way), the one argument of an ambiguous
+constructor becomes the class constructed, an argument
 passed to a class parameter becomes ``rsia_model::as<Params>(arg)`` (so
 does one beside a real argument of a template, with that argument's type,
 and a pointer where the code names the pointer wanted), the value
@@ -70,7 +74,7 @@ ADDRESS = 'edit-address'              # the `&` of `&any` blanked
 # type, at the `?`; which operand and the type in the kind
 # (`edit-operand:3:<T>`, quoted)
 OPERAND = 'edit-operand'
-# `f(static_cast<T>(a))`: a call's arguments cast to one overload's
+# `f(as<T>(a))`: a call's arguments made the types of one overload's
 # parameters, their types in the kind (`edit-cast:<T1>;<T2>`, quoted)
 CAST = 'edit-cast'
 # `as<T>(a)`: a value made the class it must be (its parameter's, its
@@ -160,7 +164,10 @@ _TARGET = re.compile(
     r'^\*?\s*[A-Za-z_]\w*(?:\s*(?:\.|->|::)\s*[A-Za-z_]\w*|'
     r'\s*\[[^\[\];]*\]|\s*\(\s*\))*$')
 _AMBIGUOUS_CALL = re.compile(
-    r"^call to (?:member function |constructor of )?'.*' is ambiguous$")
+    r"^call to (?:member function |constructor of )?'.*'"
+    r"(?: \(aka '.*'\))? is ambiguous$")
+_AMBIGUOUS_CONSTRUCTOR = re.compile(
+    r"^call to constructor of '([^']*)'(?: \(aka '[^']*'\))? is ambiguous$")
 # the callee of a call, from where clang reports it: a (qualified) name,
 # its template arguments after it
 _CALLEE = re.compile(r'(?:::)?\s*~?[A-Za-z_]\w*(?:\s*::\s*~?[A-Za-z_]\w*)*\s*')
@@ -269,12 +276,26 @@ def edits_from_notes(errors, read_code, *, parameter_types,
             continue
         if _AMBIGUOUS_CALL.match(message):
             for note, *candidate in notes:
-                types = parameter_types(*candidate) \
+                types = parameter_types(
+                    *candidate, callee=(file, line, column)) \
                     if note.startswith('candidate') else None
                 if types and not any(_UNNAMEABLE.search(t) for t in types):
                     joined = quote(';'.join(types), safe='')
                     edits.add((f'{CAST}:{joined}', f'{file}:{line}:{column}'))
                     break
+            else:
+                constructed = _AMBIGUOUS_CONSTRUCTOR.match(message)
+                masked = masked_of(file)
+                if constructed and masked is not None:
+                    # no candidate to name (a class template's): a single
+                    # argument is made the class itself, as copied
+                    offset = _offset(masked, line, column)
+                    arguments = None if offset is None else \
+                        _call_arguments(masked, offset)
+                    if arguments is not None and len(arguments) == 1:
+                        edits |= _as_parameter_of_argument(
+                            masked, file, line, column, 0,
+                            _named_in(masked, constructed.group(1)))
         elif _NO_CONVERSION.match(message):
             # at the argument, its parameter in a note (spelled so that any
             # scope names it); at a returned value, or at the variable an
@@ -576,7 +597,10 @@ def _casts(masked, callee, types):
     changes = []
     for (start, end), parameter in zip(arguments, types):
         if masked[start] != '{':
-            changes += [(start, 0, f'static_cast<{parameter}>('),
+            # (no static_cast: a catch-all converts to a class that has
+            # constructors of its own, `const_iterator`, more ways than one)
+            made = 'assigned_as' if parameter.endswith('&&') else 'as'
+            changes += [(start, 0, f'::rsia_model::{made}<{parameter}>('),
                         (end, 0, ')')]
     return changes
 
