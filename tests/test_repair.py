@@ -153,6 +153,14 @@ def _lines(text):
      {('macro-empty', 'FOO_PUBLIC')}),
     ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
      {('macro-void', 'BOOST_CLASS_EXPORT')}),
+    # CUDA's attributes in a header a C++ unit includes
+    ("variable has incomplete type 'void'", 'void __device__ setCell(', 6,
+     {('macro-empty', '__device__')}),
+    ("unknown type name '__host__'", '__host__ __device__ float half(float);',
+     1, {('macro-empty', '__host__')}),
+    ("unknown type name '__launch_bounds__'",
+     '__launch_bounds__(256) void kernel();', 1,
+     {('macro-void', '__launch_bounds__')}),
     ("unknown template name 'Controller'",
      'class C : public controller_interface::Controller<Iface> {', 40,
      {('template', 'controller_interface::Controller')}),
@@ -394,6 +402,20 @@ def test_a_scope_inside_a_repaired_class_is_a_nested_type(tmp_path):
     assert repair.read_repairs(str(header)) == {
         ('type', 'Estimator'), ('member-type', 'Estimator::Direction')}
     assert 'using Direction = ::rsia_model::Unknown;' in header.read_text()
+
+
+def test_a_member_through_a_using_declared_class_is_the_classs(tmp_path):
+    # `using ns::Estimator;` then `Estimator::Direction::MAXIMIZE`: an
+    # earlier round took Direction for a value of ns::Estimator
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'ns::Estimator'), ('member', 'ns::Estimator::Direction'),
+        ('namespace', 'Estimator::Direction')})
+    assert repair.read_repairs(str(header)) == {
+        ('type', 'ns::Estimator'), ('member-type', 'ns::Estimator::Direction')}
+    text = header.read_text()
+    assert 'using Direction = ::rsia_model::Unknown;' in text
+    assert 'Any Direction' not in text
 
 
 def test_constant_members_of_a_repaired_class_are_distinct_ints(tmp_path):

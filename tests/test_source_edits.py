@@ -12,8 +12,10 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import AUTO_POINTER
 from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
+from colcon_rsia.frontend.cpp.model_mode.source_edits import DYNAMIC_CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
 from colcon_rsia.frontend.cpp.model_mode.source_edits import OPERAND
+from colcon_rsia.frontend.cpp.model_mode.source_edits import REINTERPRET_CAST
 from test_repair import _analyze_one_unit
 
 MISMATCH = ("return type 'double' must match previous return type 'Any' "
@@ -103,6 +105,31 @@ def test_a_pointer_auto_and_constexpr_variables_take_a_catch_all():
     # a static member keeps its initializer as an inline variable
     assert lines[18] == '  static inline    float max_angle = deg2rad(40.f);'
     assert insertions == {}
+
+
+def test_casts_of_repaired_classes_and_catch_alls_are_made_to_work():
+    code = ('  auto conv = dynamic_cast<nvinfer1::IConvolutionLayer *>(layer);\n'
+            '  auto & c = dynamic_cast<const Conv &>(*layer); f(conv, c);\n'
+            '  return reinterpret_cast<const char *>(blob.data());\n'
+            '  auto p = reinterpret_cast<const float *>(&value);\n')
+    message = "'nvinfer1::ILayer' is not polymorphic"
+    any_to = "reinterpret_cast from '{}' to '{}' is not allowed"
+    # clang reports at the keyword or at the operand
+    edits = _edits([
+        (message, 1, 15), (message, 2, 41),
+        (any_to.format('Any', 'const char *'), 3, 10),
+        # (a real value: not the model's doing)
+        (any_to.format('std::string', 'const float *'), 4, 12)], code)
+    assert edits == {(DYNAMIC_CAST, 'a.cpp:1:15'),
+                     (DYNAMIC_CAST, 'a.cpp:2:14'),
+                     (REINTERPRET_CAST, 'a.cpp:3:10')}
+    text, insertions = _edited(edits, code)
+    assert text.split('\n')[:3] == [
+        '  auto conv = reinterpret_cast<nvinfer1::IConvolutionLayer *>'
+        '(layer);',
+        '  auto & c = reinterpret_cast<const Conv &>(*layer); f(conv, c);',
+        '  return ::rsia_model::as<const char *>(blob.data());']
+    assert source_edits.disk_column(insertions, 2, 59) == 55
 
 
 def test_structured_bindings_of_a_catch_all_get_as_many_values():
@@ -259,7 +286,8 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
             '  const Screen * screen_info = DefaultScreenOfDisplay(d);\n'
             'std::optional<Path> smooth();\n'
             'std::shared_ptr<Tracker> make();\n'
-            '  return tracker;\n')
+            '  return tracker;\n'
+            '  return layer->getName();\n')
     params = 'const acme::Params &'
     edits = source_edits.edits_from_notes([
         # at the argument, its parameter in a note
@@ -285,14 +313,18 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
         ("no viable conversion from returned value of type 'Any' to "
          "function return type 'shared_ptr<Tracker>'", 'a.cpp', 8, 10, []),
         ("no viable conversion from returned value of type 'Any' to "
-         "function return type 'int'", 'a.cpp', 8, 10, [])],
+         "function return type 'int'", 'a.cpp', 8, 10, []),
+        # the one pointer a catch-all does not convert to
+        ("no viable conversion from returned value of type 'Any' to "
+         "function return type 'const char *'", 'a.cpp', 9, 10, [])],
         lambda file: code,
         parameter_types=lambda *at, callee=None: {
             ('h.hpp', 7, 8): ['double', 'double', 'double'],
             ('h.hpp', 8, 8): ['double', params]}.get(at),
         parameter_type=lambda *at: {('h.hpp', 5, 30): params}.get(at))
     assert {name for _, name in edits} == {
-        'a.cpp:1:18', 'a.cpp:2:14', 'a.cpp:3:25', 'a.cpp:4:10', 'a.cpp:5:32'}
+        'a.cpp:1:18', 'a.cpp:2:14', 'a.cpp:3:25', 'a.cpp:4:10', 'a.cpp:5:32',
+        'a.cpp:9:10'}
     text, _ = _edited(edits, code)
     assert text == ('  return correct(::rsia_model::as<const acme::Params>'
                     '(params_.get()), shape, pose);\n'
@@ -305,7 +337,9 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     'Screen *>(DefaultScreenOfDisplay(d));\n'
                     'std::optional<Path> smooth();\n'
                     'std::shared_ptr<Tracker> make();\n'
-                    '  return tracker;\n')
+                    '  return tracker;\n'
+                    '  return ::rsia_model::as<const char *>'
+                    '(layer->getName());\n')
 
 
 def test_a_constant_passed_for_a_string_is_made_one():
@@ -333,7 +367,9 @@ def test_a_pointer_to_a_derived_class_of_an_unknown_library_converts():
     code = ('  return new ceres::AutoDiffParam<Angle, 1, 1>;\n'
             '  group->addButton(button);\n'
             '  ceres::Param * p = make();\n'
-            '  unsigned char * data = bytes();\n')
+            '  unsigned char * data = bytes();\n'
+            '  std::unique_ptr<nvinfer1::IInt8Calibrator> c;\n'
+            '  c.reset(new Int8EntropyCalibrator(stream));\n')
     message = ("cannot initialize {} of type '{}' with an {} of type '{}'")
     edits = _edits([
         (message.format('return object', 'ceres::Param *', 'rvalue',
@@ -345,9 +381,16 @@ def test_a_pointer_to_a_derived_class_of_an_unknown_library_converts():
                         'Other *'), 3, 18),
         # a pointer of C++'s own types: not a class the code names
         (message.format('a variable', 'unsigned char *', 'rvalue',
-                        'Any *'), 4, 19)], code)
-    assert len(edits) == 2
+                        'Any *'), 4, 19),
+        # the type wanted through an alias of the class template
+        ("cannot initialize a parameter of type 'pointer' (aka "
+         "'nvinfer1::IInt8Calibrator *') with an rvalue of type "
+         "'Int8EntropyCalibrator *'", 6, 11)], code)
+    assert len(edits) == 3
     text, _ = _edited(edits, code)
+    assert text.split('\n')[5] == (
+        '  c.reset(::rsia_model::as<nvinfer1::IInt8Calibrator *>('
+        'new Int8EntropyCalibrator(stream)));')
     assert text.split('\n')[0] == (
         '  return ::rsia_model::as<ceres::Param *>('
         'new ceres::AutoDiffParam<Angle, 1, 1>);')
@@ -507,6 +550,8 @@ private:
     std::map<long, double> starts;
     starts.erase(acme_geometry::id_of(limit));
     std::vector<size_t> sizes(acme_geometry::count(limit));
+    acme_geometry::Shape * shape = image_.shape();
+    auto * circle = dynamic_cast<acme_geometry::Circle *>(shape);
     const std::string tag = m.data ? "" : acme_geometry::name_of(m) + "/";
     std_msgs::msg::Float64 out =
       acme_geometry::convertTo<std_msgs::msg::Float64>(limit);
@@ -529,7 +574,7 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     assert publisher.topic == 'limit'
     assert publisher.label == 'dependent'
     # at its line in the file, which stays as it was on disk
-    assert publisher.publish_sites == ['src/detector_node.cpp:69']
+    assert publisher.publish_sites == ['src/detector_node.cpp:71']
     source = tmp_path / 'src' / 'acme_vision' / 'src' / 'detector_node.cpp'
     assert source.read_text() == UNIT
     [header] = [os.path.join(root, name)
@@ -540,5 +585,5 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
         kinds = [line.split()[2] for line in h if line.startswith('// repair')]
     assert sorted(k.partition(':')[0] for k in kinds) == sorted([
         ADDRESS, ADDRESS, AS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING,
-        BINDING, CAST, CAST, CAST, CONSTEXPR, CONSTEXPR, LAMBDA_RESULT,
-        LAMBDA_RESULT, OPERAND])
+        BINDING, CAST, CAST, CAST, CONSTEXPR, CONSTEXPR, DYNAMIC_CAST,
+        LAMBDA_RESULT, LAMBDA_RESULT, OPERAND])

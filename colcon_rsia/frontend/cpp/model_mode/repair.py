@@ -41,8 +41,9 @@ from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
 # parses of a unit after the first: each round fixes what the previous one
-# revealed (a namespace, then the names used in it)
-MAX_REPAIR_ROUNDS = 3
+# revealed (a namespace, then the names used in it, then an edit of a call
+# the names made ambiguous, then the assignment of its result)
+MAX_REPAIR_ROUNDS = 4
 
 REPAIR_DIR = os.path.join('rsia_model', 'repair')
 _MARKER = '// colcon-rsia repairs v1'
@@ -68,6 +69,9 @@ _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
 _TYPE_IN_CLASS = re.compile(
     r'^(?:no type named|typename specifier refers to non-type member) '
     r"'(\w+)' in '([\w:]+)(<.*>)?'$")
+# a name reserved to the implementation, `__name__`, at an error: an
+# attribute macro of a compiler we are not (and whether it takes arguments)
+_RESERVED_ATTRIBUTE = re.compile(r'(__[A-Za-z]\w*__)(?!\w)(\s*\()?')
 _INCOMPLETE = re.compile(
     r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
     r'^(?:member access into|variable has|field has) incomplete type '
@@ -469,9 +473,21 @@ def _one_kind_each(repairs):
     # `using namespace` seen before the namespace was declared) is that
     # class: a global one of the same name would make every use ambiguous
     qualified = {name.rsplit('::', 1)[1] for name in classes if '::' in name}
+    # (and a member of it named through the short name is its member:
+    # `Estimator::Direction` after `using ns::Estimator;`, unless the short
+    # name was declared for itself: rviz's `FramePositionTrackingViewController
+    # ::mimic(v)` in a derived class resolves as it was repaired)
+    full_name = {}
+    for name in sorted(classes):
+        if '::' in name:
+            full_name.setdefault(name.rsplit('::', 1)[1], set()).add(name)
     result = set()
     for kind, name in chosen.values():
         owner = name.rsplit('::', 1)[0] if '::' in name else None
+        if owner not in classes and owner not in chosen and \
+                len(full_name.get(owner, ())) == 1:
+            [owner] = full_name[owner]
+            name = f'{owner}::{name.rsplit("::", 1)[1]}'
         if owner in classes and kind not in MEMBER_KINDS + INCLUDES:
             # (a scope inside a class, `Estimator::Direction::MAXIMIZE`,
             # is a nested type)
@@ -746,6 +762,14 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 read_line, file, line, text, column, subject)
         after = _after(text, column, subject) or \
             _next_line(read_line, file, line, text, subject)
+        match = _RESERVED_ATTRIBUTE.match(text, max(0, column - 1))
+        if match and (subject in (None, 'void', match.group(1))):
+            # CUDA's `__device__`, `__host__`, `__launch_bounds__(256)`:
+            # a compiler's attributes, read as a type or as a variable of
+            # type void (`void __device__ f(...)`)
+            repairs.add((MACRO_VOID if match.group(2) else MACRO_EMPTY,
+                         match.group(1)))
+            continue
         match = _UNDECLARED.match(message)
         if match:
             kind, name = _by_use(match.group(1), after, unqualified=True)

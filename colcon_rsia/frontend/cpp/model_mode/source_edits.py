@@ -27,7 +27,10 @@ where C++ asks for one exact type:
   catch-all deduces another ``T``;
 - ``return new ceres::AutoDiffLocalParameterization<...>;`` for a
   ``ceres::LocalParameterization *``, where the repaired classes know no
-  base classes.
+  base classes;
+- ``dynamic_cast<nvinfer1::IConvolutionLayer *>(layer)``, where a repaired
+  class has no virtual functions, and ``reinterpret_cast<const float *>(
+  any)``, where a catch-all is no pointer.
 
 The real build has the real types and none of these errors. So the unit is
 parsed again with the line edited in memory (libclang's unsaved files,
@@ -47,7 +50,9 @@ constructor becomes the class constructed, an argument
 passed to a class parameter becomes ``rsia_model::as<Params>(arg)`` (so
 does one beside a real argument of a template, with that argument's type,
 and a pointer where the code names the pointer wanted), the value
-assigned ``rsia_model::assigned_as<decltype(target)>(value)``. An edit never
+assigned ``rsia_model::assigned_as<decltype(target)>(value)``, the
+``dynamic_cast`` a ``reinterpret_cast``, and that of a catch-all an
+``rsia_model::as``. An edit never
 adds or removes a line break, so every fact keeps its file and line.
 
 An edit is kept in the unit's repair header like a declaration, as
@@ -83,8 +88,12 @@ CAST = 'edit-cast'
 AS = 'edit-as'
 # `target = assigned_as<decltype(target)>(value)`, at the `=`
 ASSIGNED = 'edit-assigned'
+# `dynamic_cast` made `reinterpret_cast`, at the keyword
+DYNAMIC_CAST = 'edit-dynamic-cast'
+# `reinterpret_cast` (of a catch-all) made `::rsia_model::as`, at the keyword
+REINTERPRET_CAST = 'edit-reinterpret-cast'
 EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS,
-              OPERAND, CAST, AS, ASSIGNED)
+              OPERAND, CAST, AS, ASSIGNED, DYNAMIC_CAST, REINTERPRET_CAST)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -104,12 +113,21 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
+# a class a repair declared has no virtual functions, which dynamic_cast
+# asks of its operand's
+_NOT_POLYMORPHIC_ERROR = re.compile(r"^'.*' is not polymorphic$")
+# and a catch-all is no pointer or number to reinterpret
+_REINTERPRET_ERROR = re.compile(
+    r"^reinterpret_cast from '(?:const )?(?:::)?(?:rsia_model::)?"
+    r"Any(?:Element|Value)?' to '.*' is not allowed$")
 # a pointer to a class a repair declared where the real class derives from
 # the one wanted (`return new ceres::AutoDiffLocalParameterization<...>;`
 # for a `ceres::LocalParameterization *`)
+# (the pointer wanted may have an alias: `pointer` of a std::unique_ptr's
+# reset, aka 'nvinfer1::IInt8Calibrator *')
 _POINTER_MISMATCH = re.compile(
     r'^cannot initialize (return object|a variable|a parameter) of type '
-    r"'([^']*\*)'(?: \(aka '[^']*'\))? with an [lr]value of type "
+    r"'([^']*)'(?: \(aka '([^']*)'\))? with an [lr]value of type "
     r"'[^']*\*'(?: \(aka '[^']*'\))?$")
 # the errors of a conditional's operands (a literal's type is an array:
 # `const char[1]` of "")
@@ -134,6 +152,7 @@ _NO_CONVERSION = re.compile(
     r"^no viable conversion from (?:returned value of type )?'[^']*'"
     r"(?: \(aka '[^']*'\))? to (?:function return type )?'([^']*)'"
     r"(?: \(aka '[^']*'\))?$")
+_C_STRING = re.compile(r'^(?:const )?char \*$')
 _NO_MATCH = re.compile(
     r"^no matching (?:member )?function for call to '.*'$|"
     r'^no matching constructor for initialization of ')
@@ -192,6 +211,9 @@ _BLOCK_HEADS = frozenset(('if', 'for', 'while', 'switch', 'catch', 'constexpr'))
 # the words a lambda may follow
 _BEFORE_LAMBDA = frozenset(('return', 'co_return', 'co_yield', 'case'))
 _CONSTEXPR_WORD = re.compile(r'\bconstexpr\b')
+# the keyword each edit of a cast replaces, and with what
+_CAST_KEYWORDS = {DYNAMIC_CAST: ('dynamic_cast', 'reinterpret_cast'),
+                  REINTERPRET_CAST: ('reinterpret_cast', '::rsia_model::as')}
 # words that begin statements, never an assignment's target
 _KEYWORDS = frozenset(('return', 'if', 'else', 'case', 'throw', 'delete',
                        'co_return', 'goto'))
@@ -230,6 +252,8 @@ def edits_from_diagnostics(diagnostics, read_code):
             CONSTEXPR: _constexpr_keyword,
             BINDING: _binding_names,
             ADDRESS: _address_of,
+            DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
+            REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
         }[kind](masked, offset)
         if anchor is not None:
             at_line, at_column = _position(masked, anchor)
@@ -305,8 +329,11 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                              None)
             masked = masked_of(file)
             if parameter is None and masked is not None:
-                parameter = _named_in(masked, _NO_CONVERSION.match(
-                    message).group(1))
+                wanted = _NO_CONVERSION.match(message).group(1)
+                # (a C string: the one pointer a catch-all does not
+                # convert to, see message.h)
+                parameter = wanted if _C_STRING.match(wanted) else \
+                    _named_in(masked, wanted)
                 if 'returned value' not in message:
                     line, column = _initializer_of(masked, line, column)
             if _after_new(masked, line, column):
@@ -369,7 +396,10 @@ def _as_pointer(masked, file, line, column, mismatch):
     """
     if masked is None:
         return set()
-    wanted = _named_in(masked, mismatch.group(2))
+    wanted = next((_named_in(masked, spelled)
+                   for spelled in mismatch.group(2, 3)
+                   if spelled and spelled.endswith('*') and
+                   _named_in(masked, spelled)), None)
     if mismatch.group(1) == 'a variable':
         line, column = _initializer_of(masked, line, column)
     return _as_parameter(masked, file, line, column, wanted)
@@ -465,6 +495,8 @@ def _kind_of(message):
                           (CONSTEXPR, _CONSTEXPR_ERROR),
                           (BINDING, _BINDING_ERROR),
                           (ADDRESS, _ADDRESS_ERROR),
+                          (DYNAMIC_CAST, _NOT_POLYMORPHIC_ERROR),
+                          (REINTERPRET_CAST, _REINTERPRET_ERROR),
                           (OPERAND, _LITERAL_OPERAND_ERROR),
                           (OPERAND, _NULL_OPERAND_ERROR),
                           (OPERAND, _OTHER_OPERAND_ERROR),
@@ -577,6 +609,12 @@ def _changes(kind, masked, offset):
         if (not masked[start:end].strip()) != (type_name == _STRING):
             return []
         return [(start, 0, f' ::rsia_model::as<{type_name}>('), (end, 0, ')')]
+    elif kind in _CAST_KEYWORDS and \
+            masked.startswith(_CAST_KEYWORDS[kind][0], offset):
+        # (a cast between classes that know no bases of each other; a
+        # value made the pointer wanted, see message.h's `as`)
+        keyword, replacement = _CAST_KEYWORDS[kind]
+        change = offset, len(keyword), replacement
     elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
         # only as an inline variable; elsewhere a `const` takes any
@@ -886,11 +924,27 @@ def _pointer_star(masked, offset):
 
 def _constexpr_keyword(masked, offset):
     """Offset of the `constexpr` declaring the variable at offset."""
-    start = masked.rfind(';', 0, offset)
-    start = max(start, masked.rfind('{', 0, offset),
-                masked.rfind('}', 0, offset))
-    keywords = list(_CONSTEXPR_WORD.finditer(masked, start + 1, offset))
+    keywords = list(_CONSTEXPR_WORD.finditer(
+        masked, _statement_start(masked, offset), offset))
     return keywords[-1].start() if keywords else None
+
+
+def _cast_keyword(kind):
+    """The anchor of an edit of a cast: the keyword at or before offset."""
+    keyword = _CAST_KEYWORDS[kind][0]
+    pattern = re.compile(rf'\b{keyword}\b')
+
+    def anchor(masked, offset):
+        found = list(pattern.finditer(
+            masked, _statement_start(masked, offset),
+            offset + len(keyword)))
+        return found[-1].start() if found else None
+    return anchor
+
+
+def _statement_start(masked, offset):
+    """Where the statement around offset begins (after `;`, `{` or `}`)."""
+    return max(masked.rfind(c, 0, offset) for c in ';{}') + 1
 
 
 _PAIRED = {'(': ')', '[': ']', '{': '}', ')': '(', ']': '[', '}': '{'}
