@@ -957,6 +957,7 @@ def test_a_ros2_interface_keeps_every_spelling_its_units_use(tmp_path):
 
 def test_node_graph_queries_parameter_listing_and_time_steps(tmp_path):
     package, [source] = _sources(tmp_path, node=r"""
+#include <optional>
 #include <builtin_interfaces/msg/time.hpp>
 #include <rclcpp/rclcpp.hpp>
 
@@ -966,6 +967,20 @@ builtin_interfaces::msg::Time later(rclcpp::Node & node, std::size_t steps)
 {
   const rclcpp::Duration step(0, 100000000);
   return node.now() + step * steps;
+}
+
+// a time minus a std::chrono duration (which converts to a Duration only,
+// not to a Time)
+rclcpp::Time earlier(rclcpp::Node & node, int64_t count)
+{
+  return node.now() - std::chrono::nanoseconds(count);
+}
+
+// a time beside an optional one (which a Time does not convert from)
+std::optional<rclcpp::Time> kept(
+  rclcpp::Node & node, const std::optional<rclcpp::Time> & stamp)
+{
+  return !stamp.has_value() ? node.now() : stamp;
 }
 
 std::string first_publisher(rclcpp::Node & node)

@@ -153,6 +153,10 @@ def _lines(text):
      {('macro-empty', 'FOO_PUBLIC')}),
     ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
      {('macro-void', 'BOOST_CLASS_EXPORT')}),
+    # an unknown C type as an array's element among template arguments
+    ('expected expression', '  std::unique_ptr<nvmlProcessInfo_t[]> infos;',
+     37, {('type', 'nvmlProcessInfo_t')}),
+    ('expected expression', '  return values[];', 17, set()),
     # CUDA's attributes in a header a C++ unit includes
     ("variable has incomplete type 'void'", 'void __device__ setCell(', 6,
      {('macro-empty', '__device__')}),
@@ -176,6 +180,10 @@ def _lines(text):
      {('header', 'tf2/LinearMath/Transform.h')}),
     ("no member named 'get_value' in namespace 'acme'",
      'acme::get_value(3);', 7, {('function', 'acme::get_value')}),
+    # boost::process's redirection compares: no template arguments open
+    ("no member named 'std_in' in namespace 'boost::process'",
+     '  bp::child c("grep", bp::std_out > out, bp::std_in < p);', 46,
+     {('object', 'boost::process::std_in')}),
     # a statement clang reads as the declaration of `hull` (its message
     # says type): a lower-case name called is a function
     ("no type named 'correct' in namespace 'boost::geometry'",
@@ -1303,6 +1311,21 @@ def test_a_namespace_alias_is_repaired_through_its_target():
     assert ('namespace', 'boost::geometry') in found
 
 
+def test_an_alias_taken_for_a_type_is_its_namespace():
+    # `pt::ptree tree;` while the alias failed: clang says pt is an unknown
+    # type; a class boost::property_tree would hide the namespace for good
+    code = ('namespace pt = boost::property_tree;\n'
+            'void f() { pt::ptree tree; }\n')
+    lines = dict(enumerate(code.split('\n'), start=1))
+    found = repair.repairs_from_diagnostics(
+        [('expected namespace name', 'a.cpp', 1, 16),
+         ("unknown type name 'pt'", 'a.cpp', 2, 12)],
+        lambda file, line: lines[line], texts=[code])
+    assert ('namespace', 'boost::property_tree') in found
+    assert ('type', 'boost::property_tree') not in found
+    assert ('type', 'boost::property_tree::ptree') in found
+
+
 def test_the_namespaces_inside_a_repaired_one_are_repaired_at_once():
     # clang reports boost::geometry::model only once boost::geometry
     # exists, and so on: one parse per level, without this
@@ -1590,6 +1613,49 @@ def test_headers_beside_a_subdirectorys_sources_are_found(tmp_path):
     recorded = {(c.role, c.recorded) for c in summary.coverage.call_sites}
     # a library's: its facts are the unit's, no node of its own runs them
     assert recorded == {('publisher', 'unit')}, summary.coverage.call_sites
+
+
+def test_headers_of_the_packages_src_are_found_from_a_subdirectory(
+        tmp_path):
+    # example_rule/'s sources include "switch_rule/base_rule.hpp" of the
+    # package's src/ (its CMake: target_include_directories(x PUBLIC src))
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src' / 'switch_rule').mkdir(parents=True)
+    (package / 'example_rule' / 'src').mkdir(parents=True)
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\n'
+        'project(acme_vision)\n'
+        'add_library(acme_vision INTERFACE)\n'
+        'target_include_directories(acme_vision INTERFACE src)\n'
+        'add_subdirectory(example_rule)\n')
+    (package / 'example_rule' / 'CMakeLists.txt').write_text(
+        'add_library(rules src/rule.cpp)\n'
+        'target_link_libraries(rules acme_vision)\n')
+    (package / 'src' / 'switch_rule' / 'base_rule.hpp').write_text(
+        '#include <vector>\n'
+        'namespace switch_rule\n'
+        '{\n'
+        'struct BaseRule\n'
+        '{\n'
+        '  using Markers = std::vector<int>;\n'
+        '  virtual Markers markers() { return Markers{}; }\n'
+        '};\n'
+        '}  // namespace switch_rule\n')
+    (package / 'example_rule' / 'src' / 'rule.cpp').write_text(
+        '#include "switch_rule/base_rule.hpp"\n'
+        'namespace switch_rule\n'
+        '{\n'
+        'struct MapRule : BaseRule\n'
+        '{\n'
+        '  Markers markers() override;\n'
+        '};\n'
+        'MapRule::Markers MapRule::markers() { return {1, 2}; }\n'
+        '}  // namespace switch_rule\n')
+    summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    assert unit.file == 'example_rule/src/rule.cpp'
+    assert (unit.package_errors, unit.repair_rounds) == (0, 0), \
+        summary.diagnostics
 
 
 def test_a_name_that_ends_its_line_is_known_by_the_next_one():

@@ -180,7 +180,8 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
             '  t = ok ? std::string("x") : n::label("?:");\n'
             '  auto cloud = use ? sub.take() : nullptr;\n'
             '  const auto l = ok ? status.level : Status::OK;\n'
-            '  const auto m = ok ? status.level : Limits<int, 2>::MAX;\n')
+            '  const auto m = ok ? status.level : Limits<int, 2>::MAX;\n'
+            '  name = stopped ? Scenario::PARKING : current;\n')
     message = "incompatible operand types ('{}' and '{}')"
     edits = _edits([(message.format('const char[1]', 'Any'), 1, 33),
                     (message.format('AnyElement', 'const char[3]'), 2, 17),
@@ -193,7 +194,10 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
                      "'const int' and vice versa", 5, 21),
                     # (template arguments end no operand)
                     ("conditional expression is ambiguous; 'AnyValue' can "
-                     "be converted to 'const int' and vice versa", 6, 21)],
+                     "be converted to 'const int' and vice versa", 6, 21),
+                    # a message's string constant is an int in the model
+                    ("incompatible operand types ('const int' and "
+                     "'std::string' (aka 'basic_string<char>'))", 7, 18)],
                    code)
     string = 'edit-operand:{}:%3A%3Astd%3A%3Astring'
     value = 'edit-operand:{}:%3A%3Arsia_model%3A%3AAnyValue'
@@ -202,7 +206,9 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
                      ('edit-operand:3:std%3A%3Astring', 'a.cpp:3:10'),
                      (value.format(3), 'a.cpp:4:20'),
                      (value.format(3), 'a.cpp:5:21'),
-                     (value.format(3), 'a.cpp:6:21')}
+                     (value.format(3), 'a.cpp:6:21'),
+                     ('edit-operand:2:%3A%3Astd%3A%3Abasic_string%3Cchar%3E',
+                      'a.cpp:7:18')}
     assert {kind.partition(':')[0] for kind, _ in edits} == {OPERAND}
     # a literal's edit where the operand is no literal changes nothing
     edits.add((string.format(2), 'a.cpp:3:10'))
@@ -219,7 +225,9 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
         '  const auto l = ok ? status.level : ::rsia_model::as<::rsia_model::'
         'AnyValue>( Status::OK);',
         '  const auto m = ok ? status.level : ::rsia_model::as<::rsia_model::'
-        'AnyValue>( Limits<int, 2>::MAX);', '']
+        'AnyValue>( Limits<int, 2>::MAX);',
+        '  name = stopped ? ::rsia_model::as<::std::basic_string<char>>( '
+        'Scenario::PARKING ): current;', '']
 
 
 def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
@@ -287,7 +295,8 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
             'std::optional<Path> smooth();\n'
             'std::shared_ptr<Tracker> make();\n'
             '  return tracker;\n'
-            '  return layer->getName();\n')
+            '  return layer->getName();\n'
+            '  std::unique_ptr<lanelet::Projector> projector = make(info);\n')
     params = 'const acme::Params &'
     edits = source_edits.edits_from_notes([
         # at the argument, its parameter in a note
@@ -316,7 +325,10 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
          "function return type 'int'", 'a.cpp', 8, 10, []),
         # the one pointer a catch-all does not convert to
         ("no viable conversion from returned value of type 'Any' to "
-         "function return type 'const char *'", 'a.cpp', 9, 10, [])],
+         "function return type 'const char *'", 'a.cpp', 9, 10, []),
+        # (moved, never copied)
+        ("no viable conversion from 'Any' to "
+         "'std::unique_ptr<lanelet::Projector>'", 'a.cpp', 10, 39, [])],
         lambda file: code,
         parameter_types=lambda *at, callee=None: {
             ('h.hpp', 7, 8): ['double', 'double', 'double'],
@@ -324,7 +336,7 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
         parameter_type=lambda *at: {('h.hpp', 5, 30): params}.get(at))
     assert {name for _, name in edits} == {
         'a.cpp:1:18', 'a.cpp:2:14', 'a.cpp:3:25', 'a.cpp:4:10', 'a.cpp:5:32',
-        'a.cpp:9:10'}
+        'a.cpp:9:10', 'a.cpp:10:51'}
     text, _ = _edited(edits, code)
     assert text == ('  return correct(::rsia_model::as<const acme::Params>'
                     '(params_.get()), shape, pose);\n'
@@ -339,7 +351,10 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     'std::shared_ptr<Tracker> make();\n'
                     '  return tracker;\n'
                     '  return ::rsia_model::as<const char *>'
-                    '(layer->getName());\n')
+                    '(layer->getName());\n'
+                    '  std::unique_ptr<lanelet::Projector> projector = '
+                    '::rsia_model::assigned_as<std::unique_ptr<'
+                    'lanelet::Projector>>(make(info));\n')
 
 
 def test_a_constant_passed_for_a_string_is_made_one():

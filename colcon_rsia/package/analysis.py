@@ -210,8 +210,9 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
 
     Every C++ source of the package (tests and build output aside), with
     the package's ``include/`` and source directories, the ``include/``
-    directories of the workspace's packages, and, for the exact mode, the
-    ROS include directories installed on the machine.
+    directories of the workspace's packages, the package's directory and
+    its ``src/``, and, for the exact mode, the ROS include directories
+    installed on the machine.
     """
     std = os.environ.get(CXX_STD_ENVIRONMENT_VARIABLE.name, DEFAULT_STD)
     # the package's own include directories, also those of the libraries
@@ -219,8 +220,11 @@ def synthesized_entries(path, *, workspace_package_dirs=(),
     include_dirs = _own_include_dirs(path)
     include_dirs += [os.path.join(package, 'include')
                      for package in sorted(workspace_package_dirs)]
-    # "subdir/header.hpp" relative to the package (include_directories(.))
-    include_dirs.append(path)
+    # "subdir/header.hpp" relative to the package (include_directories(.)),
+    # then to its src/ (target_include_directories(x PUBLIC src), which a
+    # subdirectory's target includes from: example_rule/src/rule.cpp's
+    # "switch_rule/base_switch_rule.hpp" is src/switch_rule/'s)
+    include_dirs += [path, os.path.join(path, 'src')]
     if with_system_ros:
         include_dirs += sorted(glob.glob('/opt/ros/*/include'))
     include_dirs = [d for d in dict.fromkeys(include_dirs) if os.path.isdir(d)]

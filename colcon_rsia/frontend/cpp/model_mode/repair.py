@@ -69,6 +69,9 @@ _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
 _TYPE_IN_CLASS = re.compile(
     r'^(?:no type named|typename specifier refers to non-type member) '
     r"'(\w+)' in '([\w:]+)(<.*>)?'$")
+# a name as the element type of an array among template arguments
+_ARRAY_TYPE_ARGUMENT = re.compile(
+    r'[<,]\s*((?:::)?[A-Za-z_]\w*(?:::[A-Za-z_]\w*)*)\s*\[\s*$')
 # a name reserved to the implementation, `__name__`, at an error: an
 # attribute macro of a compiler we are not (and whether it takes arguments)
 _RESERVED_ATTRIBUTE = re.compile(r'(__[A-Za-z]\w*__)(?!\w)(\s*\()?')
@@ -389,6 +392,10 @@ def _unaliased(repairs, aliases):
         if head in aliases and kind not in INCLUDES and \
                 not kind.startswith('macro-'):
             name = aliases[head] + ('::' + rest if rest else '')
+            if not rest:
+                # the alias itself names its target, a namespace (clang
+                # takes `pt` of `pt::ptree tree;` for an unknown type)
+                kind = NAMESPACE
         result.add((kind, name))
     return result
 
@@ -943,6 +950,14 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 # class, which its CamelCase made a class of ours
                 repairs.add((VALUE, _qualified(subject, text, column)))
             continue
+        if message == 'expected expression' and \
+                text[column - 1:column] == ']':
+            match = _ARRAY_TYPE_ARGUMENT.search(text[:column - 1])
+            if match:
+                # `std::unique_ptr<nvmlProcessInfo_t[]>`: clang reads the
+                # unknown name as a value, and `[]` wants an index
+                repairs.add((TYPE, match.group(1)))
+            continue
         if message.startswith('expected namespace name'):
             for match in _NAMESPACE_ALIAS.finditer(text):
                 name = (match.group(1) or match.group(2)).rstrip(':')
@@ -1150,7 +1165,8 @@ def _by_use(name, after, *, unqualified):
             return MACRO_VALUE, name
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
                 else FUNCTION), name
-    if after.startswith('<') and not after.startswith(('<<', '<=')):
+    if after.startswith('<') and not after.startswith(('<<', '<=')) and \
+            not _compares(after):
         return _template_use(name, after, unqualified=unqualified), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
@@ -1167,6 +1183,29 @@ def _by_use(name, after, *, unqualified):
         # followed by a name (`ns::archive ar(...)`)
         return TYPE, name
     return OBJECT, name
+
+
+def _compares(after):
+    """Whether the `<` that starts ``after`` compares, opening no template.
+
+    So it does when a `)` or `;` closes its level before any `>`
+    (`bp::std_in < pipe)`, boost::process's redirection). A `>` that
+    follows (`bp::std_in < p, bp::std_out > out)`) cannot be told from
+    template arguments (`f(acme::Grid<T> a, int b)`): they are taken.
+    """
+    depth = 0
+    for char in after[1:]:
+        if char in '([{':
+            depth += 1
+        elif char in ')]}':
+            if depth == 0:
+                return True
+            depth -= 1
+        elif char == '>':
+            return False
+        elif char == ';':
+            return True
+    return False
 
 
 def _template_use(name, after, *, unqualified):

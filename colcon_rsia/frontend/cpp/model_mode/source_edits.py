@@ -144,6 +144,11 @@ _MUTUAL_OPERAND_ERROR = re.compile(
     rf'^conditional expression is ambiguous; ({_TYPE}) can be converted to '
     rf'({_TYPE}) and vice versa$')
 _STRING = '::std::string'
+# the same, for an operand that is no literal (an edit checks that the
+# operand it makes a `_STRING` is still a literal)
+_CONSTANT_STRING = '::std::basic_string<char>'
+_STRING_TYPE = re.compile(
+    r'^(?:const )?(?:std::)?(?:string|basic_string<char>)$')
 _CATCH_ALL_VALUE = '::rsia_model::AnyValue'
 # from a catch-all, or from a class a repair or stand-in declared (the
 # real build converts it, or it would not build); the class as the message
@@ -202,6 +207,8 @@ _DECLARATOR = re.compile(r'[A-Za-z_]\w*\s*=(?!=)\s*')
 # where a variable's initializer takes an address (`data = &msg.data[0]`)
 _INITIALIZED_ADDRESS = re.compile(r'\w+\s*(?:=|\(|\{)\s*(&)(?!&)')
 
+# a class that is moved, never copied
+_MOVE_ONLY = re.compile(r'^(?:::)?std::unique_ptr<')
 _RESULT = '-> ::rsia_model::AnyValue '
 # how far before a `return` its lambda's body may open
 _SCAN_LIMIT = 20000
@@ -574,8 +581,11 @@ def _changes(kind, masked, offset):
         return _casts(masked, offset, unquote(detail).split(';'))
     if kind == AS:
         end = _end_of_argument(masked, offset)
+        made = unquote(detail)
+        # (a std::unique_ptr is moved from, never copied: an rvalue)
+        function = 'assigned_as' if _MOVE_ONLY.match(made) else 'as'
         return [] if end is None else [
-            (offset, 0, f'::rsia_model::as<{unquote(detail)}>('), (end, 0, ')')]
+            (offset, 0, f'::rsia_model::{function}<{made}>('), (end, 0, ')')]
     if kind == ASSIGNED:
         assignment = _assignment(masked, offset)
         if assignment is None:
@@ -752,7 +762,8 @@ def _bound_initializer(masked, names):
 def _operand_edit(masked, file, question, message):
     """The edit that gives one operand of the conditional at `?` a type.
 
-    A literal beside a catch-all becomes a std::string; a `nullptr` beside
+    A literal beside a catch-all becomes a std::string, and so does an int
+    (a message's constant, in the model) beside a string; a `nullptr` beside
     one, and a value each converts to (`level` and `Status::OK`), becomes a
     catch-all value; a catch-all beside a class the code names becomes
     that class. The literal is the operand that is only white space once
@@ -781,7 +792,15 @@ def _operand_edit(masked, file, question, message):
     elif other:
         types = other.groups()
         catch_alls = [bool(_CATCH_ALL.match(_aliased(t))) for t in types]
-        if catch_alls in ([True, False], [False, True]):
+        constants = [bool(re.match(r'^(?:const )?int$', _aliased(t)))
+                     for t in types]
+        strings = [bool(_STRING_TYPE.match(_aliased(t))) for t in types]
+        if constants in ([True, False], [False, True]) and any(strings):
+            # a message's string constant, an int in the model, beside a
+            # string (`stopped ? Scenario::PARKING : current`): the real
+            # code has two strings
+            which, type_name = (2 if constants[0] else 3), _CONSTANT_STRING
+        elif catch_alls in ([True, False], [False, True]):
             # the catch-all becomes the other's class, as the code names it
             which = 2 if catch_alls[0] else 3
             spelled = re.match(r"^'(.*?)'", types[3 - which]).group(1)

@@ -339,6 +339,12 @@ public:
   operator M() const;
 };
 
+template<class T>
+struct RsiaIsChronoDuration : std::false_type {};
+template<class Rep, class Period>
+struct RsiaIsChronoDuration<std::chrono::duration<Rep, Period>>
+  : std::true_type {};
+
 class Time
 {
 public:
@@ -346,8 +352,13 @@ public:
        rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
   explicit Time(int64_t nanoseconds = 0,
                 rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
-  // from builtin_interfaces::msg::Time (implicit, like the real one)
-  template<class M>
+  // from builtin_interfaces::msg::Time (implicit, like the real one); not
+  // from a std::chrono duration, which converts to a Duration only
+  // (`now() - std::chrono::nanoseconds(n)` would tie), nor from a
+  // std::optional<Time> (`cond ? now() : optional_stamp` would tie)
+  template<class M, typename std::enable_if<
+      !RsiaIsChronoDuration<M>::value &&
+      !rsia_model::is_optional<M>::value, int>::type = 0>
   Time(const M & time_msg, rcl_clock_type_t clock_type = RCL_ROS_TIME);
   Time(const Time & rhs);
   Time & operator=(const Time & rhs);
