@@ -153,6 +153,11 @@ def _lines(text):
      {('macro-empty', 'FOO_PUBLIC')}),
     ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
      {('macro-void', 'BOOST_CLASS_EXPORT')}),
+    # an unknown macro whose arguments read as calls
+    ("called object type 'std::unordered_map<std::string, double> *' is not "
+     'a function or function pointer',
+     '  BOOST_SCOPE_EXIT((&processing_time_)(&stop_watch))', 39,
+     {('macro-void', 'BOOST_SCOPE_EXIT')}),
     # an unknown C type as an array's element among template arguments
     ('expected expression', '  std::unique_ptr<nvmlProcessInfo_t[]> infos;',
      37, {('type', 'nvmlProcessInfo_t')}),
@@ -294,6 +299,10 @@ def _lines(text):
     ("no member named 'Result' in 'acme::Buffer'",
      'std::optional<acme::Buffer::Result>', 29,
      {('member-type', 'acme::Buffer::Result')}),
+    # and one made of braces
+    ("no member named 'Builder' in 'autoware::trajectory::Trajectory'",
+     '  auto trajectory = trajectory::Trajectory<P>::Builder{}.build(points);', 48,
+     {('member-type', 'autoware::trajectory::Trajectory::Builder')}),
     # a member of the catch-all base (a field named `type`) is no type
     ("typename specifier refers to non-type member 'type' in "
      "'pcl::traits::fieldList<pcl::PointXYZ>'",

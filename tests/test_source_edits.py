@@ -357,6 +357,31 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
                     'lanelet::Projector>>(make(info));\n')
 
 
+def test_an_argument_for_a_lambdas_parameter_is_made_of_its_class():
+    # a lambda has no declaration to read: the class as its note spells it
+    code = ('  const auto ignored = [&](const LivoxPoint & p) { return p.tag; };\n'
+            '  for (const auto & p : points) { if (ignored(p)) {} }\n'
+            '  ignored(count);\n')
+    edits = source_edits.edits_from_notes([
+        ("no matching function for call to object of type 'const (lambda at "
+         "a.cpp:1:24)'", 'a.cpp', 2, 39,
+         [("candidate function not viable: no known conversion from 'const "
+           "Any' to 'const LivoxPoint' for 1st argument", 'a.cpp', 1, 24)]),
+        # (from a real type: not the model's doing)
+        ("no matching function for call to object of type 'const (lambda at "
+         "a.cpp:1:24)'", 'a.cpp', 3, 3,
+         [("candidate function not viable: no known conversion from 'int' "
+           "to 'const LivoxPoint' for 1st argument", 'a.cpp', 1, 24)])],
+        lambda file: code,
+        parameter_types=lambda *at, callee=None: None,
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert len(edits) == 1
+    assert text.split('\n')[1] == (
+        '  for (const auto & p : points) { if (ignored('
+        '::rsia_model::as<const LivoxPoint>(p))) {} }')
+
+
 def test_a_constant_passed_for_a_string_is_made_one():
     # a message's constant the model made an int (bond's parameter names
     # are strings); clang's note gives the parameter's type with its alias
@@ -463,7 +488,8 @@ def test_a_value_assigned_is_made_of_its_targets_type():
             '  if (x) y = z;\n'
             '  a == b;\n'
             '  if (log) {*log = handler->result(code);}\n'
-            '  loss_ = new ceres::HuberLoss(0.7);\n')
+            '  loss_ = new ceres::HuberLoss(0.7);\n'
+            '  std::tie(left, right) = align(left, right);\n')
     message = "no viable overloaded '='"
     edits = source_edits.edits_from_notes(
         [(message, 'a.cpp', 1, 22, []), (message, 'a.cpp', 2, 12, []),
@@ -473,12 +499,13 @@ def test_a_value_assigned_is_made_of_its_targets_type():
           'a.cpp', 4, 20, []),
          # a pointer to a class of an unknown library, with no base
          ("incompatible pointer types assigning to 'ceres::LossFunction *' "
-          "from 'ceres::HuberLoss *'", 'a.cpp', 5, 11, [])],
+          "from 'ceres::HuberLoss *'", 'a.cpp', 5, 11, []),
+         (message, 'a.cpp', 6, 25, [])],
         lambda file: code,
         parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None)
     assert edits == {(ASSIGNED, 'a.cpp:1:22'), (ASSIGNED, 'a.cpp:4:18'),
-                     (ASSIGNED, 'a.cpp:5:9')}
+                     (ASSIGNED, 'a.cpp:5:9'), (ASSIGNED, 'a.cpp:6:25')}
     text, _ = _edited(edits, code)
     assert text.split('\n')[0] == (
         '  debug.obstacles[0] = '
@@ -487,6 +514,28 @@ def test_a_value_assigned_is_made_of_its_targets_type():
     assert text.split('\n')[3] == (
         '  if (log) {*log = ::rsia_model::assigned_as<decltype(*log)>'
         '(handler->result(code));}')
+    assert text.split('\n')[5] == (
+        '  std::tie(left, right) = ::rsia_model::assigned_as<decltype('
+        'std::tie(left, right))>(align(left, right));')
+
+
+def test_a_messages_string_constant_initialising_a_string_is_made_one():
+    # a message's string constant is an int in the model; no declaration of
+    # std::string's constructors can be read (a class template's)
+    code = ': Node("selector"), current_(Scenario::EMPTY), rate_(rate)\n'
+    note = ('candidate constructor not viable: no known conversion from '
+            "'const int' to '{}' for 1st argument")
+    edits = source_edits.edits_from_notes([(
+        "no matching constructor for initialization of 'std::string' (aka "
+        "'basic_string<char>')", 'a.cpp', 1, 22,
+        [(note.format('const std::allocator<char>'), 'string.h', 528, 7),
+         (note.format('const basic_string<char>'), 'string.h', 540, 7)])],
+        lambda file: code,
+        parameter_types=lambda *at, callee=None: ['const type-parameter-0-2 &'],
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text == (': Node("selector"), current_(::rsia_model::as<::std::string>'
+                    '(Scenario::EMPTY)), rate_(rate)\n')
 
 
 def test_an_edit_whose_code_changed_is_dropped():

@@ -69,6 +69,10 @@ _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
 _TYPE_IN_CLASS = re.compile(
     r'^(?:no type named|typename specifier refers to non-type member) '
     r"'(\w+)' in '([\w:]+)(<.*>)?'$")
+# a statement that calls an ALL_CAPS name, and the error of a value called
+_STATEMENT_MACRO = re.compile(r'^\s*([A-Z][A-Z0-9]*_[A-Z0-9_]*)\s*\(')
+_CALLED_NON_FUNCTION = re.compile(
+    r"^called object type '.*' is not a function or function pointer$")
 # a name as the element type of an array among template arguments
 _ARRAY_TYPE_ARGUMENT = re.compile(
     r'[<,]\s*((?:::)?[A-Za-z_]\w*(?:::[A-Za-z_]\w*)*)\s*\[\s*$')
@@ -750,10 +754,11 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
 def _names_nested_type(after, before):
     """Whether `Owner::Member`, between these, is a type of the class.
 
-    So is one that declares a variable (`ns::Grid::Ptr grid`) and one among
-    template arguments (`std::optional<Buffer::Result>`).
+    So is one that declares a variable (`ns::Grid::Ptr grid`), one among
+    template arguments (`std::optional<Buffer::Result>`) and one made of
+    braces (`Trajectory<P>::Builder{}.build(points)`).
     """
-    return bool(re.match(r'(?:[&*]\s*)?[A-Za-z_]', after)) or (
+    return bool(re.match(r'(?:[&*]\s*)?[A-Za-z_]|\{', after)) or (
         after.startswith(('>', ',')) and _in_template_arguments(before))
 
 
@@ -949,6 +954,14 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 # `setCursor(Rotate2D)`: an enumerator of an unknown base
                 # class, which its CamelCase made a class of ours
                 repairs.add((VALUE, _qualified(subject, text, column)))
+            continue
+        match = _STATEMENT_MACRO.match(text)
+        if match and _CALLED_NON_FUNCTION.match(message) and \
+                column > match.end():
+            # BOOST_SCOPE_EXIT((&a)(&b)) { ... }: the arguments of an
+            # unknown macro read as calls (clang then says nothing of the
+            # macro's name itself)
+            repairs.add((MACRO_VOID, match.group(1)))
             continue
         if message == 'expected expression' and \
                 text[column - 1:column] == ']':

@@ -160,12 +160,18 @@ _NO_CONVERSION = re.compile(
 _C_STRING = re.compile(r'^(?:const )?char \*$')
 _NO_MATCH = re.compile(
     r"^no matching (?:member )?function for call to '.*'$|"
+    r"^no matching function for call to object of type '.*'$|"
     r'^no matching constructor for initialization of ')
 # a candidate's note that names the argument the model's types cannot
 # make the parameter's
 _NOT_CONVERTED = re.compile(
     r'^candidate (?:function|constructor) not viable: no known conversion '
-    rf'from {_TYPE} to {_TYPE} for (\d+)(?:st|nd|rd|th) argument')
+    r"from '([^']*)'(?: \(aka '[^']*'\))? to '([^']*)'(?: \(aka '[^']*'\))? "
+    r'for (\d+)(?:st|nd|rd|th) argument')
+# (from a message's string constant, an int in the model, to a string)
+_CONSTANT_FOR_STRING = re.compile(
+    r'^candidate constructor not viable: no known conversion from '
+    r"'const int' to 'const (?:std::)?(?:basic_string<char>|string)'")
 # a template whose parameter a catch-all argument deduces as well as a real
 # one (`pushUniqueVector(lanes, any)` for `(T &, const T &)`)
 _CONFLICTING = re.compile(
@@ -184,9 +190,10 @@ _NOT_ASSIGNABLE = re.compile(
     r"^incompatible pointer types assigning to '[^']*\*'"
     r"(?: \(aka '[^']*'\))? from '[^']*\*'(?: \(aka '[^']*'\))?$")
 # what an assignment's target may be: a name, members, subscripts, getters
+# (also with simple arguments: `std::tie(left, right)`)
 _TARGET = re.compile(
     r'^\*?\s*[A-Za-z_]\w*(?:\s*(?:\.|->|::)\s*[A-Za-z_]\w*|'
-    r'\s*\[[^\[\];]*\]|\s*\(\s*\))*$')
+    r'\s*\[[^\[\];]*\]|\s*\([^;()]*\))*$')
 _AMBIGUOUS_CALL = re.compile(
     r"^call to (?:member function |constructor of )?'.*'"
     r"(?: \(aka '.*'\))? is ambiguous$")
@@ -354,12 +361,27 @@ def edits_from_notes(errors, read_code, *, parameter_types,
             for note, *candidate in notes:
                 match = _NOT_CONVERTED.match(note)
                 types = parameter_types(*candidate) if match else None
-                index = int(match.group(1)) - 1 if match else 0
-                if types and index < len(types):
-                    edits |= _as_parameter_of_argument(
-                        masked_of(file), file, line, column, index,
-                        types[index])
+                index = int(match.group(3)) - 1 if match else 0
+                made = _as_parameter_of_argument(
+                    masked_of(file), file, line, column, index,
+                    types[index]) if types and index < len(types) else None
+                if made:  # (else the next candidate may name it)
+                    edits |= made
                     break
+                if match and masked_of(file) is not None and (
+                        _CATCH_ALL.match(match.group(1)) or
+                        _CONSTANT_FOR_STRING.match(note)):
+                    # no declaration to read (a lambda's parameters, a
+                    # class template's): the class as the note spells it,
+                    # where the code names it; a string for a message's
+                    # constant (an int in the model)
+                    named = _STRING if _CONSTANT_FOR_STRING.match(note) \
+                        else _named_in(masked_of(file), match.group(2))
+                    if named:
+                        edits |= _as_parameter_of_argument(
+                            masked_of(file), file, line, column, index,
+                            named)
+                        break
                 match = _CONFLICTING.match(note)
                 if match:
                     edits |= _as_deduced(
