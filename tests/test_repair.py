@@ -1350,6 +1350,20 @@ def test_the_namespaces_inside_a_repaired_one_are_repaired_at_once():
             ('template', 'boost::geometry::model::d2::point_xy')} <= found
 
 
+def test_a_templates_arguments_past_its_line_still_shape_it():
+    code = ('namespace bg = boost::geometry;\n'
+            'const bg::strategy::transform::rotate_transformer<\n'
+            '  bg::radian, double, 2, 2>\n'
+            '  rotation(-angle);\n')
+    lines = dict(enumerate(code.split('\n'), start=1))
+    found = repair.repairs_from_diagnostics(
+        [('expected namespace name', 'a.cpp', 1, 16)],
+        lambda file, line: lines[line], texts=[code])
+    assert ('template:ttvv',
+            'boost::geometry::strategy::transform::rotate_transformer') \
+        in found
+
+
 def test_a_model_header_a_repair_includes_gets_its_stand_ins(tmp_path):
     # rclcpp is named before anything includes it (a header of an unknown
     # library would have): the repair includes the model's rclcpp.hpp,

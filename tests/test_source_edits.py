@@ -15,6 +15,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
 from colcon_rsia.frontend.cpp.model_mode.source_edits import DYNAMIC_CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
 from colcon_rsia.frontend.cpp.model_mode.source_edits import OPERAND
+from colcon_rsia.frontend.cpp.model_mode.source_edits import RANGE_REFERENCE
 from colcon_rsia.frontend.cpp.model_mode.source_edits import REINTERPRET_CAST
 from test_repair import _analyze_one_unit
 
@@ -174,6 +175,49 @@ def test_the_address_of_a_catch_all_is_the_catch_all():
                     '  unsigned char * data =  msg.data[0];\n')
 
 
+def test_a_range_for_reference_to_a_catch_alls_element_is_a_copy():
+    code = ('  for (lanelet::LineString3d & line : map->lineStringLayer) {}\n'
+            '  for (Point & p : points) {}\n'
+            '  Point & q = points.front();\n')
+    message = "no viable conversion from 'AnyElement' to '{}'"
+    errors = [(message.format('lanelet::LineString3d'), 1, 32),
+              (message.format('Point'), 2, 16),
+              # (no range-for)
+              (message.format('Point'), 3, 11)]
+    edits = _edits(errors, code)
+    assert edits == {(RANGE_REFERENCE, 'a.cpp:1:30'),
+                     (RANGE_REFERENCE, 'a.cpp:2:14')}
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[:2] == [
+        '  for (lanelet::LineString3d   line : map->lineStringLayer) {}',
+        '  for (Point   p : points) {}']
+    # no other edit there: the range is no value of the class
+    assert source_edits.edits_from_notes(
+        [(m, 'a.cpp', line, column, []) for m, line, column in errors[:2]],
+        lambda file: code, parameter_types=lambda *at, callee=None: None,
+        parameter_type=lambda *at: None) == set()
+
+
+def test_the_address_of_a_catch_all_passed_to_an_overload_is_dropped():
+    # a standard container's member: the parameter is read from the note
+    code = '  paths.push_back(&object.paths.at(i)); keep(&count);\n'
+    note = ("candidate function not viable: no known conversion from '{}' "
+            "to 'const PredictedPath *const' for 1st argument")
+    edits = source_edits.edits_from_notes([
+        ("no matching member function for call to 'push_back'",
+         'a.cpp', 1, 9, [(note.format('rsia_model::AnyElement *'),
+                          'stl_list.h', 1200, 7)]),
+        # (a real pointer: not the model's doing)
+        ("no matching function for call to 'keep'", 'a.cpp', 1, 42,
+         [(note.format('int *'), 'a.hpp', 3, 6)])],
+        lambda file: code,
+        parameter_types=lambda *at, callee=None: None,
+        parameter_type=lambda *at: None)
+    assert edits == {(ADDRESS, 'a.cpp:1:19')}
+    text, _ = _edited(edits, code)
+    assert text == '  paths.push_back( object.paths.at(i)); keep(&count);\n'
+
+
 def test_a_conditionals_operand_takes_the_type_of_the_other():
     code = ('  auto p = unit->path().empty() ? "" : unit->path() + " ";\n'
             '  s = "a" + (ok ? names[i] : "/" "b") + f(x ? y : z);\n'
@@ -263,7 +307,8 @@ def test_an_ambiguous_constructor_of_one_argument_copies_the_class():
     # the candidates are a class template's: none names its parameters
     code = ('  vindices.reset(new std::vector<int>(indices->indices));\n'
             '  std::vector<size_t> sizes(cluster.width * cluster.height);\n'
-            '  std::vector<size_t> filled(cluster.width, 0);\n')
+            '  std::vector<size_t> filled(cluster.width, 0);\n'
+            '  outer.push_back(Point2d(point));\n')
     candidate = ('candidate constructor', 'stl_vector.h', 512, 7)
     edits = source_edits.edits_from_notes([
         ("call to constructor of 'std::vector<int>' is ambiguous",
@@ -272,18 +317,23 @@ def test_an_ambiguous_constructor_of_one_argument_copies_the_class():
          "long>') is ambiguous", 'a.cpp', 2, 23, [candidate]),
         # two arguments: which constructor is meant is not known
         ("call to constructor of 'std::vector<size_t>' (aka 'vector<unsigned "
-         "long>') is ambiguous", 'a.cpp', 3, 23, [candidate])],
+         "long>') is ambiguous", 'a.cpp', 3, 23, [candidate]),
+        # a functional cast of a catch-all: the same
+        ("ambiguous conversion for functional-style cast from 'const "
+         "AnyElement' to 'Point2d' (aka 'acme::Vector2d')", 'a.cpp', 4, 19,
+         [candidate])],
         lambda file: code,
         parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None)
     text, _ = _edited(edits, code)
-    assert text.split('\n')[:3] == [
+    assert text.split('\n')[:4] == [
         '  vindices.reset(new std::vector<int>('
         '::rsia_model::as<std::vector<int>>(indices->indices)));',
         '  std::vector<size_t> sizes('
         '::rsia_model::as<std::vector<size_t>>(cluster.width * '
         'cluster.height));',
-        '  std::vector<size_t> filled(cluster.width, 0);']
+        '  std::vector<size_t> filled(cluster.width, 0);',
+        '  outer.push_back(Point2d(::rsia_model::as<Point2d>(point)));']
 
 
 def test_an_argument_for_a_class_parameter_is_made_of_that_class():

@@ -733,6 +733,11 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
             kind = _by_qualified_use(
                 name, '::' if member else rest,
                 text[max(0, match.start() - 200):match.start()])
+            if kind == TEMPLATE and not member and rest.startswith('<'):
+                # arguments that go on past the line (`rotate_transformer<`
+                # then `bg::radian, double, 2, 2>`) still have a shape
+                kind = template_kind(' '.join(
+                    text[match.start(3):match.start(3) + 400].split()))
             found.add((kind, f'{namespace}::{name}'))
             if kind == NAMESPACE:
                 inner.add(f'{namespace}::{name}')

@@ -28,6 +28,8 @@ where C++ asks for one exact type:
 - ``return new ceres::AutoDiffLocalParameterization<...>;`` for a
   ``ceres::LocalParameterization *``, where the repaired classes know no
   base classes;
+- ``for (lanelet::LineString3d & line : map->lineStringLayer)``, where an
+  element of a catch-all binds no reference to a class;
 - ``dynamic_cast<nvinfer1::IConvolutionLayer *>(layer)``, where a repaired
   class has no virtual functions, and ``reinterpret_cast<const float *>(
   any)``, where a catch-all is no pointer.
@@ -37,7 +39,8 @@ parsed again with the line edited in memory (libclang's unsaved files,
 never on disk): the lambda returns an ``rsia_model::AnyValue``, the
 ``auto *`` becomes an ``auto``, the ``constexpr`` a ``const``, the binding's
 initializer becomes a value of as many names (see message.h's ``Bound``),
-the ``&`` goes (the catch-all converts to any pointer), the operand of a
+the ``&`` goes (the catch-all converts to any pointer; a range-for's
+variable is a copy), the operand of a
 conditional becomes a ``std::string`` (a literal) or a catch-all value
 (``nullptr``, a number), the arguments of
 the ambiguous call are made the parameters of its first candidate that
@@ -46,7 +49,7 @@ scope can name them, or, for a member of a class template, as members of
 the object's class (``typename std::map<long, double>::const_iterator``;
 the real build may take another overload; the call and its arguments are
 there for the facts either way), the one argument of an ambiguous
-constructor becomes the class constructed, an argument
+constructor or functional cast becomes the class constructed, an argument
 passed to a class parameter becomes ``rsia_model::as<Params>(arg)`` (so
 does one beside a real argument of a template, with that argument's type,
 and a pointer where the code names the pointer wanted), the value
@@ -92,8 +95,11 @@ ASSIGNED = 'edit-assigned'
 DYNAMIC_CAST = 'edit-dynamic-cast'
 # `reinterpret_cast` (of a catch-all) made `::rsia_model::as`, at the keyword
 REINTERPRET_CAST = 'edit-reinterpret-cast'
+# the `&` of a range-for's `T & x : any` blanked (a copy of each element)
+RANGE_REFERENCE = 'edit-range-reference'
 EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS,
-              OPERAND, CAST, AS, ASSIGNED, DYNAMIC_CAST, REINTERPRET_CAST)
+              OPERAND, CAST, AS, ASSIGNED, DYNAMIC_CAST, REINTERPRET_CAST,
+              RANGE_REFERENCE)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -113,6 +119,11 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
+# an element of a catch-all, which binds no reference to a class of an
+# unknown library (`for (lanelet::LineString3d & line : map->lineStringLayer)`)
+_ELEMENT_CONVERSION_ERROR = re.compile(
+    r"^no viable conversion from '(?:const )?(?:(?:::)?rsia_model::)?"
+    r"AnyElement' to '.*'$")
 # a class a repair declared has no virtual functions, which dynamic_cast
 # asks of its operand's
 _NOT_POLYMORPHIC_ERROR = re.compile(r"^'.*' is not polymorphic$")
@@ -177,6 +188,9 @@ _CONSTANT_FOR_STRING = re.compile(
 _CONFLICTING = re.compile(
     r'^candidate template ignored: deduced conflicting types for parameter '
     r"'\w+' \('(.*?)'(?: \(aka '(.*?)'\))? vs\. '(.*?)'(?: \(aka '(.*?)'\))?\)$")
+# the address of a catch-all
+_CATCH_ALL_POINTER = re.compile(
+    r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)? \*$')
 # a catch-all's type, canonically spelled
 _CATCH_ALL = re.compile(
     r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?(?: ?&+)?$')
@@ -198,7 +212,10 @@ _AMBIGUOUS_CALL = re.compile(
     r"^call to (?:member function |constructor of )?'.*'"
     r"(?: \(aka '.*'\))? is ambiguous$")
 _AMBIGUOUS_CONSTRUCTOR = re.compile(
-    r"^call to constructor of '([^']*)'(?: \(aka '[^']*'\))? is ambiguous$")
+    r"^call to constructor of '([^']*)'(?: \(aka '[^']*'\))? is ambiguous$|"
+    r'^ambiguous conversion for functional-style cast from '
+    r"'(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?' to "
+    r"'([^']*)'(?: \(aka '[^']*'\))?$")
 # the callee of a call, from where clang reports it: a (qualified) name,
 # its template arguments after it
 _CALLEE = re.compile(r'(?:::)?\s*~?[A-Za-z_]\w*(?:\s*::\s*~?[A-Za-z_]\w*)*\s*')
@@ -266,6 +283,7 @@ def edits_from_diagnostics(diagnostics, read_code):
             CONSTEXPR: _constexpr_keyword,
             BINDING: _binding_names,
             ADDRESS: _address_of,
+            RANGE_REFERENCE: _range_reference,
             DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
             REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
         }[kind](masked, offset)
@@ -283,8 +301,8 @@ def is_edit(kind):
 def needs_notes(message):
     """Whether :func:`edits_from_notes` reads an error of this message."""
     return any(pattern.match(message) for pattern in (
-        _AMBIGUOUS_CALL, _NO_CONVERSION, _NO_MATCH, _NO_ASSIGNMENT,
-        _NOT_ASSIGNABLE))
+        _AMBIGUOUS_CALL, _AMBIGUOUS_CONSTRUCTOR, _NO_CONVERSION, _NO_MATCH,
+        _NO_ASSIGNMENT, _NOT_ASSIGNABLE))
 
 
 def edits_from_notes(errors, read_code, *, parameter_types,
@@ -312,7 +330,8 @@ def edits_from_notes(errors, read_code, *, parameter_types,
     for message, file, line, column, notes in errors:
         if not file or ' ' in file:
             continue
-        if _AMBIGUOUS_CALL.match(message):
+        if _AMBIGUOUS_CALL.match(message) or \
+                _AMBIGUOUS_CONSTRUCTOR.match(message):
             for note, *candidate in notes:
                 types = parameter_types(
                     *candidate, callee=(file, line, column)) \
@@ -333,7 +352,8 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     if arguments is not None and len(arguments) == 1:
                         edits |= _as_parameter_of_argument(
                             masked, file, line, column, 0,
-                            _named_in(masked, constructed.group(1)))
+                            _named_in(masked, constructed.group(1) or
+                                      constructed.group(2)))
         elif _NO_CONVERSION.match(message):
             # at the argument, its parameter in a note (spelled so that any
             # scope names it); at a returned value, or at the variable an
@@ -342,6 +362,9 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                               if note.startswith('passing argument to')),
                              None)
             masked = masked_of(file)
+            offset = None if masked is None else _offset(masked, line, column)
+            if offset is not None and _range_reference(masked, offset):
+                continue  # (a range-for's variable: its own edit)
             if parameter is None and masked is not None:
                 wanted = _NO_CONVERSION.match(message).group(1)
                 # (a C string: the one pointer a catch-all does not
@@ -368,6 +391,14 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                 if made:  # (else the next candidate may name it)
                     edits |= made
                     break
+                if match and _CATCH_ALL_POINTER.match(match.group(1)):
+                    # `push_back(&msg.paths.at(i))` for a `const Path *`:
+                    # the catch-all itself converts to any pointer
+                    made = _address_argument(
+                        masked_of(file), file, line, column, index)
+                    if made:
+                        edits |= made
+                        break
                 if match and masked_of(file) is not None and (
                         _CATCH_ALL.match(match.group(1)) or
                         _CONSTANT_FOR_STRING.match(note)):
@@ -488,6 +519,19 @@ def _as_parameter_of_argument(masked, file, line, column, index,
     return _as_parameter(masked, file, at_line, at_column, parameter)
 
 
+def _address_argument(masked, file, line, column, index):
+    """The edit that drops the `&` of the index-th argument of a call."""
+    callee = None if masked is None else _offset(masked, line, column)
+    arguments = None if callee is None else _call_arguments(masked, callee)
+    if not arguments or index >= len(arguments):
+        return set()
+    start = arguments[index][0]
+    if _address_of(masked, start) != start:
+        return set()
+    at_line, at_column = _position(masked, start)
+    return {(ADDRESS, f'{file}:{at_line}:{at_column}')}
+
+
 def _as_deduced(masked, file, conflict, arguments):
     """The edits that make a call's catch-all arguments its real type.
 
@@ -526,6 +570,7 @@ def _kind_of(message):
                           (ADDRESS, _ADDRESS_ERROR),
                           (DYNAMIC_CAST, _NOT_POLYMORPHIC_ERROR),
                           (REINTERPRET_CAST, _REINTERPRET_ERROR),
+                          (RANGE_REFERENCE, _ELEMENT_CONVERSION_ERROR),
                           (OPERAND, _LITERAL_OPERAND_ERROR),
                           (OPERAND, _NULL_OPERAND_ERROR),
                           (OPERAND, _OTHER_OPERAND_ERROR),
@@ -623,7 +668,7 @@ def _changes(kind, masked, offset):
             has_parameters = _lambda_kind(masked, offset)
             change = offset, 0, \
                 _RESULT if has_parameters else '() ' + _RESULT
-    elif kind in (AUTO_POINTER, ADDRESS):
+    elif kind in (AUTO_POINTER, ADDRESS, RANGE_REFERENCE):
         blanked = '*' if kind == AUTO_POINTER else '&'
         if masked[offset] == blanked and \
                 masked[offset + 1:offset + 2] != blanked:
@@ -886,6 +931,18 @@ def _address_of(masked, offset):
         return offset if masked[offset + 1:offset + 2] != '&' else None
     match = _INITIALIZED_ADDRESS.match(masked, offset)
     return match.start(1) if match else None
+
+
+def _range_reference(masked, offset):
+    """Offset of the `&` of the range-for variable named at offset."""
+    if not re.match(r'[A-Za-z_]\w*\s*:(?!:)', masked[offset:offset + 200]):
+        return None
+    before = masked[:offset].rstrip()
+    if not before.endswith('&') or before.endswith('&&'):
+        return None
+    ampersand = len(before) - 1
+    head = masked[_statement_start(masked, ampersand):ampersand]
+    return ampersand if re.search(r'\bfor\s*\([^;()]*$', head) else None
 
 
 def _binding_names(masked, offset):
