@@ -1108,6 +1108,33 @@ void run(const geometry_msgs::msg::Point & p, grid_like::Polygon & polygon, cv_l
   cv_like::copyMakeBorder(image, image, 0, 1, 0, 1, cv_like::BORDER_CONSTANT, {0, 0, 0});
   const auto resized = cv_like::resize<float>(image, {});
   const std::vector<double> values = grid_like::spline({1.0}, std::vector<double>{2.0}, {p.x});
+  // lists of lists: a ring of points
+  polygon.outer() = {{p.x, p.y}, {p.y, p.x}, {p.x, p.y}};
+  polygon.outer() = {};
+  const auto ring = grid_like::Polygon{{{p.x, p.y}, {p.y, p.x}}};
+}
+""")
+
+
+def test_a_lambda_compares_catch_alls_with_a_constant_it_does_not_capture(
+        tmp_path):
+    _assert_parses_clean(tmp_path, r"""
+#include <vector>
+#include <grid_like/geometry.hpp>
+
+void run(const std::vector<int> & points, std::vector<int> & bound)
+{
+  // a number compared with a catch-all is read, not referred to
+  constexpr double overlap = 0.01;
+  const auto add = [](const std::vector<int> & ps, std::vector<int> & b) {
+    for (const auto & p : ps) {
+      if (b.empty() || grid_like::distance(p, b.back()) > overlap) {
+        b.push_back(p);
+      }
+    }
+    return 2 * grid_like::distance(ps.front(), b.back()) + overlap;
+  };
+  add(points, bound);
 }
 """)
 

@@ -946,6 +946,20 @@ def test_using_declared_classes_and_nested_types_are_repaired(tmp_path):
     assert (publisher.topic, publisher.label) == ('obstacles', 'dependent')
 
 
+def test_a_global_function_gives_way_to_the_qualified_one(tmp_path):
+    # `f(x)` failed before `using ns::f;` took effect (a global f), then
+    # the using-declaration (ns::f): both would conflict at the using
+    header = tmp_path / 'unit.h'
+    repair.add_repairs(str(header), 'unit.cpp', {
+        ('function', 'calcOffsetPose')})
+    repair.add_repairs(str(header), 'unit.cpp', {
+        ('namespace', 'motion_utils'),
+        ('function', 'motion_utils::calcOffsetPose')})
+    assert repair.read_repairs(str(header)) == {
+        ('namespace', 'motion_utils'),
+        ('function', 'motion_utils::calcOffsetPose')}
+
+
 def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):
     # round 1 saw `VehicleInfo v;` before acme::vehicle existed (a global
     # class), round 2 the class itself: under `using namespace acme::vehicle`

@@ -102,10 +102,12 @@ def test_a_pointer_auto_and_constexpr_variables_take_a_catch_all():
     text, insertions = _edited(edits)
     lines = text.split('\n')
     assert lines[13] == '  auto   const row = img.ptr<float>(i);'
-    assert lines[14] == '  const     double lowest = kmph2mps(10);'
+    assert lines[14] == '  static const double lowest = kmph2mps(10);'
     # a static member keeps its initializer as an inline variable
     assert lines[18] == '  static inline    float max_angle = deg2rad(40.f);'
-    assert insertions == {}
+    # (three more characters: columns after them map back)
+    assert source_edits.disk_column(insertions, 15, 23) == 20
+    assert set(insertions) == {15}
 
 
 def test_casts_of_repaired_classes_and_catch_alls_are_made_to_work():

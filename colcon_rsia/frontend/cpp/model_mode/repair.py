@@ -478,6 +478,11 @@ def _one_kind_each(repairs):
                 used[0] in (FUNCTION, OBJECT, CONSTANT):
             chosen[name] = (used[0], name)
             del chosen[short]
+        elif '::' in name and kind == FUNCTION and used and \
+                used[0] == FUNCTION:
+            # (also when ns::f is a function already: the global f made
+            # before `using ns::f;` took effect conflicts with it)
+            del chosen[short]
     classes = {name for kind, name in chosen.values()
                if _base_kind(kind) in (TYPE, TEMPLATE)}
     # a class the code also names qualified (`using ns::VehicleInfo;`, or a

@@ -37,7 +37,8 @@ where C++ asks for one exact type:
 The real build has the real types and none of these errors. So the unit is
 parsed again with the line edited in memory (libclang's unsaved files,
 never on disk): the lambda returns an ``rsia_model::AnyValue``, the
-``auto *`` becomes an ``auto``, the ``constexpr`` a ``const``, the binding's
+``auto *`` becomes an ``auto``, the ``constexpr`` a ``static const`` (a
+lambda uses it uncaptured, as it would the constant), the binding's
 initializer becomes a value of as many names (see message.h's ``Bound``),
 the ``&`` goes (the catch-all converts to any pointer; a range-for's
 variable is a copy), the operand of a
@@ -694,10 +695,11 @@ def _changes(kind, masked, offset):
         change = offset, len(keyword), replacement
     elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
         # in a class, a static member keeps an initializer of any type
-        # only as an inline variable; elsewhere a `const` takes any
+        # only as an inline variable; elsewhere a `static const` takes any,
+        # and a lambda uses it uncaptured, as it would the constant
         static = _word_before(masked, offset) == 'static'
         change = offset, len('constexpr'), \
-            'inline   ' if static else 'const    '
+            'inline   ' if static else 'static const'
     return [] if change is None else [change]
 
 

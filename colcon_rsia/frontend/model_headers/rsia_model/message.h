@@ -186,6 +186,8 @@ struct Braced
   Braced();
   template <class... RsiaArgs>
   Braced(RsiaArgs&&...);
+  // lists of lists (`Polygon2d{{{x0, y0}, {x1, y1}}}`, a ring of points)
+  Braced(std::initializer_list<Braced>);
 };
 #define RSIA_MODEL_B_ ::rsia_model::Braced
 #define RSIA_MODEL_BRACED_OVERLOADS(head, name, tail)                          \
@@ -234,6 +236,10 @@ struct Any : std::vector<AnyElement>
   // a list of values of different types (`marker.points = {a.position,
   // b.position}`, one a field)
   Any& operator=(std::initializer_list<AnyValue>);
+  // a list of lists (`polygon.outer() = {{x0, y0}, {x1, y1}}`); a template,
+  // so that `= {}` takes the form above (a tie, otherwise)
+  template <class RsiaNone = void>
+  Any& operator=(std::initializer_list<std::initializer_list<Braced>>);
 
   // every arithmetic use goes through double (one conversion: no ambiguity
   // between overloads for int, long, float, ...)
@@ -364,11 +370,28 @@ using NotAnyNorOptional = typename std::enable_if<
         !is_optional<typename std::decay<RsiaV>::type>::value,
     int>::type;
 
+// (a number by value: a lambda uses a constexpr local uncaptured, as the
+// real comparison of two numbers does, `dist > threshold`)
+template <class RsiaV>
+using NumberOperand = typename std::enable_if<
+    std::is_arithmetic<typename std::decay<RsiaV>::type>::value ||
+        std::is_enum<typename std::decay<RsiaV>::type>::value,
+    int>::type;
+template <class RsiaV>
+using OtherOperand = typename std::enable_if<
+    !std::is_arithmetic<typename std::decay<RsiaV>::type>::value &&
+        !std::is_enum<typename std::decay<RsiaV>::type>::value,
+    NotAnyNorOptional<RsiaV>>::type;
+
 #define RSIA_MODEL_ANY_BINARY_(op, result)              \
   result operator op(const Any&, const Any&);           \
-  template <class RsiaV, NotAnyNorOptional<RsiaV> = 0>  \
+  template <class RsiaV, NumberOperand<RsiaV> = 0>      \
+  result operator op(const Any&, RsiaV);                \
+  template <class RsiaV, NumberOperand<RsiaV> = 0>      \
+  result operator op(RsiaV, const Any&);                \
+  template <class RsiaV, OtherOperand<RsiaV> = 0>       \
   result operator op(const Any&, RsiaV&&);              \
-  template <class RsiaV, NotAnyNorOptional<RsiaV> = 0>  \
+  template <class RsiaV, OtherOperand<RsiaV> = 0>       \
   result operator op(RsiaV&&, const Any&);
 
 RSIA_MODEL_ANY_BINARY_(+, Any)
