@@ -1139,6 +1139,21 @@ void run(const std::vector<int> & points, std::vector<int> & bound)
 """)
 
 
+def test_a_panel_formats_what_its_node_receives_with_qstring(tmp_path):
+    _assert_parses_clean(tmp_path, r"""
+#include <string>
+#include <QObject>
+
+QString shown(const std::string & name, double seconds, int count)
+{
+  QString text = QString::fromStdString(name) + " ";
+  text += QString::number(seconds, 'f', 3).rightRef(4);
+  text += QString("%1 of %2").arg(count).arg(QString::number(count, 16));
+  return text.isEmpty() ? QString::fromUtf8("-") : text.left(text.size() - 1);
+}
+""")
+
+
 def test_rates_policies_iterators_and_pointer_casts_of_catch_all_values(
         tmp_path):
     _assert_parses_clean(tmp_path, r"""

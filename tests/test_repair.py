@@ -958,6 +958,12 @@ def test_a_global_function_gives_way_to_the_qualified_one(tmp_path):
     assert repair.read_repairs(str(header)) == {
         ('namespace', 'motion_utils'),
         ('function', 'motion_utils::calcOffsetPose')}
+    # a class's function beside it (Qt's connect(...) in a derived class
+    # and QObject::connect(...)) leaves the global one
+    repair.add_repairs(str(header), 'unit.cpp', {
+        ('function', 'connect'), ('function', 'QObject::connect')})
+    assert {('function', 'connect'), ('function', 'QObject::connect')} <= \
+        repair.read_repairs(str(header))
 
 
 def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):

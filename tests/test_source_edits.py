@@ -278,12 +278,14 @@ def test_a_conditionals_operand_takes_the_type_of_the_other():
 
 def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
     code = ('  if (is_timeout(msg.header.stamp, 1.0) ||\n'
-            '      checker.willLeave({lane}, path)) {}\n')
+            '      checker.willLeave({lane}, path)) {}\n'
+            '  fill({lane}, path);\n')
     time = 'const builtin_interfaces::msg::Time_<std::allocator<void> > &'
     types = {('h.hpp', 3, 6): None,  # a template
              ('h.hpp', 4, 6): [time, 'double'],
              ('h.hpp', 8, 6): ['(lambda at h.hpp:8:20)', 'const Path &'],
-             ('h.hpp', 9, 6): ['const std::vector<int> &', 'const Path &']}
+             ('h.hpp', 9, 6): ['const std::vector<int> &', 'const Path &'],
+             ('h.hpp', 12, 6): ['std::vector<int> &', 'const Path &']}
     candidate = 'candidate function'
     edits = source_edits.edits_from_notes([
         ("call to 'is_timeout' is ambiguous", 'a.cpp', 1, 7,
@@ -291,18 +293,23 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
         ("call to member function 'willLeave' is ambiguous", 'a.cpp', 2, 15,
          [(candidate, 'h.hpp', 8, 6), (candidate, 'h.hpp', 9, 6)]),
         ("no matching function for call to 'f'", 'a.cpp', 1, 7,
-         [(candidate, 'h.hpp', 9, 6)])], lambda file: code,
+         [(candidate, 'h.hpp', 9, 6)]),
+        ("call to 'fill' is ambiguous", 'a.cpp', 3, 3,
+         [(candidate, 'h.hpp', 12, 6)])], lambda file: code,
         parameter_types=lambda *at, callee=None: types.get(at),
         parameter_type=lambda *at: None)
-    assert {name for _, name in edits} == {'a.cpp:1:7', 'a.cpp:2:15'}
+    assert {name for _, name in edits} == {'a.cpp:1:7', 'a.cpp:2:15',
+                                           'a.cpp:3:3'}
     text, insertions = _edited(edits, code)
-    assert text.split('\n')[:2] == [
+    assert text.split('\n')[:3] == [
         f'  if (is_timeout(::rsia_model::as<{time}>(msg.header.stamp), '
         '::rsia_model::as<double>(1.0)) ||',
-        # a braced argument has no type to cast
-        '      checker.willLeave({lane}, '
-        '::rsia_model::as<const Path &>(path))) {}']
-    assert source_edits.disk_column(insertions, 2, 64) == 33
+        # a braced argument is made a temporary of the class
+        '      checker.willLeave(std::vector<int>{lane}, '
+        '::rsia_model::as<const Path &>(path))) {}',
+        # (not for a reference to a class to change: no temporary binds)
+        '  fill({lane}, ::rsia_model::as<const Path &>(path));']
+    assert source_edits.disk_column(insertions, 2, 80) == 33
 
 
 def test_an_ambiguous_constructor_of_one_argument_copies_the_class():

@@ -479,9 +479,12 @@ def _one_kind_each(repairs):
             chosen[name] = (used[0], name)
             del chosen[short]
         elif '::' in name and kind == FUNCTION and used and \
-                used[0] == FUNCTION:
+                used[0] == FUNCTION and \
+                not _CAMEL.match(name.split('::')[-2]):
             # (also when ns::f is a function already: the global f made
-            # before `using ns::f;` took effect conflicts with it)
+            # before `using ns::f;` took effect conflicts with it; not
+            # beside a class's `QObject::connect`, where the unqualified
+            # `connect(...)` of a derived class needs its own)
             del chosen[short]
     classes = {name for kind, name in chosen.values()
                if _base_kind(kind) in (TYPE, TEMPLATE)}

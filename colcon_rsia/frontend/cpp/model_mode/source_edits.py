@@ -706,14 +706,21 @@ def _changes(kind, masked, offset):
 def _casts(masked, callee, types):
     """The insertions that cast a call's arguments to `types`.
 
-    A braced argument (`{lane}`) is left as it is: it has no type to cast.
+    A braced argument (`{lane}`) has no type to cast: it is made a
+    temporary of the parameter's class (`std::vector<Lanelet>{lane}`),
+    unless the parameter is a reference to a class to change.
     """
     arguments = _call_arguments(masked, callee)
     if arguments is None or len(arguments) > len(types):
         return []
     changes = []
     for (start, end), parameter in zip(arguments, types):
-        if masked[start] != '{':
+        if masked[start] == '{':
+            if not re.search(r'(?<!&)&$', parameter) or \
+                    parameter.startswith('const '):
+                changes.append((start, 0, re.sub(
+                    r'^const\s+|\s*&+$', '', parameter)))
+        else:
             # (no static_cast: a catch-all converts to a class that has
             # constructors of its own, `const_iterator`, more ways than one)
             made = 'assigned_as' if parameter.endswith('&&') else 'as'

@@ -6,12 +6,36 @@
 #define RSIA_MODEL_QT_CORE_H
 
 #include <chrono>
+#include <string>
 
+// (with the API rviz panels use to show what their nodes receive)
 class QString
 {
 public:
   QString();
   QString(const char * text);
+  static QString fromStdString(const std::string & text);
+  static QString fromUtf8(const char * text, int size = -1);
+  template<class Number>
+  static QString number(Number value, char format = 'g', int precision = 6);
+  template<class Number>
+  static QString number(Number value, int base);
+  std::string toStdString() const;
+  template<class ... Values>
+  QString arg(const Values & ...) const;
+  QString left(int n) const;
+  QString right(int n) const;
+  QString rightRef(int n) const;
+  QString mid(int position, int n = -1) const;
+  bool isEmpty() const;
+  int size() const;
+  int length() const;
+  double toDouble(bool * ok = nullptr) const;
+  int toInt(bool * ok = nullptr, int base = 10) const;
+  QString & operator+=(const QString & other);
+  friend QString operator+(const QString & a, const QString & b);
+  friend bool operator==(const QString & a, const QString & b);
+  friend bool operator!=(const QString & a, const QString & b);
 };
 
 // the real macro also declares the meta-object functions (bodies moc
