@@ -153,6 +153,13 @@ def _lines(text):
      {('macro-empty', 'FOO_PUBLIC')}),
     ("unknown type name 'BOOST_CLASS_EXPORT'", 'BOOST_CLASS_EXPORT(Foo);', 1,
      {('macro-void', 'BOOST_CLASS_EXPORT')}),
+    # a C library's functions (and macros) called: no classes
+    ("use of undeclared identifier 'PyUnicode_AsEncodedString'",
+     '  PyUnicode_AsEncodedString(name.ptr(), "UTF-8", "strict");', 3,
+     {('function', 'PyUnicode_AsEncodedString')}),
+    ("use of undeclared identifier 'PyBytes_AS_STRING'",
+     '  names.push_back(PyBytes_AS_STRING(bytes));', 19,
+     {('function', 'PyBytes_AS_STRING')}),
     # an unknown macro whose arguments read as calls
     ("called object type 'std::unordered_map<std::string, double> *' is not "
      'a function or function pointer',

@@ -441,6 +441,25 @@ def test_an_argument_for_a_lambdas_parameter_is_made_of_its_class():
         '::rsia_model::as<const LivoxPoint>(p))) {} }')
 
 
+def test_a_catch_all_pushed_into_a_vector_of_c_strings_is_made_one():
+    # a C string is the one pointer a catch-all does not convert to; the
+    # note names it through the vector's alias
+    code = '  names.push_back(PyBytes_AS_STRING(bytes));\n'
+    note = ('candidate function not viable: no known conversion from '
+            "'::rsia_model::Any' to 'const value_type' (aka 'char *const') "
+            'for 1st argument')
+    edits = source_edits.edits_from_notes(
+        [("no matching member function for call to 'push_back'", 'a.cpp',
+          1, 9, [(note, 'stl_vector.h', 1276, 7)])],
+        lambda file: code,
+        parameter_types=lambda *at, callee=None: [
+            'const type-parameter-0-0 &'],
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text == ('  names.push_back(::rsia_model::as<char *>('
+                    'PyBytes_AS_STRING(bytes)));\n')
+
+
 def test_a_constant_passed_for_a_string_is_made_one():
     # a message's constant the model made an int (bond's parameter names
     # are strings); clang's note gives the parameter's type with its alias

@@ -121,6 +121,10 @@ _HASH_REDEFINED = re.compile(r"^redefinition of 'hash<(?:::)?([\w:]+)>'$")
 _ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]*$')
 _CAMEL = re.compile(r'^_?[A-Z]')
 _LOWER_CAMEL = re.compile(r'^[a-z][a-z0-9]*[A-Z]\w*$')
+# a C library's function or macro, its prefix apart
+# (`PyUnicode_AsEncodedString`, `PyBytes_AS_STRING`, `SDL_GetTicks`):
+# called, it is no class
+_C_FUNCTION = re.compile(r'^[A-Z][A-Za-z0-9]*_[A-Z]\w*$')
 _KEYWORDS = frozenset("""
     alignas alignof asm auto bool break case catch char class const constexpr
     continue decltype default delete do double else enum explicit export
@@ -1190,7 +1194,7 @@ def _by_use(name, after, *, unqualified):
         if _ALL_CAPS.match(name) and unqualified:
             return MACRO_VALUE, name
         return (TYPE if _CAMEL.match(name) and not _ALL_CAPS.match(name)
-                else FUNCTION), name
+                and not _C_FUNCTION.match(name) else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')) and \
             not _compares(after):
         return _template_use(name, after, unqualified=unqualified), name

@@ -178,7 +178,7 @@ _NO_MATCH = re.compile(
 # make the parameter's
 _NOT_CONVERTED = re.compile(
     r'^candidate (?:function|constructor) not viable: no known conversion '
-    r"from '([^']*)'(?: \(aka '[^']*'\))? to '([^']*)'(?: \(aka '[^']*'\))? "
+    r"from '([^']*)'(?: \(aka '[^']*'\))? to '([^']*)'(?: \(aka '([^']*)'\))? "
     r'for (\d+)(?:st|nd|rd|th) argument')
 # (from a message's string constant, an int in the model, to a string)
 _CONSTANT_FOR_STRING = re.compile(
@@ -385,7 +385,7 @@ def edits_from_notes(errors, read_code, *, parameter_types,
             for note, *candidate in notes:
                 match = _NOT_CONVERTED.match(note)
                 types = parameter_types(*candidate) if match else None
-                index = int(match.group(3)) - 1 if match else 0
+                index = int(match.group(4)) - 1 if match else 0
                 made = _as_parameter_of_argument(
                     masked_of(file), file, line, column, index,
                     types[index]) if types and index < len(types) else None
@@ -407,7 +407,13 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     # class template's): the class as the note spells it,
                     # where the code names it; a string for a message's
                     # constant (an int in the model)
+                    # (a C string, the one pointer a catch-all does not
+                    # convert to, also through an alias: `const
+                    # value_type` aka 'char *const' of a vector's push_back)
+                    real = re.sub(r'\s*\bconst$', '',
+                                  match.group(3) or match.group(2))
                     named = _STRING if _CONSTANT_FOR_STRING.match(note) \
+                        else real if _C_STRING.match(real) \
                         else _named_in(masked_of(file), match.group(2))
                     if named:
                         edits |= _as_parameter_of_argument(
