@@ -498,8 +498,8 @@ def _one_kind_each(repairs):
     qualified = {name.rsplit('::', 1)[1] for name in classes if '::' in name}
     # (and a member of it named through the short name is its member:
     # `Estimator::Direction` after `using ns::Estimator;`, unless the short
-    # name was declared for itself: rviz's `FramePositionTrackingViewController
-    # ::mimic(v)` in a derived class resolves as it was repaired)
+    # name was declared for itself: an rviz base class's method called
+    # through its short name in a derived class resolves as repaired)
     full_name = {}
     for name in sorted(classes):
         if '::' in name:

@@ -116,6 +116,8 @@ _CONSTEXPR_ERROR = re.compile(
 _BINDING_ERROR = re.compile(
     r"^type '.*' decomposes into \d+ elements?, but \d+ names were "
     r'provided$|^cannot decompose ')
+# a catch-all's type as messages spell it (`const ::rsia_model::AnyElement`)
+_ANY = r'(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?'
 _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
@@ -130,8 +132,7 @@ _ELEMENT_CONVERSION_ERROR = re.compile(
 _NOT_POLYMORPHIC_ERROR = re.compile(r"^'.*' is not polymorphic$")
 # and a catch-all is no pointer or number to reinterpret
 _REINTERPRET_ERROR = re.compile(
-    r"^reinterpret_cast from '(?:const )?(?:::)?(?:rsia_model::)?"
-    r"Any(?:Element|Value)?' to '.*' is not allowed$")
+    rf"^reinterpret_cast from '{_ANY}' to '.*' is not allowed$")
 # a pointer to a class a repair declared where the real class derives from
 # the one wanted (`return new ceres::AutoDiffLocalParameterization<...>;`
 # for a `ceres::LocalParameterization *`)
@@ -169,6 +170,7 @@ _NO_CONVERSION = re.compile(
     r"^no viable conversion from (?:returned value of type )?'[^']*'"
     r"(?: \(aka '[^']*'\))? to (?:function return type )?'([^']*)'"
     r"(?: \(aka '[^']*'\))?$")
+# a C string: the one pointer a catch-all does not convert to (message.h)
 _C_STRING = re.compile(r'^(?:const )?char \*$')
 _NO_MATCH = re.compile(
     r"^no matching (?:member )?function for call to '.*'$|"
@@ -190,18 +192,15 @@ _CONFLICTING = re.compile(
     r'^candidate template ignored: deduced conflicting types for parameter '
     r"'\w+' \('(.*?)'(?: \(aka '(.*?)'\))? vs\. '(.*?)'(?: \(aka '(.*?)'\))?\)$")
 # the address of a catch-all
-_CATCH_ALL_POINTER = re.compile(
-    r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)? \*$')
+_CATCH_ALL_POINTER = re.compile(rf'^{_ANY} \*$')
 # a catch-all's type, canonically spelled
-_CATCH_ALL = re.compile(
-    r'^(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?(?: ?&+)?$')
+_CATCH_ALL = re.compile(rf'^{_ANY}(?: ?&+)?$')
 _NO_ASSIGNMENT = re.compile(r"^no viable overloaded '='$")
 # (at the value assigned: `*log = any` for a `const char *`)
 # (or a pointer to a class of an unknown library to its real base's:
 # `loss_ = new ceres::HuberLoss(0.7)` for a `ceres::LossFunction *`)
 _NOT_ASSIGNABLE = re.compile(
-    r"^assigning to '.*' from incompatible type "
-    r"'(?:const )?(?:::)?(?:rsia_model::)?Any(?:Element|Value)?'$|"
+    rf"^assigning to '.*' from incompatible type '{_ANY}'$|"
     r"^incompatible pointer types assigning to '[^']*\*'"
     r"(?: \(aka '[^']*'\))? from '[^']*\*'(?: \(aka '[^']*'\))?$")
 # what an assignment's target may be: a name, members, subscripts, getters
@@ -214,8 +213,7 @@ _AMBIGUOUS_CALL = re.compile(
     r"(?: \(aka '.*'\))? is ambiguous$")
 _AMBIGUOUS_CONSTRUCTOR = re.compile(
     r"^call to constructor of '([^']*)'(?: \(aka '[^']*'\))? is ambiguous$|"
-    r'^ambiguous conversion for functional-style cast from '
-    r"'(?:const )?(?:(?:::)?rsia_model::)?Any(?:Element|Value)?' to "
+    rf"^ambiguous conversion for functional-style cast from '{_ANY}' to "
     r"'([^']*)'(?: \(aka '[^']*'\))?$")
 # the callee of a call, from where clang reports it: a (qualified) name,
 # its template arguments after it
@@ -368,8 +366,6 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                 continue  # (a range-for's variable: its own edit)
             if parameter is None and masked is not None:
                 wanted = _NO_CONVERSION.match(message).group(1)
-                # (a C string: the one pointer a catch-all does not
-                # convert to, see message.h)
                 parameter = wanted if _C_STRING.match(wanted) else \
                     _named_in(masked, wanted)
                 if 'returned value' not in message:
@@ -406,10 +402,9 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     # no declaration to read (a lambda's parameters, a
                     # class template's): the class as the note spells it,
                     # where the code names it; a string for a message's
-                    # constant (an int in the model)
-                    # (a C string, the one pointer a catch-all does not
-                    # convert to, also through an alias: `const
-                    # value_type` aka 'char *const' of a vector's push_back)
+                    # constant (an int in the model); a C string also
+                    # through an alias (`const value_type` aka 'char
+                    # *const' of a vector's push_back)
                     real = re.sub(r'\s*\bconst$', '',
                                   match.group(3) or match.group(2))
                     named = _STRING if _CONSTANT_FOR_STRING.match(note) \
