@@ -124,9 +124,7 @@ def _object_type(tu, file, line, column):
     Of the call whose callee is at (file, line, column): `m` of
     `m.erase(k)`, `*p` of `p->erase(k)`.
     """
-    cursor = tu.cursor
-    while cursor is not None:
-        children = list(cursor.get_children())
+    for cursor, children in _descent(tu, file, line, column):
         if cursor.kind == ci.CursorKind.MEMBER_REF_EXPR and children and \
                 _spans(cursor, file, line, column) and \
                 not _spans(children[0], file, line, column):
@@ -134,8 +132,6 @@ def _object_type(tu, file, line, column):
             spelling = re.sub(r'^const |\s*(?:\*|&+)$', '', spelling)
             return spelling if spelling and _DEPENDENT not in spelling \
                 and '<dependent' not in spelling else None
-        cursor = next((child for child in children
-                       if _spans(child, file, line, column)), None)
     return None
 
 
@@ -156,21 +152,31 @@ def call_arguments(tu, file, line, column):
     is none.
     """
     found = None
-    cursor = tu.cursor
-    while cursor is not None:
-        children = list(cursor.get_children())
+    for cursor, children in _descent(tu, file, line, column):
         # (a failed call is an unexposed expression, as implicit casts
         # are, with the callee and the arguments)
         if (cursor.kind == ci.CursorKind.CALL_EXPR or len(children) > 1 and
                 cursor.kind == ci.CursorKind.UNEXPOSED_EXPR) and \
                 _spans(children[0], file, line, column):
             found = children[1:]
-        cursor = next((child for child in children
-                       if _spans(child, file, line, column)), None)
     if found is None:
         return None
     return [(argument.extent.start.line, argument.extent.start.column,
              argument.type.get_canonical().spelling) for argument in found]
+
+
+def _descent(tu, file, line, column):
+    """(cursor, its children) from the unit down to (file, line, column).
+
+    Each step goes to the first child that spans the place; the last is the
+    innermost cursor there.
+    """
+    cursor = tu.cursor
+    while cursor is not None:
+        children = list(cursor.get_children())
+        yield cursor, children
+        cursor = next((child for child in children
+                       if _spans(child, file, line, column)), None)
 
 
 def _spans(cursor, file, line, column):

@@ -276,16 +276,7 @@ def edits_from_diagnostics(diagnostics, read_code):
         if kind == OPERAND:
             edits |= _operand_edit(masked, file, offset, message)
             continue
-        anchor = {
-            LAMBDA_RESULT: _lambda_body,
-            AUTO_POINTER: _pointer_star,
-            CONSTEXPR: _constexpr_keyword,
-            BINDING: _binding_names,
-            ADDRESS: _address_of,
-            RANGE_REFERENCE: _range_reference,
-            DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
-            REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
-        }[kind](masked, offset)
+        anchor = _ANCHORS[kind](masked, offset)
         if anchor is not None:
             at_line, at_column = _position(masked, anchor)
             edits.add((kind, f'{file}:{at_line}:{at_column}'))
@@ -438,7 +429,7 @@ def _assignment(masked, equals):
     if masked[equals] != '=' or masked[equals + 1:equals + 2] == '=' or \
             masked[equals - 1:equals] in '=!<>+-*/%&|^':
         return None
-    start = max(masked.rfind(c, 0, equals) for c in ';{}') + 1
+    start = _statement_start(masked, equals)
     target = ' '.join(masked[start:equals].split())
     if not _TARGET.match(target) or target.split()[0] in _KEYWORDS:
         return None
@@ -1054,6 +1045,19 @@ def _statement_start(masked, offset):
     """Where the statement around offset begins (after `;`, `{` or `}`)."""
     return max(masked.rfind(c, 0, offset) for c in ';{}') + 1
 
+
+# where each edit of edits_from_diagnostics goes, from where clang reports
+# its error (the operand's edit is placed by _operand_edit)
+_ANCHORS = {
+    LAMBDA_RESULT: _lambda_body,
+    AUTO_POINTER: _pointer_star,
+    CONSTEXPR: _constexpr_keyword,
+    BINDING: _binding_names,
+    ADDRESS: _address_of,
+    RANGE_REFERENCE: _range_reference,
+    DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
+    REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
+}
 
 _PAIRED = {'(': ')', '[': ']', '{': '}', ')': '(', ']': '[', '}': '{'}
 

@@ -364,24 +364,20 @@ struct is_optional<std::optional<RsiaV>> : std::true_type
 {
 };
 #endif
-template <class RsiaV>
-using NotAnyNorOptional = typename std::enable_if<
-    !std::is_base_of<Any, typename std::decay<RsiaV>::type>::value &&
-        !is_optional<typename std::decay<RsiaV>::type>::value,
-    int>::type;
-
 // (a number by value: a lambda uses a constexpr local uncaptured, as the
 // real comparison of two numbers does, `dist > threshold`)
 template <class RsiaV>
-using NumberOperand = typename std::enable_if<
-    std::is_arithmetic<typename std::decay<RsiaV>::type>::value ||
-        std::is_enum<typename std::decay<RsiaV>::type>::value,
-    int>::type;
+using IsNumber = std::integral_constant<
+    bool, std::is_arithmetic<typename std::decay<RsiaV>::type>::value ||
+              std::is_enum<typename std::decay<RsiaV>::type>::value>;
+template <class RsiaV>
+using NumberOperand = typename std::enable_if<IsNumber<RsiaV>::value, int>::type;
 template <class RsiaV>
 using OtherOperand = typename std::enable_if<
-    !std::is_arithmetic<typename std::decay<RsiaV>::type>::value &&
-        !std::is_enum<typename std::decay<RsiaV>::type>::value,
-    NotAnyNorOptional<RsiaV>>::type;
+    !IsNumber<RsiaV>::value &&
+        !std::is_base_of<Any, typename std::decay<RsiaV>::type>::value &&
+        !is_optional<typename std::decay<RsiaV>::type>::value,
+    int>::type;
 
 #define RSIA_MODEL_ANY_BINARY_(op, result)              \
   result operator op(const Any&, const Any&);           \
