@@ -133,8 +133,8 @@ def _analyze_one_unit(tmp_path, code):
 def _lines(text):
     lines = text.split('\n')
 
-    def read_line(file, line):
-        return lines[line - 1]
+    def read_line(file, line):  # (as analysis.py's: '' past the end)
+        return lines[line - 1] if 0 < line <= len(lines) else ''
     return read_line
 
 
@@ -1618,6 +1618,48 @@ def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
         '  result.wait_for(std::chrono::seconds(0));\n'
         '}\n'))
     assert unit.package_errors == 0, summary.diagnostics
+
+
+def test_a_module_macros_body_is_a_function(tmp_path):
+    # pybind11's module macro, unknown to the model, with its body's
+    # braces on the next line: its second argument is the module object
+    # the body uses; the node's publisher in the same unit is kept
+    summary, unit = _analyze_one_unit(tmp_path, (
+        '#include <pybind11/pybind11.h>\n'
+        '#include <rclcpp/rclcpp.hpp>\n'
+        '#include <std_msgs/msg/float64.hpp>\n'
+        'struct Gains { double kp; };\n'
+        'class Tuner : public rclcpp::Node\n'
+        '{\n'
+        'public:\n'
+        '  Tuner() : Node("tuner")\n'
+        '  {\n'
+        '    pub_ = create_publisher<std_msgs::msg::Float64>("gain", 1);\n'
+        '  }\n'
+        '  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;\n'
+        '};\n'
+        'namespace py = pybind11;\n'
+        'PYBIND11_MODULE(acme_tuner, m)\n'
+        '{\n'
+        '  py::class_<Gains>(m, "Gains").def(py::init<>())\n'
+        '    .def_readwrite("kp", &Gains::kp);\n'
+        '}\n'
+        'PYBIND11_MODULE(acme_other, m) {\n'
+        '  m.doc() = "second module";\n'
+        '}\n'))
+    assert unit.package_errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['gain']
+    lines = _lines('PYBIND11_MODULE(acme_tuner, m)\n{')
+    diagnostics = [('expected unqualified-id', 'a.cpp', 1, 1)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+        ('macro-function', 'PYBIND11_MODULE')}
+    # without a body, still a statement-like declaration
+    lines = _lines(
+        'BOOST_GEOMETRY_REGISTER_POINT_2D(P, double, cs, x, y)\n'
+        'namespace acme {')
+    diagnostics = [('expected unqualified-id', 'a.cpp', 1, 1)]
+    assert repair.repairs_from_diagnostics(diagnostics, lines) == set()
 
 
 def test_headers_beside_a_subdirectorys_sources_are_found(tmp_path):

@@ -312,6 +312,26 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
     assert source_edits.disk_column(insertions, 2, 80) == 33
 
 
+def test_math_functions_of_catch_alls_take_their_first_overload(tmp_path):
+    # <cmath>'s overloads are declared in the precompiled model, where
+    # clang finds no declaration by its place: they are found among those
+    # the call names (an rviz property's value and a message's field are
+    # catch-alls, for float, double and long double alike)
+    summary, unit = _analyze_one_unit(tmp_path, (
+        '#include <cmath>\n'
+        '#include <rclcpp/rclcpp.hpp>\n'
+        '#include <acme_props/float_property.hpp>\n'
+        'float wave(float range, acme_props::FloatProperty * property)\n'
+        '{\n'
+        '  range = std::fmod(range, property->getFloat());\n'
+        '  for (auto & r : property->ranges) {\n'
+        '    if (std::isinf(r)) { return 1.0f; }\n'
+        '  }\n'
+        '  return range;\n'
+        '}\n'))
+    assert unit.package_errors == 0, summary.diagnostics
+
+
 def test_an_ambiguous_constructor_of_one_argument_copies_the_class():
     # the candidates are a class template's: none names its parameters
     code = ('  vindices.reset(new std::vector<int>(indices->indices));\n'

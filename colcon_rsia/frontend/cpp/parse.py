@@ -94,6 +94,10 @@ def parameter_types(tu, file, line, column, *, object_at=None):
       outside it
     """
     cursor = _cursor_at(tu, file, line, column)
+    if (cursor is None or cursor.kind not in _FUNCTIONS) and object_at:
+        # a declaration of the precompiled model, which clang does not find
+        # by its place (`std::fmod` of <cmath>): among those the call names
+        cursor = _overload_at(tu, object_at, file, line, column) or cursor
     if cursor is None or cursor.kind not in _FUNCTIONS or _invalid(cursor):
         return None
     types = []
@@ -132,6 +136,29 @@ def _object_type(tu, file, line, column):
             spelling = re.sub(r'^const |\s*(?:\*|&+)$', '', spelling)
             return spelling if spelling and _DEPENDENT not in spelling \
                 and '<dependent' not in spelling else None
+    return None
+
+
+def _overload_at(tu, callee_at, file, line, column):
+    """The function declared at (file, line, column) that a callee names.
+
+    Of the overloaded name at callee_at, (file, line, column) of its call
+    (an ambiguous call's callee refers to the set of them).
+    """
+    for cursor, _ in _descent(tu, *callee_at):
+        overloaded = cursor.referenced if cursor.kind in (
+            ci.CursorKind.DECL_REF_EXPR, ci.CursorKind.MEMBER_REF_EXPR) \
+            else cursor
+        if overloaded is None or \
+                overloaded.kind != ci.CursorKind.OVERLOADED_DECL_REF:
+            continue
+        library = ci.conf.lib  # (cindex's Cursor lacks these two)
+        for index in range(library.clang_getNumOverloadedDecls(overloaded)):
+            declaration = library.clang_getOverloadedDecl(overloaded, index)
+            place = declaration.location
+            if place.file is not None and place.file.name == file and \
+                    (place.line, place.column) == (line, column):
+                return declaration
     return None
 
 

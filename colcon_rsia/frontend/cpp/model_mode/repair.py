@@ -149,6 +149,9 @@ VALUE = 'value'
 MACRO_VALUE = 'macro-value'        # FOO(...) used as a value
 MACRO_EMPTY = 'macro-empty'        # FOO_EXPORT at declaration level
 MACRO_VOID = 'macro-void'          # FOO(...) at declaration level
+# FOO(name, var) { ... } at declaration level: a function's head
+# (pybind11's PYBIND11_MODULE(module, m), boost.python's module macro)
+MACRO_FUNCTION = 'macro-function'
 MACRO_CONDITION = 'macro-condition'  # #if FOO(...)
 NO_OVERRIDE = 'no-override'        # `override` made a no-op
 LITERAL = 'literal'                # a user-defined literal's suffix
@@ -169,7 +172,7 @@ INCLUDES = (STD_HEADER, HEADER)
 # when one name is asked for as several kinds, the first of these wins
 # (a name used as a type somewhere is a class, even where `Name::` made it
 # look like a namespace: QFrame *line; QFrame::HLine)
-_PRIORITY = (MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION, VALUE,
+_PRIORITY = (MACRO_FUNCTION, MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION, VALUE,
              TEMPLATE, TYPE, NAMESPACE, SPECIALIZED, FUNCTION, CONSTANT,
              OBJECT)
 
@@ -947,6 +950,11 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                              name))
             continue
         match = _MACRO_STATEMENT.match(text)
+        if match and (message == 'expected unqualified-id' or
+                      _DECLARATION_EXPECTED.match(message)) and \
+                _opens_body(read_line, file, line, text, match.end()):
+            repairs.add((MACRO_FUNCTION, match.group(1)))
+            continue
         if match and _DECLARATION_EXPECTED.match(message):
             # BOOST_GEOMETRY_REGISTER_POINT_3D(...) at namespace level,
             # taken for a function declaration: a macro the model lacks
@@ -1078,6 +1086,22 @@ def _qualified(name, text, column):
             scopes[0] not in ('std', 'rsia_model'):
         scopes.pop(0)
     return '::'.join(scopes + [name])
+
+
+def _opens_body(read_line, file, line, text, start):
+    """Whether a body in braces follows the call whose `(` ends at start.
+
+    (The braces may open the next line, as clang-format puts a function's.)
+    """
+    depth = 1
+    for position in range(start, len(text)):
+        depth += {'(': 1, ')': -1}.get(text[position], 0)
+        if depth == 0:
+            rest = text[position + 1:].strip()
+            if not rest and file:
+                rest = read_line(file, line + 1).strip()
+            return rest.startswith('{')
+    return False
 
 
 def _after(text, column, name):
@@ -1299,6 +1323,19 @@ def _render(repairs, source):
             lines += [f'::rsia_model::Any& operator""{short}({parameters});'
                       for parameters in ('const char*, unsigned long',
                                          'unsigned long long', 'long double')]
+            continue
+        if kind == MACRO_FUNCTION:
+            # the head of a function of its own name, whose parameters are
+            # the arguments after the first (`m` of PYBIND11_MODULE(name,
+            # m), used in the body); __LINE__ tells two uses apart
+            lines += [
+                '#ifndef RSIA_MACRO_BODY', '#define RSIA_MACRO_BODY_(line) '
+                'rsia_macro_body_##line',
+                '#define RSIA_MACRO_BODY(line) RSIA_MACRO_BODY_(line)',
+                '#endif', f'#ifndef {short}',
+                f'#define {short}(first, ...) static void '
+                'RSIA_MACRO_BODY(__LINE__)(::rsia_model::Any __VA_ARGS__)',
+                '#endif']
             continue
         if kind.startswith('macro-'):
             definition = {
