@@ -855,6 +855,31 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
     assert cpp.parse_diagnostics(tu) == []
 
 
+def test_an_unknown_function_takes_types_and_values_as_template_arguments(
+        tmp_path):
+    # boost.geometry's `get<min_corner, 0>(box)` inside a constructor's
+    # arguments, and `get<0>(point)`
+    _assert_parses_clean(tmp_path, r"""
+#include <boost/geometry.hpp>
+namespace bg = boost::geometry;
+struct Point { Point(double x, double y); };
+struct Box { Box(const Point & a, const Point & b); };
+double area(const bg::model::box<bg::model::point_xy<double>> & hull)
+{
+  const Box box(
+    Point(bg::get<bg::min_corner, 0>(hull), bg::get<bg::min_corner, 1>(hull)),
+    Point(bg::get<bg::max_corner, 0>(hull), bg::get<1>(hull)));
+  return 0.0;
+}
+""", repairs=[('namespace', 'boost::geometry'),
+              ('namespace', 'boost::geometry::model'),
+              ('template', 'boost::geometry::model::box'),
+              ('template', 'boost::geometry::model::point_xy'),
+              ('constant', 'boost::geometry::min_corner'),
+              ('constant', 'boost::geometry::max_corner'),
+              ('function', 'boost::geometry::get')])
+
+
 def test_a_member_one_unit_calls_with_template_arguments_is_a_template(
         tmp_path):
     package, [first, second] = _sources(

@@ -228,6 +228,14 @@ def _lines(text):
     ("no template named 'optional' in namespace 'boost'",
      'return boost::optional<int>(x);', 15,
      {('template', 'boost::optional')}),
+    # a value among the arguments: a function (a class would make a
+    # declaration of `box` of the whole statement)
+    ("no template named 'get' in namespace 'boost::geometry'",
+     '      boost::geometry::get<boost::geometry::min_corner, 0>(box),', 24,
+     {('function', 'boost::geometry::get')}),
+    ("no template named 'array' in namespace 'acme'",
+     '  auto a = acme::array<double, 3>{};', 18,
+     {('template:tv', 'acme::array')}),
     ("no member named 'Identity' in 'Eigen::Matrix<double, 3, 3>'",
      'auto m = Eigen::Matrix<double, 3, 3>::Identity();', 39,
      {('member', 'Eigen::Matrix::Identity')}),
@@ -237,6 +245,14 @@ def _lines(text):
     ("no member named 'Ptr' in 'pcl::PointCloud<pcl::PointXYZ>'",
      'pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new Cloud);', 33,
      {('member-type', 'pcl::PointCloud::Ptr')}),
+    # a base class's function called as a statement: clang reads a
+    # declaration of `source_view` first
+    ("no type named 'mimic' in 'rviz_common::FramePositionTrackingView"
+     "Controller'", '    FramePositionTrackingViewController::mimic('
+     'source_view);', 42,
+     {('member', 'rviz_common::FramePositionTrackingViewController::mimic')}),
+    ("no type named 'Result' in 'acme::Buffer'", '    Buffer::Result(r);', 13,
+     {('member-type', 'acme::Buffer::Result')}),
     # the namespace of a header generated at build time (a parameter
     # library's ParamListener), named from the global namespace
     ("'gen_params' is not a class, namespace, or enumeration",
@@ -465,6 +481,32 @@ def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):
     assert 'using VirtualWalls = std::vector<VirtualWall>;' in text
     assert 'struct VirtualWall :' in text
     assert 'struct Status :' in text  # no `Statu` to be a vector of
+
+
+def test_opencvs_default_point_is_one_class_under_both_names(tmp_path):
+    # declared with cv::Point, defined with cv::Point2i: OpenCV's same class
+    summary, unit = _analyze_one_unit(tmp_path, (
+        '#include <opencv2/core.hpp>\n'
+        'class CostMap\n'
+        '{\n'
+        'public:\n'
+        '  cv::Point to_pixel(float x, float y) const;\n'
+        '  cv::Size2i size_;\n'
+        '};\n'
+        'cv::Point2i CostMap::to_pixel(float x, float y) const\n'
+        '{\n'
+        '  cv::Size area = size_;\n'
+        '  return cv::Point2i(x * area.width, y);\n'
+        '}\n'))
+    assert unit.package_errors == 0, summary.diagnostics
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('type', 'cv::Point'), ('type', 'cv::Point2i'), ('type', 'cv::Rect2i'),
+        ('type', 'cv::Point2f')})
+    text = header.read_text()
+    assert 'using Point2i = Point;' in text
+    # no cv::Rect to be; and cv::Point2f is a point of floats
+    assert 'struct Rect2i :' in text and 'struct Point2f :' in text
 
 
 def test_a_message_named_before_its_header_is_included_from_the_stand_ins():

@@ -37,6 +37,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_class
 from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_function
 from colcon_rsia.frontend.cpp.model_mode.stubs import repaired_guard
+from colcon_rsia.frontend.cpp.model_mode.stubs import same_class_as
 from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
@@ -882,8 +883,15 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             continue
         match = _TYPE_IN_CLASS.match(message)
         if match:
-            # pcl::PointCloud<P>::Ptr: a nested type, likewise
-            repairs.add((MEMBER_TYPE, f'{match.group(2)}::{match.group(1)}'))
+            # pcl::PointCloud<P>::Ptr: a nested type, likewise; but a base
+            # class's function called as a statement,
+            # `ViewController::mimic(source_view);`, is read as a
+            # declaration of `source_view` first: a lower-case name called
+            # is a function
+            called = after.startswith('(') and not _CAMEL.match(
+                match.group(1))
+            repairs.add((MEMBER if called else MEMBER_TYPE,
+                         f'{match.group(2)}::{match.group(1)}'))
             repairs |= _unknown_owner(match, stand_in)
             continue
         match = _IN_NAMESPACE.match(message)
@@ -1267,13 +1275,16 @@ def _template_use(name, after, *, unqualified):
     end = end_of_template_arguments(after)
     called = end is not None and _CALL.match(after, end)
     # (arguments on the lines after: `convertToTrajectoryPoints<` ends it)
+    kind = template_kind(after)
     if (unqualified and not _CAMEL.match(name) and called) or \
-            (_LOWER_CAMEL.match(name) and (called or after.strip() == '<')):
+            (_LOWER_CAMEL.match(name) and (called or after.strip() == '<')) \
+            or (called and not _CAMEL.match(name) and ':' in kind):
         # qobject_cast<QPushButton *>(sender()), also qualified in
-        # lowerCamelCase (motion_utils::convertToPath<P>(path)): a
+        # lowerCamelCase (motion_utils::convertToPath<P>(path)) or with a
+        # value among its arguments (bg::get<bg::min_corner, 0>(box)): a
         # function template; boost::optional<T>(x) is a class
         return FUNCTION
-    return template_kind(after)
+    return kind
 
 
 # types of libraries the model lacks that are numbers: a loop counts with
@@ -1353,6 +1364,9 @@ def _render(repairs, source):
             # lanelet2) a vector of them; as a class of its own, it would
             # differ from the `std::vector<VirtualWall>` other code writes
             body = f'using {short} = std::vector<{short[:-1]}>;'
+        elif kind == TYPE and name not in members and same_class_as(
+                name, {n for k, n in repairs if k == TYPE} - set(members)):
+            body = f'using {short} = {short[:-2]};'
         elif kind == TYPE and name in _NUMBER_TYPES:
             body = f'using {short} = {_NUMBER_TYPES[name]};'
         elif _base_kind(kind) == TEMPLATE and name in _ALLOCATORS:

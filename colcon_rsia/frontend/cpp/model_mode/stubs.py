@@ -400,6 +400,10 @@ def _merge_unknown(stub_dir, namespace, names):
         # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
                   _undeclared(namespace, name)]
+        same = same_class_as(name, {n for n in types if not types[n]})
+        if same:
+            lines += [f'using {name} = {same};', '#endif']
+            continue
         lines += catch_all_class(name, members=[
             line for member in members for line in (
                 f'#ifndef {member}', f'  static ::rsia_model::Any {member};',
@@ -439,6 +443,16 @@ def _merge_unknown(stub_dir, namespace, names):
         write_atomically(path, content)
 
 
+def same_class_as(name, declared):
+    """The name among declared that is the same class as name, or None.
+
+    OpenCV's `cv::Point2i` is `cv::Point` (`Size2i`, `Rect2i` likewise):
+    code declares a function with one and defines it with the other.
+    """
+    return name[:-2] if name.endswith('2i') and name[:-2] in declared \
+        else None
+
+
 def _undeclared(namespace, name):
     """The condition of a declaration no macro or repair header made."""
     return f'#if !defined({name}) && ' \
@@ -471,10 +485,16 @@ def catch_all_class(name, *, head='', members=()):
 def catch_all_function(name):
     """The lines of a function of an unknown library, taking anything.
 
-    Explicit template arguments (`f<T>(x)`) go to RsiaT, the call's
+    Explicit template arguments go to RsiaT (`f<T>(x)`), to RsiaN and
+    RsiaM (`f<0>(x)`) or to both (`get<min_corner, 0>(box)`), the call's
     arguments are deduced; the braced forms take braced lists, which
     deduce nothing (see rsia_model/message.h).
     """
     return ['template <class... RsiaT, class... RsiaA>',
+            f'::rsia_model::Any& {name}(RsiaA&&...);',
+            'template <long long RsiaN, long long... RsiaM, class... RsiaA>',
+            f'::rsia_model::Any& {name}(RsiaA&&...);',
+            'template <class RsiaT, long long RsiaN, long long... RsiaM, '
+            'class... RsiaA>',
             f'::rsia_model::Any& {name}(RsiaA&&...);',
             f'RSIA_MODEL_BRACED_FUNCTION({name})']
