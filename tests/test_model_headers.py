@@ -855,6 +855,26 @@ double run(const std_msgs::msg::Header & header, rclcpp::Node & node,
     assert cpp.parse_diagnostics(tu) == []
 
 
+def test_a_catch_all_pointers_element_type_is_a_catch_all(tmp_path):
+    # `decltype(sub_)::element_type::create_subscription(...)`: the static
+    # call through what a catch-all `SharedPtr` points to
+    _assert_parses_clean(tmp_path, r"""
+#include <rclcpp/rclcpp.hpp>
+#include <geo_utils/polling.hpp>
+#include <std_msgs/msg/header.hpp>
+struct Selector : rclcpp::Node
+{
+  Selector() : Node("selector")
+  {
+    sub_ = decltype(sub_)::element_type::create_subscription(this, "in", 1);
+    auto other = this->create_subscription<std_msgs::msg::Header>(
+      "other", 1, [](std_msgs::msg::Header::ConstSharedPtr) {});
+  }
+  geo_utils::Poller<std_msgs::msg::Header>::SharedPtr sub_;
+};
+""")
+
+
 def test_an_unknown_function_takes_types_and_values_as_template_arguments(
         tmp_path):
     # boost.geometry's `get<min_corner, 0>(box)` inside a constructor's

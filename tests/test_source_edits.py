@@ -581,6 +581,33 @@ def test_a_catch_all_argument_takes_the_type_its_template_deduces():
         'std::vector<int>{});']
 
 
+def test_a_message_constant_or_field_beside_a_fields_catch_all_is_made_one():
+    # `V at_or(const std::unordered_map<K, V> &, const K &, const V &)`
+    # over a map of message fields (`AnyValue` in the model), another
+    # message's field (`Any`) and a message's constant (`int`)
+    code = '  out.color = at_or(colors, in.color, Out::UNKNOWN);\n'
+    note = ('candidate template ignored: deduced conflicting types for '
+            "parameter '{}' ('rsia_model::AnyValue' vs. '{}')")
+    arguments = [(1, 21, 'const std::unordered_map<rsia_model::AnyValue, '
+                  'rsia_model::AnyValue> &'),
+                 (1, 29, 'rsia_model::Any'), (1, 39, 'int')]
+
+    def edited(parameter, other):
+        edits = source_edits.edits_from_notes([
+            ("no matching function for call to 'at_or'", 'a.cpp', 1, 15,
+             [(note.format(parameter, other), 'a.cpp', 9, 3)])],
+            lambda file: code, parameter_types=lambda *at, callee=None: None,
+            parameter_type=lambda *at: None,
+            call_arguments=lambda *at: arguments)
+        return _edited(edits, code)[0].split('\n')[0]
+    assert edited('K', 'Any') == (
+        '  out.color = at_or(colors, '
+        '::rsia_model::as<::rsia_model::AnyValue>(in.color), Out::UNKNOWN);')
+    assert edited('V', 'int') == (
+        '  out.color = at_or(colors, in.color, '
+        '::rsia_model::as<::rsia_model::AnyValue>(Out::UNKNOWN));')
+
+
 def test_a_value_assigned_is_made_of_its_targets_type():
     code = ('  debug.obstacles[0] = params->polygons;\n'
             '  if (x) y = z;\n'

@@ -69,3 +69,26 @@ def test_polling_subscribers_of_an_unmodelled_library_are_inputs(tmp_path):
     [out] = node.publishers
     assert (out.topic, out.label, out.pattern, out.rate_hz) == \
         ('out', 'independent', 'timer', 10.0)
+
+
+def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
+    # the package also calls a node's `create_subscription<M>(...)`: every
+    # catch-all then has a member template of that name, which the
+    # unknown class's static call reaches
+    source = POLLING.replace(
+        '    pub_ = create_publisher',
+        '    sub_ = this->create_subscription<std_msgs::msg::String>(\n'
+        '      "in", 1, [](std_msgs::msg::String::SharedPtr) {});\n'
+        '    pub_ = create_publisher').replace(
+        '  rclcpp::TimerBase::SharedPtr timer_;',
+        '  rclcpp::TimerBase::SharedPtr timer_;\n'
+        '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;')
+    summary = analyse_source(tmp_path, 'poller', source)
+    assert [u.package_errors for u in summary.coverage.units] == [0], \
+        summary.diagnostics
+    [node] = summary.nodes
+    assert sorted((s.topic, s.api) for s in node.subscribers) == [
+        ('in', 'rclcpp::Node::create_subscription'),
+        ('~/input/kinematics', 'autoware_utils::InterProcessPollingSubscriber'),
+        ('~/input/odometry', 'autoware_utils::InterProcessPollingSubscriber'),
+    ]

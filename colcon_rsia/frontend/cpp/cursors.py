@@ -353,7 +353,7 @@ def repaired_call_name(call, ref):
             return None
         return f'{qualified_name(made)}::{made.spelling}'
     if ref.spelling != 'operator()':
-        return None
+        return _through_qualifying_class(call, ref)
     for current in walk_preorder(call):
         if current.kind in REF_KINDS:
             member = current.referenced
@@ -363,6 +363,28 @@ def repaired_call_name(call, ref):
                     member.semantic_parent.kind in CLASS_KINDS:
                 return qualified_name(member)
             return None
+    return None
+
+
+def _through_qualifying_class(call, ref):
+    """The API a catch-all's member called through a class names.
+
+    ``Poller<M>::create_subscription(this, "t", qos)`` on a repaired class
+    calls the static member template every catch-all has: the class that
+    qualifies the call, as written, names the API.
+    """
+    for current in walk_preorder(call):
+        if current.kind not in REF_KINDS:
+            continue
+        if current.kind != CK.DECL_REF_EXPR or \
+                current.spelling != ref.spelling:
+            return None
+        scope = next((child for child in current.get_children()
+                      if child.kind in (CK.TEMPLATE_REF, CK.TYPE_REF)), None)
+        owner = qualified_name(scope.referenced) \
+            if scope is not None and scope.referenced is not None else ''
+        return f'{owner}::{ref.spelling}' \
+            if owner and not owner.startswith(REPAIRED_PREFIX) else None
     return None
 
 

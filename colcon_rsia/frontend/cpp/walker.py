@@ -532,11 +532,17 @@ class _Walker:
     def dependent_call_name(self, cursor):
         """The API a call on a template-dependent object names, or None."""
         children = child_cursors(cursor)
-        if not children or children[0].kind != CK.MEMBER_REF_EXPR:
+        callee = children[0] if children else None
+        while callee is not None and callee.kind == CK.UNEXPOSED_EXPR:
+            # (a static member's, decayed to a pointer: the catch-all's
+            # member templates are static)
+            inner = child_cursors(callee)
+            callee = inner[0] if len(inner) == 1 else None
+        if callee is None or callee.kind != CK.MEMBER_REF_EXPR:
             return None
         # a dependent member has no spelling: the name follows `.`/`->`,
         # or the last `::` of `Base::create_publisher<M>(…)` (this->)
-        tokens = [t.spelling for t in source_tokens(children[0])]
+        tokens = [t.spelling for t in source_tokens(callee)]
         accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')] or \
             top_level_scopes(tokens)
         if not accesses:

@@ -526,28 +526,41 @@ def _address_argument(masked, file, line, column, index):
 
 
 def _as_deduced(masked, file, conflict, arguments):
-    """The edits that make a call's catch-all arguments its real type.
+    """The edits that settle a template parameter deduced two ways.
 
-    The type is the canonical one of the argument clang deduced it from
-    (the note drops its scopes), found by the spelling the note gives.
+    One way is a catch-all: the catch-all arguments are made the real
+    type, the canonical one of the argument clang deduced it from (the
+    note drops its scopes), found by the spelling the note gives. But a
+    number beside a message field's own catch-all (`AnyValue`: `V` of a
+    `std::unordered_map<K, V>` of message fields) is a message's constant
+    (an int in the model): the number is made the field's. Both ways
+    catch-alls: a field's own wins over a plain one (`Any`).
     """
     if masked is None or not arguments:
         return set()
-    spellings = [conflict.group(2) or conflict.group(1),
-                 conflict.group(4) or conflict.group(3)]
-    real = [_unscoped(t) for t in spellings if not _CATCH_ALL.match(t)]
-    if len(real) != 1:
+    spellings = [_unscoped(conflict.group(2) or conflict.group(1)),
+                 _unscoped(conflict.group(4) or conflict.group(3))]
+    real = [t for t in spellings if not _CATCH_ALL.match(t)]
+    if len(real) == 2:
         return set()
+
+    def made(of_type, wanted):
+        return set().union(*(
+            _as_parameter(masked, file, at_line, at_column, wanted)
+            for at_line, at_column, argument_type in arguments
+            if of_type(argument_type)))
+    if not real:
+        own = set(spellings) - {'Any'}
+        return made(lambda t: _unscoped(t) == 'Any',
+                    f'::rsia_model::{own.pop()}') if len(own) == 1 else set()
+    catch_all = next(t for t in spellings if t != real[0])
+    if catch_all != 'Any' and _BUILTIN.match(real[0]):
+        return made(lambda t: _unscoped(t) == real[0],
+                    f'::rsia_model::{catch_all}')
     deduced = next((re.sub(r'^const |\s*&+$', '', t)
                     for _, _, t in arguments
                     if _unscoped(t) == real[0]), None)
-    if deduced is None:
-        return set()
-    edits = set()
-    for at_line, at_column, argument_type in arguments:
-        if _CATCH_ALL.match(argument_type):
-            edits |= _as_parameter(masked, file, at_line, at_column, deduced)
-    return edits
+    return set() if deduced is None else made(_CATCH_ALL.match, deduced)
 
 
 def _unscoped(spelled):

@@ -304,7 +304,9 @@ struct Any : std::vector<AnyElement>
 #ifdef RSIA_MODEL_HAVE_FIELDS
 // member templates, field types and known methods are the same in Fields
 // below (their macros stay defined until its include)
-#define RSIA_MODEL_FIELD_TEMPLATE(name) RSIA_MODEL_MEMBER_TEMPLATE(, name, const)
+// (static: a class of an unknown library calls one as its own too,
+// `Subscriber<Msg>::create_subscription(this, topic, qos)`)
+#define RSIA_MODEL_FIELD_TEMPLATE(name) RSIA_MODEL_MEMBER_TEMPLATE(static, name, )
 #define RSIA_MODEL_FIELD_TYPE(name) using name = AnyValue;
 #define RSIA_MODEL_METHOD(name, result) \
   template <class... RsiaA> result name(RsiaA&&...) const;
@@ -607,6 +609,9 @@ struct Unknown : Fields
   using ConstPtr = Unknown;
   using SharedPtr = Unknown;
   using ConstSharedPtr = Unknown;
+  // and what such a pointer points to
+  // (`decltype(sub_)::element_type::create_subscription(...)`)
+  using element_type = Unknown;
 };
 
 // The hash of a class the repairs declare (repair.py specialises std::hash
