@@ -1235,6 +1235,31 @@ def test_a_known_member_whose_result_has_members_stays_a_catch_all():
     assert not {'c_str', 'rows'} & values
 
 
+def test_a_trailing_return_type_is_no_member(tmp_path):
+    # a member named `QBrush` in every catch-all would hide the class
+    # (`-> QBrush {` of a lambda); a call's result stays a member access
+    members, *_, templates, _ = source_names.used_names([
+        'auto row = [&]() -> QBrush { return {}; };\n'
+        'auto Box::pose() const -> std::vector<Pose> & { return p; }\n'
+        'pub = node()->create_publisher<T>("a"); if (a()->ok) {}'])
+    assert members == {'ok'} and templates == {'create_publisher'}
+    _assert_parses_clean(tmp_path, r"""
+#include <QBrush>
+#include <QTableWidgetItem>
+void paint(QTableWidgetItem * item, bool stale)
+{
+  const auto background = [&]() -> QBrush {
+    if (stale) {
+      return QBrush(Qt::red);
+    }
+    return {};
+  }();
+  item->setBackground(background);
+}
+""", repairs=[('type', 'QTableWidgetItem'), ('type', 'QBrush'),
+              ('namespace', 'Qt'), ('object', 'Qt::red')])
+
+
 def test_a_switch_takes_a_value_of_a_nested_unknown_type(tmp_path):
     # TensorRT's logger: `Severity` is a nested type of an unknown class
     _assert_parses_clean(tmp_path, r"""

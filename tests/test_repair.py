@@ -393,6 +393,24 @@ def test_an_undeclared_variable_is_repaired_unless_the_code_declares_it(
     assert found == expected
 
 
+def test_a_template_argument_the_code_declares_a_variable_is_a_value():
+    # `Eigen::Spline<double, 2, spline_dim>` with `constexpr auto
+    # spline_dim = 3;` above: a lower-case name among template arguments
+    # is a type (a tag) unless the code declares it a variable
+    code = ('constexpr auto spline_dim = 3;\n'
+            'auto s = Eigen::Spline<double, 2, spline_dim>(knots, points);\n'
+            'using P = bg::model::point<double, 2, cartesian>;\n')
+    messages = [("no member named 'Spline' in namespace 'Eigen'", 2, 26),
+                ("no template named 'Spline' in namespace 'Eigen'", 2, 26),
+                ("no member named 'point' in namespace 'bg::model'", 3, 22)]
+    for message, line, column in messages:
+        found = repair.repairs_from_diagnostics(
+            [(message, 'a.cpp', line, column)], _lines(code), texts=[code])
+        assert found == ({('template:tvt', 'bg::model::point')}
+                         if 'point' in message else
+                         {('template:tvv', 'Eigen::Spline')}), message
+
+
 def test_the_packages_own_namespace_is_repaired_where_used_first():
     # `autoware` is the package's namespace too, but a header of a missing
     # library names it before any of the package's code opens it

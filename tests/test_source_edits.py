@@ -13,7 +13,9 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
 from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
 from colcon_rsia.frontend.cpp.model_mode.source_edits import DYNAMIC_CAST
+from colcon_rsia.frontend.cpp.model_mode.source_edits import INDEX
 from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
+from colcon_rsia.frontend.cpp.model_mode.source_edits import MEMBER_POINTER
 from colcon_rsia.frontend.cpp.model_mode.source_edits import OPERAND
 from colcon_rsia.frontend.cpp.model_mode.source_edits import RANGE_REFERENCE
 from colcon_rsia.frontend.cpp.model_mode.source_edits import REINTERPRET_CAST
@@ -198,6 +200,39 @@ def test_a_range_for_reference_to_a_catch_alls_element_is_a_copy():
         [(m, 'a.cpp', line, column, []) for m, line, column in errors[:2]],
         lambda file: code, parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None) == set()
+
+
+def test_a_pointers_subscript_by_a_catch_all_is_made_a_number():
+    # a message's field offsets (catch-alls) index a byte pointer
+    code = ('  float x = *reinterpret_cast<const float *>(&data[row + off[0]]);\n'
+            '  auto y = values[ i ];\n')
+    message = 'array subscript is not an integer'
+    edits = _edits([(message, 1, 51), (message, 2, 18),
+                    (message, 2, 12)], code)  # (no `[` at the last)
+    assert edits == {(INDEX, 'a.cpp:1:51'), (INDEX, 'a.cpp:2:18')}
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[:2] == [
+        '  float x = *reinterpret_cast<const float *>('
+        '&data[::rsia_model::as<long>(row + off[0])]);',
+        '  auto y = values[::rsia_model::as<long>( i )];']
+
+
+def test_a_member_pointer_to_a_repaired_classs_member_is_a_pointer():
+    # `&RouteHandler::getLeftLanelets` of a repaired class is the address
+    # of a static catch-all: it is called through the pointer alone
+    code = ('  auto lanes = (route_handler.*getOpposite)(lane);\n'
+            '  auto more = (self->handler_->*next)(lane);\n')
+    message = ('right hand operand to {} has non-pointer-to-member type '
+               "'::rsia_model::Any *'")
+    edits = _edits([(message.format('.*'), 1, 30),
+                    (message.format('->*'), 2, 30)], code)
+    assert edits == {(MEMBER_POINTER, 'a.cpp:1:30'),
+                     (MEMBER_POINTER, 'a.cpp:2:30')}
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[:2] == [
+        '  auto lanes = (' + ' ' * len('route_handler.') + '*getOpposite)'
+        '(lane);',
+        '  auto more = (' + ' ' * len('self->handler_->') + '*next)(lane);']
 
 
 def test_the_address_of_a_catch_all_passed_to_an_overload_is_dropped():

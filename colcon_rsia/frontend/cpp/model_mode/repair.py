@@ -748,12 +748,13 @@ def _uses_of_namespace(namespace, texts, aliases=None, depth=0):
             rest = after.lstrip()
             kind = _by_qualified_use(
                 name, '::' if member else rest,
-                text[max(0, match.start() - 200):match.start()])
-            if kind == TEMPLATE and not member and rest.startswith('<'):
+                text[max(0, match.start() - 200):match.start()], texts)
+            if _base_kind(kind) == TEMPLATE and not member and \
+                    rest.startswith('<'):
                 # arguments that go on past the line (`rotate_transformer<`
                 # then `bg::radian, double, 2, 2>`) still have a shape
-                kind = template_kind(' '.join(
-                    text[match.start(3):match.start(3) + 400].split()))
+                kind = _template_shape(' '.join(
+                    text[match.start(3):match.start(3) + 400].split()), texts)
             found.add((kind, f'{namespace}::{name}'))
             if kind == NAMESPACE:
                 inner.add(f'{namespace}::{name}')
@@ -805,7 +806,8 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             continue
         match = _UNDECLARED.match(message)
         if match:
-            kind, name = _by_use(match.group(1), after, unqualified=True)
+            kind, name = _by_use(match.group(1), after, unqualified=True,
+                                 texts=texts)
             if match.group(1) not in text and not _CAMEL.match(name):
                 # spelled in a macro's body (THROW_ON_NULLPTR(p) expanding
                 # to rcpputils::...): a namespace, by far the most common
@@ -904,14 +906,15 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 kind = FUNCTION
             elif what in ('type', 'class', 'template') and \
                     after.startswith('<'):
-                kind = _template_use(name, after, unqualified=False)
+                kind = _template_use(name, after, unqualified=False,
+                                     texts=texts)
             elif what in ('type', 'class'):
                 kind = TYPE
             elif what == 'template':
                 kind = template_kind(after)
             else:
                 kind = _by_qualified_use(name, after,
-                                         text[:max(0, column - 1)])
+                                         text[:max(0, column - 1)], texts)
             repairs.add((kind, f'{namespace}::{name}'))
             continue
         match = _NOT_A_TEMPLATE.match(message)
@@ -1162,6 +1165,8 @@ def _declared_as_variable(name, texts):
         r'(\w+\s*[*&]+|\w+|(?<=[\w>])>)\s*\b' + re.escape(name) +
         r'\s*[=;({\[,):]')
     for text in texts:
+        if name not in text:
+            continue  # (no cleaning of a text that cannot declare it)
         for match in pattern.finditer(_SOURCE_NOISE.sub(' ', text)):
             before = match.group(1)
             word = before.rstrip('*& \t\n')
@@ -1177,9 +1182,9 @@ def _declared_as_variable(name, texts):
 _K_CONSTANT = re.compile(r'^k[A-Z]')
 
 
-def _by_qualified_use(name, after, before):
+def _by_qualified_use(name, after, before, texts=()):
     """The kind of ``ns::name`` from the code around it on its line."""
-    kind = _by_use(name, after, unqualified=False)[0]
+    kind = _by_use(name, after, unqualified=False, texts=texts)[0]
     if kind == CONSTANT and _CAMEL.match(name) and \
             _USING_DECLARATION.search(before):
         return TYPE
@@ -1212,7 +1217,7 @@ def _in_template_arguments(before):
 _CALL = re.compile(r'\s*\(')
 
 
-def _by_use(name, after, *, unqualified):
+def _by_use(name, after, *, unqualified, texts=()):
     """(kind, name) of a name from what follows it."""
     if after.startswith('::'):
         # undeclared: a namespace (Eigen::, karto::); a class of the
@@ -1229,7 +1234,8 @@ def _by_use(name, after, *, unqualified):
                 and not _C_FUNCTION.match(name) else FUNCTION), name
     if after.startswith('<') and not after.startswith(('<<', '<=')) and \
             not _compares(after):
-        return _template_use(name, after, unqualified=unqualified), name
+        return _template_use(name, after, unqualified=unqualified,
+                             texts=texts), name
     if _ALL_CAPS.match(name):
         return CONSTANT, name
     if _CAMEL.match(name) and not unqualified and \
@@ -1270,12 +1276,27 @@ def _compares(after):
     return False
 
 
-def _template_use(name, after, *, unqualified):
-    """The kind of a name its line follows with template arguments."""
+def _template_shape(after, texts):
+    """The template_kind of a use, with what the texts declare.
+
+    A lower-case argument the texts declare a variable is a value
+    (`Spline<double, 2, spline_dim>`).
+    """
+    return template_kind(
+        after, is_variable=lambda argument: argument not in _KEYWORDS and
+        argument[:1].islower() and _declared_as_variable(argument, texts))
+
+
+def _template_use(name, after, *, unqualified, texts=()):
+    """The kind of a name its line follows with template arguments.
+
+    :param texts: the code of the files with errors, where an argument may
+      be declared a variable (a value, then)
+    """
     end = end_of_template_arguments(after)
     called = end is not None and _CALL.match(after, end)
     # (arguments on the lines after: `convertToTrajectoryPoints<` ends it)
-    kind = template_kind(after)
+    kind = _template_shape(after, texts)
     if (unqualified and not _CAMEL.match(name) and called) or \
             (_LOWER_CAMEL.match(name) and (called or after.strip() == '<')) \
             or (called and not _CAMEL.match(name) and ':' in kind):

@@ -98,9 +98,14 @@ DYNAMIC_CAST = 'edit-dynamic-cast'
 REINTERPRET_CAST = 'edit-reinterpret-cast'
 # the `&` of a range-for's `T & x : any` blanked (a copy of each element)
 RANGE_REFERENCE = 'edit-range-reference'
+# a subscript's index made a number (`data[any + n]` of a pointer), at `[`
+INDEX = 'edit-index'
+# `(object.*member)(...)` of a repaired class's member, a catch-all's
+# address: `(*member)(...)`, at the `.*` or `->*`
+MEMBER_POINTER = 'edit-member-pointer'
 EDIT_KINDS = (LAMBDA_RESULT, AUTO_POINTER, CONSTEXPR, BINDING, ADDRESS,
               OPERAND, CAST, AS, ASSIGNED, DYNAMIC_CAST, REINTERPRET_CAST,
-              RANGE_REFERENCE)
+              RANGE_REFERENCE, INDEX, MEMBER_POINTER)
 
 # a type in a message, with what its alias names: 'value_type' (aka 'double')
 _TYPE = r"'.*'(?: \(aka '.*'\))?"
@@ -124,6 +129,11 @@ _ADDRESS_ERROR = re.compile(
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
 # an element of a catch-all, which binds no reference to a class of an
 # unknown library (`for (lanelet::LineString3d & line : map->lineStringLayer)`)
+# a pointer's subscript by a catch-all, which converts to every number
+_INDEX_ERROR = re.compile(r'^array subscript is not an integer$')
+_MEMBER_POINTER_ERROR = re.compile(
+    r'^right hand operand to (?:\.|->)\* has non-pointer-to-member type '
+    rf"'{_ANY} \*'$")
 _ELEMENT_CONVERSION_ERROR = re.compile(
     r"^no viable conversion from '(?:const )?(?:(?:::)?rsia_model::)?"
     r"AnyElement' to '.*'$")
@@ -577,6 +587,8 @@ def _kind_of(message):
                           (DYNAMIC_CAST, _NOT_POLYMORPHIC_ERROR),
                           (REINTERPRET_CAST, _REINTERPRET_ERROR),
                           (RANGE_REFERENCE, _ELEMENT_CONVERSION_ERROR),
+                          (INDEX, _INDEX_ERROR),
+                          (MEMBER_POINTER, _MEMBER_POINTER_ERROR),
                           (OPERAND, _LITERAL_OPERAND_ERROR),
                           (OPERAND, _NULL_OPERAND_ERROR),
                           (OPERAND, _OTHER_OPERAND_ERROR),
@@ -681,6 +693,19 @@ def _changes(kind, masked, offset):
             change = offset, 1, ' '
     elif kind == BINDING:
         change = _bound_initializer(masked, offset)
+    elif kind == MEMBER_POINTER:
+        # the object and its `.`/`->` blanked, the `*` kept
+        operator = 2 if masked.startswith('.*', offset) else 3
+        start = offset
+        while start > 0 and re.match(r'[\w.:>\-\[\]]', masked[start - 1]):
+            start -= 1
+        if start < offset and masked.startswith(('.*', '->*'), offset):
+            change = start, offset + operator - 1 - start, \
+                ' ' * (offset + operator - 1 - start)
+    elif kind == INDEX:
+        close = _matching(masked, offset) if masked[offset] == '[' else None
+        return [] if close is None else [
+            (offset + 1, 0, '::rsia_model::as<long>('), (close, 0, ')')]
     elif kind == OPERAND:
         which, _, type_name = detail.partition(':')
         type_name = unquote(type_name)
@@ -1068,6 +1093,9 @@ _ANCHORS = {
     BINDING: _binding_names,
     ADDRESS: _address_of,
     RANGE_REFERENCE: _range_reference,
+    INDEX: lambda masked, offset: offset if masked[offset] == '[' else None,
+    MEMBER_POINTER: lambda masked, offset: offset if masked.startswith(
+        ('.*', '->*'), offset) else None,
     DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
     REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
 }

@@ -21,6 +21,11 @@ _TEMPLATE_MEMBER = re.compile(
     r'(?:\.|->)\s*(?:template\s+)?([A-Za-z_]\w*)\s*'
     r'<[^;(){}<>]*(?:<[^;(){}<>]*>[^;(){}<>]*)*>\s*\(')
 _VALUE_MEMBER = re.compile(r'(?:\.|->)\s*([A-Za-z_]\w*)\b(?!\s*[(<])')
+# the `->` of a trailing return type before a body, which is no member
+# access (`[&]() -> QBrush {`, `auto f() const -> Pose {`)
+_TRAILING_RETURN = re.compile(
+    r'(\)\s*(?:(?:const|mutable|noexcept|override)\s*)*)->(?=\s*(?:::)?'
+    r'[A-Za-z_][\w:]*(?:\s*<[^;{}()]*>)?[\s&*]*\{)')
 # Members whose calls every library means the same way, with their result:
 # declared as functions when no use takes them for a value (or reaches
 # into their result: OpenCV's `image.size().width`). As catch-all
@@ -161,6 +166,7 @@ def used_names(codes):
     templates = set()
     values = set()
     for code in codes:
+        code = _TRAILING_RETURN.sub(r'\1  ', code)
         members.update(m.group(1) for m in _MEMBER.finditer(code))
         templates.update(m.group(1) for m in _TEMPLATE_MEMBER.finditer(code))
         values.update(m.group(1) for m in _VALUE_MEMBER.finditer(code))
@@ -234,16 +240,20 @@ def snake_case(name):
                   name).lower()
 
 
-def template_kind(after):
+def template_kind(after, is_variable=None):
     """TEMPLATE, or TEMPLATE:<shape> when arguments of its use are values.
 
     The shape has a letter per argument of the use the line shows: 't' for
     a type, 'v' for a value, so that `Eigen::Matrix<double, 3, 1>` is
     declared with a type and two value parameters ('template:tvv').
+
+    :param is_variable: whether the code declares a name as a variable:
+      such an argument is a value (`Spline<double, 2, spline_dim>`)
     """
     arguments = template_arguments(after)
-    shape = ''.join('v' if VALUE_ARGUMENT.search(a) else 't'
-                    for a in arguments)
+    shape = ''.join('v' if VALUE_ARGUMENT.search(a) or (
+        is_variable and IDENTIFIER.match(a) and is_variable(a)) else 't'
+        for a in arguments)
     return f'template:{shape}' if 'v' in shape else 'template'
 
 
