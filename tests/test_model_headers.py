@@ -878,9 +878,11 @@ struct Selector : rclcpp::Node
 def test_an_unknown_function_takes_types_and_values_as_template_arguments(
         tmp_path):
     # boost.geometry's `get<min_corner, 0>(box)` inside a constructor's
-    # arguments, and `get<0>(point)`
+    # arguments, `get<0>(point)`, and range-v3's `to<std::vector>()`
     _assert_parses_clean(tmp_path, r"""
+#include <vector>
 #include <boost/geometry.hpp>
+#include <range/v3/range/conversion.hpp>
 namespace bg = boost::geometry;
 struct Point { Point(double x, double y); };
 struct Box { Box(const Point & a, const Point & b); };
@@ -889,15 +891,76 @@ double area(const bg::model::box<bg::model::point_xy<double>> & hull)
   const Box box(
     Point(bg::get<bg::min_corner, 0>(hull), bg::get<bg::min_corner, 1>(hull)),
     Point(bg::get<bg::max_corner, 0>(hull), bg::get<1>(hull)));
-  return 0.0;
+  std::vector<double> xs = ranges::to<std::vector>();
+  return xs.front();
 }
-""", repairs=[('namespace', 'boost::geometry'),
+""", repairs=[('namespace', 'boost::geometry'), ('namespace', 'ranges'),
+              ('function', 'ranges::to'),
               ('namespace', 'boost::geometry::model'),
               ('template', 'boost::geometry::model::box'),
               ('template', 'boost::geometry::model::point_xy'),
               ('constant', 'boost::geometry::min_corner'),
               ('constant', 'boost::geometry::max_corner'),
               ('function', 'boost::geometry::get')])
+
+
+def test_rosidls_message_trait_holds_for_messages(tmp_path):
+    # a ROS 2 library's publisher helper that takes messages only
+    _assert_parses_clean(tmp_path, r"""
+#include <map>
+#include <string>
+#include <type_traits>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <acme_msgs/msg/float64_stamped.hpp>
+class DebugPublisher
+{
+public:
+  template <class T, std::enable_if_t<
+    rosidl_generator_traits::is_message<T>::value, std::nullptr_t> = nullptr>
+  void publish(const std::string & name, const T & data) {}
+  template <class T, std::enable_if_t<
+    !rosidl_generator_traits::is_message<T>::value, std::nullptr_t> = nullptr>
+  void publish(const std::string & name, const T & value) {}
+};
+void report(DebugPublisher & debug, double seconds)
+{
+  acme_msgs::msg::Float64Stamped stamped;
+  debug.publish<acme_msgs::msg::Float64Stamped>("time", stamped);
+  debug.publish("value", std_msgs::msg::Float64());
+  debug.publish("seconds", seconds);
+}
+""")
+
+
+def test_the_pointers_of_two_unknown_classes_are_two_types(tmp_path):
+    # overloads on the pointers of two specialisations of an unknown class
+    # template (PCL's point clouds), and what code does with such pointers
+    _assert_parses_clean(tmp_path, r"""
+#include <memory>
+#include <vector>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+struct Debugger
+{
+  void add(const pcl::PointCloud<pcl::PointXY>::Ptr & input)
+  {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+    xyz->points.reserve(input->points.size());
+    add(xyz);
+  }
+  void add(const pcl::PointCloud<pcl::PointXYZ>::Ptr & input)
+  {
+    pcl::PointCloud<pcl::PointXYZ>::ConstPtr read_only = input;
+    clouds_.push_back(pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>());
+    clouds_.push_back(input);
+    if (!input || input->empty() || read_only == nullptr) {
+      return;
+    }
+  }
+  std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds_;
+};
+""")
 
 
 def test_a_member_one_unit_calls_with_template_arguments_is_a_template(
@@ -947,6 +1010,12 @@ def test_a_lower_case_header_is_a_message_only_if_used_as_one():
     assert 'kind=message' in message
     [library] = stand_ins_for(
         'fmt/format.h', ['auto text = fmt::format("{}", 1);']).values()
+    assert 'kind=empty' in library
+    # thrust/device_vector.h: a class template (a message takes no
+    # template arguments)
+    [library] = stand_ins_for(
+        'thrust/device_vector.h',
+        ['thrust::device_vector<float> points_;']).values()
     assert 'kind=empty' in library
 
 

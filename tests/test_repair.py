@@ -236,6 +236,9 @@ def _lines(text):
     ("no template named 'array' in namespace 'acme'",
      '  auto a = acme::array<double, 3>{};', 18,
      {('template:tv', 'acme::array')}),
+    # a standard template as its argument: range-v3's conversion
+    ("no member named 'to' in namespace 'ranges'",
+     '         ranges::to<std::vector>();', 18, {('function', 'ranges::to')}),
     ("no member named 'Identity' in 'Eigen::Matrix<double, 3, 3>'",
      'auto m = Eigen::Matrix<double, 3, 3>::Identity();', 39,
      {('member', 'Eigen::Matrix::Identity')}),
@@ -525,6 +528,18 @@ def test_opencvs_default_point_is_one_class_under_both_names(tmp_path):
     assert 'using Point2i = Point;' in text
     # no cv::Rect to be; and cv::Point2f is a point of floats
     assert 'struct Rect2i :' in text and 'struct Point2f :' in text
+
+
+def test_a_repaired_class_has_pointer_types_of_its_own(tmp_path):
+    header = tmp_path / 'repair.h'
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('template', 'pcl::PointCloud'), ('member-type', 'pcl::PointCloud::Ptr'),
+        ('member-type', 'pcl::PointCloud::iterator')})
+    text = header.read_text()
+    # declared once, by the class itself, not as the catch-all member type
+    assert text.count('using Ptr = ') == 1
+    assert 'using Ptr = ::rsia_model::UnknownPointer<PointCloud>;' in text
+    assert 'using iterator = ::rsia_model::Unknown;' in text
 
 
 def test_a_message_named_before_its_header_is_included_from_the_stand_ins():

@@ -347,6 +347,29 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
     assert source_edits.disk_column(insertions, 2, 80) == 33
 
 
+def test_a_literal_argument_keeps_its_place_among_the_casts():
+    # `pushPoseMarker(p.at(i), "angle", 0)` over a message's catch-all
+    # field: the cast for the string goes to the literal (blank in the
+    # masked code), not to the number after it
+    code = '  debug->pushPoseMarker(p.at(i), "angle", 0);\n  f("a");\n'
+    candidate = 'candidate function'
+    types = {('h.hpp', 3, 6): ['const Point &', 'const std::string &', 'int'],
+             ('h.hpp', 5, 6): ['const std::string &']}
+    edits = source_edits.edits_from_notes([
+        ("call to member function 'pushPoseMarker' is ambiguous", 'a.cpp',
+         1, 10, [(candidate, 'h.hpp', 3, 6)]),
+        ("call to 'f' is ambiguous", 'a.cpp', 2, 3,
+         [(candidate, 'h.hpp', 5, 6)])], lambda file: code,
+        parameter_types=lambda *at, callee=None: types.get(at),
+        parameter_type=lambda *at: None)
+    text, _ = _edited(edits, code)
+    assert text.split('\n')[:2] == [
+        '  debug->pushPoseMarker(::rsia_model::as<const Point &>(p.at(i)),'
+        '::rsia_model::as<const std::string &>( "angle"), '
+        '::rsia_model::as<int>(0));',
+        '  f(::rsia_model::as<const std::string &>("a"));']
+
+
 def test_math_functions_of_catch_alls_take_their_first_overload(tmp_path):
     # <cmath>'s overloads are declared in the precompiled model, where
     # clang finds no declaration by its place: they are found among those

@@ -32,10 +32,13 @@ from colcon_rsia.frontend.cpp.model_mode.source_edits import is_edit
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 from colcon_rsia.frontend.cpp.model_mode.source_names import \
     end_of_template_arguments
+from colcon_rsia.frontend.cpp.model_mode.source_names import \
+    template_arguments
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_class
 from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_function
+from colcon_rsia.frontend.cpp.model_mode.stubs import POINTER_TYPES
 from colcon_rsia.frontend.cpp.model_mode.stubs import repaired_guard
 from colcon_rsia.frontend.cpp.model_mode.stubs import same_class_as
 from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
@@ -1276,6 +1279,13 @@ def _compares(after):
     return False
 
 
+# a standard container's template without arguments: itself an argument
+# of a template's template parameter
+_BARE_STD_TEMPLATE = re.compile(
+    r'^(?:::)?std::(?:vector|list|deque|set|map|multiset|multimap|'
+    r'unordered_set|unordered_map|basic_string)$')
+
+
 def _template_shape(after, texts):
     """The template_kind of a use, with what the texts declare.
 
@@ -1299,11 +1309,14 @@ def _template_use(name, after, *, unqualified, texts=()):
     kind = _template_shape(after, texts)
     if (unqualified and not _CAMEL.match(name) and called) or \
             (_LOWER_CAMEL.match(name) and (called or after.strip() == '<')) \
-            or (called and not _CAMEL.match(name) and ':' in kind):
+            or (called and not _CAMEL.match(name) and (':' in kind or any(
+                _BARE_STD_TEMPLATE.match(a)
+                for a in template_arguments(after)))):
         # qobject_cast<QPushButton *>(sender()), also qualified in
-        # lowerCamelCase (motion_utils::convertToPath<P>(path)) or with a
-        # value among its arguments (bg::get<bg::min_corner, 0>(box)): a
-        # function template; boost::optional<T>(x) is a class
+        # lowerCamelCase (motion_utils::convertToPath<P>(path)), with a
+        # value among its arguments (bg::get<bg::min_corner, 0>(box)) or a
+        # template (ranges::to<std::vector>()): a function template;
+        # boost::optional<T>(x) is a class
         return FUNCTION
     return kind
 
@@ -1407,7 +1420,8 @@ def _render(repairs, source):
                     MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
                     MEMBER_TEMPLATE:
                         f'RSIA_MODEL_MEMBER_TEMPLATE(static, {m}, )',
-                }[k] for k, m in sorted(members.get(name, ()))]))
+                }[k] for k, m in sorted(members.get(name, ()))
+                    if m not in POINTER_TYPES]))
         elif kind == FUNCTION:
             body = _one_line(catch_all_function(short))
         elif kind == SPECIALIZED:

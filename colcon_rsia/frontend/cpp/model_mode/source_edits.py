@@ -822,7 +822,11 @@ def _call_arguments(masked, callee):
 
 
 def _arguments(masked, opening):
-    """[(start, end)] of the arguments of the call whose `(` is at opening."""
+    """[(start, end)] of the arguments of the call whose `(` is at opening.
+
+    A literal, blank in the masked code, keeps its place (its span blank):
+    the arguments after it keep their indexes.
+    """
     closing = _matching(masked, opening)
     if closing is None:
         return None
@@ -842,6 +846,8 @@ def _arguments(masked, opening):
                 begin += 1
             if begin < first:
                 spans.append((begin, first))
+            elif i - start >= 2:  # (`"name"`: blank, two quotes at least)
+                spans.append((start, i))
             start = i + 1
     return spans
 

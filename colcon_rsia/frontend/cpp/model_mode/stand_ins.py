@@ -80,9 +80,11 @@ def stand_ins_for(include, codes):
     package, name = parts[0], parts[1][:-2]
     # messages are CamelCase, with exceptions (tf/tfMessage.h): a header
     # whose stem the sources name as `package::stem` is one too, unless
-    # only ever called (fmt/format.h and fmt::format(...))
+    # only ever called (fmt/format.h and fmt::format(...)) or given
+    # template arguments, which a message's typedef takes none of
+    # (thrust/device_vector.h and thrust::device_vector<T>)
     named = IDENTIFIER.match(name) and any(
-        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b(?!\s*\()',
+        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b(?!\s*[(<])',
                   code)
         for code in codes)
     if not (PACKAGE.match(package) and (CAMEL.match(name) or named)):

@@ -405,7 +405,8 @@ def _merge_unknown(stub_dir, namespace, names):
             lines += [f'using {name} = {same};', '#endif']
             continue
         lines += catch_all_class(name, members=[
-            line for member in members for line in (
+            line for member in members if member not in POINTER_TYPES
+            for line in (
                 f'#ifndef {member}', f'  static ::rsia_model::Any {member};',
                 '#endif')])
         lines.append('#endif')
@@ -479,18 +480,31 @@ def catch_all_class(name, *, head='', members=()):
             f'  {name}() = default;',
             f'  {name}(const ::rsia_model::Unknown&);',
             f'  template <class RsiaV> {name}& operator=(RsiaV&&);',
+            # its pointer types by ROS convention, its own (see
+            # rsia_model::UnknownPointer)
+            f'  using Ptr = ::rsia_model::UnknownPointer<{name}>;',
+            f'  using ConstPtr = ::rsia_model::UnknownPointer<const {name}>;',
+            '  using SharedPtr = Ptr;', '  using ConstSharedPtr = ConstPtr;',
             *members, '};']
+
+
+# the pointer types every class of an unknown library has (see above): no
+# member of their names is declared again
+POINTER_TYPES = frozenset({'Ptr', 'ConstPtr', 'SharedPtr', 'ConstSharedPtr'})
 
 
 def catch_all_function(name):
     """The lines of a function of an unknown library, taking anything.
 
     Explicit template arguments go to RsiaT (`f<T>(x)`), to RsiaN and
-    RsiaM (`f<0>(x)`) or to both (`get<min_corner, 0>(box)`), the call's
-    arguments are deduced; the braced forms take braced lists, which
-    deduce nothing (see rsia_model/message.h).
+    RsiaM (`f<0>(x)`), to both (`get<min_corner, 0>(box)`) or to RsiaC,
+    a template (`ranges::to<std::vector>()`); the call's arguments are
+    deduced; the braced forms take braced lists, which deduce nothing (see
+    rsia_model/message.h).
     """
     return ['template <class... RsiaT, class... RsiaA>',
+            f'::rsia_model::Any& {name}(RsiaA&&...);',
+            'template <template <class...> class RsiaC, class... RsiaA>',
             f'::rsia_model::Any& {name}(RsiaA&&...);',
             'template <long long RsiaN, long long... RsiaM, class... RsiaA>',
             f'::rsia_model::Any& {name}(RsiaA&&...);',

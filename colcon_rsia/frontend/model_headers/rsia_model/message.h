@@ -614,6 +614,21 @@ struct Unknown : Fields
   using element_type = Unknown;
 };
 
+// The pointer types of one class of an unknown library
+// (`pcl::PointCloud<P>::Ptr`, see stubs.catch_all_class): catch-alls as
+// Unknown is, each a type of its own, so that overloads on the pointers of
+// two classes (`PointCloud<PointXY>::Ptr`, `PointCloud<PointXYZ>::Ptr`)
+// stay two
+template <class RsiaClass>
+struct UnknownPointer : Unknown
+{
+  using Unknown::Unknown;
+  UnknownPointer() = default;
+  UnknownPointer(const Unknown&);
+  template <class RsiaV>
+  UnknownPointer& operator=(RsiaV&&);
+};
+
 // The hash of a class the repairs declare (repair.py specialises std::hash
 // with it): `std::unordered_map<boost::uuids::uuid, T>` is constructible
 struct UnknownHash
@@ -785,6 +800,22 @@ struct hash<::rsia_model::AnyValue>
   size_t operator()(const ::rsia_model::AnyValue&) const;
 };
 }  // namespace std
+
+// rosidl's trait of the generated messages, which templates of ROS 2
+// libraries check (`std::enable_if_t<is_message<T>::value>`): the stand-ins'
+// messages and the catch-all classes both have the model's message tag
+namespace rosidl_generator_traits
+{
+template <class RsiaT, class = void>
+struct is_message : std::false_type
+{
+};
+template <class RsiaT>
+struct is_message<RsiaT, ::rsia_model::void_t<typename RsiaT::rsia_model_message_tag>>
+  : std::true_type
+{
+};
+}  // namespace rosidl_generator_traits
 
 // messages other headers refer to without including them (see model_mode.py)
 #if defined(__has_include)
