@@ -929,6 +929,8 @@ void report(DebugPublisher & debug, double seconds)
   debug.publish<acme_msgs::msg::Float64Stamped>("time", stamped);
   debug.publish("value", std_msgs::msg::Float64());
   debug.publish("seconds", seconds);
+  const std::string type = rosidl_generator_traits::name<acme_msgs::msg::Float64Stamped>();
+  const std::string yaml = rosidl_generator_traits::to_yaml(stamped);
 }
 """)
 
@@ -960,6 +962,21 @@ struct Debugger
   }
   std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds_;
 };
+""")
+
+
+def test_an_unknown_librarys_lower_case_name_in_a_product_is_a_value(
+        tmp_path):
+    # `2 * geo_utils::pi * ratio` is no declaration of a pointer; a
+    # declaration of one keeps its type
+    _assert_parses_clean(tmp_path, r"""
+#include <geo_utils/constants.hpp>
+double angle(double ratio, geo_utils::handle_t * handle)
+{
+  geo_utils::handle_t * other = handle;
+  const double theta = 2 * geo_utils::pi * ratio;
+  return other ? theta : -geo_utils::pi * ratio;
+}
 """)
 
 

@@ -256,6 +256,10 @@ def _lines(text):
      {('member', 'rviz_common::FramePositionTrackingViewController::mimic')}),
     ("no type named 'Result' in 'acme::Buffer'", '    Buffer::Result(r);', 13,
      {('member-type', 'acme::Buffer::Result')}),
+    # a nested type used as a scope: rviz's typedef of a base by itself
+    ("no member named 'RTDClass' in 'rviz_common::RosTopicDisplay<"
+     "acme_msgs::msg::Status>'", '    RosTopicDisplay::RTDClass::onInitialize();',
+     22, {('member-scope', 'rviz_common::RosTopicDisplay::RTDClass')}),
     # the namespace of a header generated at build time (a parameter
     # library's ParamListener), named from the global namespace
     ("'gen_params' is not a class, namespace, or enumeration",
@@ -402,16 +406,23 @@ def test_a_template_argument_the_code_declares_a_variable_is_a_value():
     # is a type (a tag) unless the code declares it a variable
     code = ('constexpr auto spline_dim = 3;\n'
             'auto s = Eigen::Spline<double, 2, spline_dim>(knots, points);\n'
-            'using P = bg::model::point<double, 2, cartesian>;\n')
-    messages = [("no member named 'Spline' in namespace 'Eigen'", 2, 26),
-                ("no template named 'Spline' in namespace 'Eigen'", 2, 26),
-                ("no member named 'point' in namespace 'bg::model'", 3, 22)]
-    for message, line, column in messages:
+            'using P = bg::model::point<double, 2, cartesian>;\n'
+            # (an alias reads as a declaration of a variable too)
+            'using point_t = bg::model::d2::point_xy<double>;\n'
+            'using box_t = bg::model::box<point_t>;\n')
+    messages = {
+        ("no member named 'Spline' in namespace 'Eigen'", 2, 26):
+            ('template:tvv', 'Eigen::Spline'),
+        ("no template named 'Spline' in namespace 'Eigen'", 2, 26):
+            ('template:tvv', 'Eigen::Spline'),
+        ("no member named 'point' in namespace 'bg::model'", 3, 22):
+            ('template:tvt', 'bg::model::point'),
+        ("no member named 'box' in namespace 'bg::model'", 5, 26):
+            ('template', 'bg::model::box')}
+    for (message, line, column), expected in messages.items():
         found = repair.repairs_from_diagnostics(
             [(message, 'a.cpp', line, column)], _lines(code), texts=[code])
-        assert found == ({('template:tvt', 'bg::model::point')}
-                         if 'point' in message else
-                         {('template:tvv', 'Eigen::Spline')}), message
+        assert found == {expected}, message
 
 
 def test_the_packages_own_namespace_is_repaired_where_used_first():
@@ -540,6 +551,16 @@ def test_a_repaired_class_has_pointer_types_of_its_own(tmp_path):
     assert text.count('using Ptr = ') == 1
     assert 'using Ptr = ::rsia_model::UnknownPointer<PointCloud>;' in text
     assert 'using iterator = ::rsia_model::Unknown;' in text
+    repair.add_repairs(str(header), 'a.cpp', {
+        ('template', 'rviz_common::RosTopicDisplay'),
+        ('member-scope', 'rviz_common::RosTopicDisplay::RTDClass'),
+        ('member', 'rviz_common::RosTopicDisplay::RTDClass'),
+        ('member', 'rviz_common::RosTopicDisplay::onInitialize')})
+    text = header.read_text()
+    # the class itself, whose members are declared with it
+    assert 'using RTDClass = RosTopicDisplay;' in text
+    assert 'static ::rsia_model::Any RTDClass;' not in text
+    assert 'static ::rsia_model::Any onInitialize;' in text
 
 
 def test_a_message_named_before_its_header_is_included_from_the_stand_ins():

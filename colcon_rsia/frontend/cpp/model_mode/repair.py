@@ -164,7 +164,11 @@ NO_HASH = 'no-hash'
 MEMBER = 'member'                  # a static member of a type declared here
 MEMBER_TYPE = 'member-type'        # a nested type of a type declared here
 MEMBER_TEMPLATE = 'member-template'  # a member used with template arguments
-MEMBER_KINDS = (MEMBER, MEMBER_TYPE, MEMBER_TEMPLATE)
+# a nested type used as a scope (`RosTopicDisplay::RTDClass::onInitialize()`,
+# rviz's typedef of a base class by itself): the class itself, whose
+# members the next round declares
+MEMBER_SCOPE = 'member-scope'
+MEMBER_KINDS = (MEMBER, MEMBER_TYPE, MEMBER_TEMPLATE, MEMBER_SCOPE)
 # not a declaration: a name used with template arguments that one of the
 # unit's member repairs declared without (see add_repairs)
 TEMPLATE_USE = 'template-use'
@@ -529,9 +533,11 @@ def _one_kind_each(repairs):
                 _base_kind(kind) in (TYPE, TEMPLATE):
             continue
         result.add((kind, name))
-    # a member used as a type is a nested type
+    # a member used as a type is a nested type, and one used as a scope
+    # the class itself
     return {(kind, name) for kind, name in result
-            if kind != MEMBER or (MEMBER_TYPE, name) not in result}
+            if (MEMBER_SCOPE, name) not in result - {(kind, name)} and (
+                kind != MEMBER or (MEMBER_TYPE, name) not in result)}
 
 
 def _declared(name, declared):
@@ -882,7 +888,9 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             nested = _CAMEL.match(match.group(1)) and _names_nested_type(
                 after, text[:max(0, column - 1)])
             kind = MEMBER_TYPE if nested else \
-                MEMBER_TEMPLATE if after.startswith('<') else MEMBER
+                MEMBER_TEMPLATE if after.startswith('<') else \
+                MEMBER_SCOPE if after.startswith('::') and \
+                _CAMEL.match(match.group(1)) else MEMBER
             repairs.add((kind, f'{match.group(2)}::{match.group(1)}'))
             repairs |= _unknown_owner(match, stand_in)
             continue
@@ -1290,11 +1298,13 @@ def _template_shape(after, texts):
     """The template_kind of a use, with what the texts declare.
 
     A lower-case argument the texts declare a variable is a value
-    (`Spline<double, 2, spline_dim>`).
+    (`Spline<double, 2, spline_dim>`), unless they declare it a type too
+    (`using point_t = ...;`, which reads as a declaration of a variable).
     """
     return template_kind(
         after, is_variable=lambda argument: argument not in _KEYWORDS and
-        argument[:1].islower() and _declared_as_variable(argument, texts))
+        argument[:1].islower() and _declared_as_variable(argument, texts)
+        and argument not in declared_names(texts))
 
 
 def _template_use(name, after, *, unqualified, texts=()):
@@ -1418,6 +1428,7 @@ def _render(repairs, source):
                         m, lambda: constant_values.setdefault(
                             f'{name}::{m}', len(constant_values) + 1)),
                     MEMBER_TYPE: f'using {m} = ::rsia_model::Unknown;',
+                    MEMBER_SCOPE: f'using {m} = {short};',
                     MEMBER_TEMPLATE:
                         f'RSIA_MODEL_MEMBER_TEMPLATE(static, {m}, )',
                 }[k] for k, m in sorted(members.get(name, ()))

@@ -302,7 +302,10 @@ def _unknown_namespaces(stubs, codes):
                         class_templates.add((name, member))
                 elif member or (CAMEL.match(name) and
                                 not _ALL_CAPS.match(name)) or (
-                        after and not name.isupper()):
+                        after and not name.isupper() and
+                        not _IN_EXPRESSION.search(
+                            code, max(0, match.start() - 40),
+                            match.start())):
                     # (ceres::CGNR, an enumerator, is a constant; a class
                     # has lower-case letters)
                     members = types.setdefault(name, set())
@@ -330,6 +333,9 @@ def _unknown_namespaces(stubs, codes):
 
 
 # what follows the arguments of a class template's use: a member
+# what comes before a name in an expression, where `ns::pi * ratio` is a
+# product, not a declaration of a pointer
+_IN_EXPRESSION = re.compile(r'(?:[-+*/%=?!|^]|\breturn)\s*\Z')
 # (`fieldList<PointT>::type`) or a declared name (`shared_ptr<T> cloud`)
 _AFTER_CLASS_TEMPLATE = re.compile(r'\s*(?:::|[&*]*\s*[A-Za-z_])')
 

@@ -801,11 +801,24 @@ struct hash<::rsia_model::AnyValue>
 };
 }  // namespace std
 
-// rosidl's trait of the generated messages, which templates of ROS 2
+// rosidl's traits of the generated messages, which templates of ROS 2
 // libraries check (`std::enable_if_t<is_message<T>::value>`): the stand-ins'
-// messages and the catch-all classes both have the model's message tag
+// messages and the catch-all classes both have the model's message tag;
+// and its names and YAML of a message (`name<PlanningFactorArray>()`)
 namespace rosidl_generator_traits
 {
+template <class RsiaT>
+const char* name();
+template <class RsiaT>
+const char* data_type();
+template <class RsiaT>
+std::string to_yaml(const RsiaT&);
+template <class RsiaT>
+void to_yaml(const RsiaT&, std::ostream&, std::size_t = 0);
+template <class RsiaT>
+struct is_service : std::false_type
+{
+};
 template <class RsiaT, class = void>
 struct is_message : std::false_type
 {
