@@ -1319,6 +1319,14 @@ def test_a_known_member_whose_result_has_members_stays_a_catch_all():
         ['int w = image.size().width + path.c_str()[0]; n = v.rows();'])[5]
     assert 'size' in values
     assert not {'c_str', 'rows'} & values
+    # also through a variable (`auto size = image.size();`); a count
+    # used as a number is no such use
+    values = source_names.used_names([
+        'auto image_size = images[i].size(); decode(image_size);\n'
+        'int w = image_size.width;\n'
+        'auto n = path.c_str(); auto rows = m.rows(); f(n, rows + 1);'])[5]
+    assert 'size' in values
+    assert not {'c_str', 'rows'} & values
 
 
 def test_a_trailing_return_type_is_no_member(tmp_path):

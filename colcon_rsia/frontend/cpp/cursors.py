@@ -284,6 +284,16 @@ def continue_before(loop, sleep):
     return False
 
 
+def overloaded_declarations(reference):
+    """The declarations an OVERLOADED_DECL_REF cursor names.
+
+    (cindex's Cursor lacks the calls.)
+    """
+    library = ci.conf.lib
+    return [library.clang_getOverloadedDecl(reference, index)
+            for index in range(library.clang_getNumOverloadedDecls(reference))]
+
+
 def overload_candidate(call):
     """The callee of a call libclang left unresolved, when unambiguous.
 
@@ -297,9 +307,7 @@ def overload_candidate(call):
     for current in [children[0]] + list(walk_preorder(children[0])):
         if current.kind != CK.OVERLOADED_DECL_REF:
             continue
-        count = ci.conf.lib.clang_getNumOverloadedDecls(current)
-        candidates = [ci.conf.lib.clang_getOverloadedDecl(current, i)
-                      for i in range(count)]
+        candidates = overloaded_declarations(current)
         names = {qualified_name(c) for c in candidates}
         if candidates and len(names) == 1:
             return candidates[0]

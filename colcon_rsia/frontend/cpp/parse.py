@@ -6,6 +6,7 @@ import ctypes
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend.cpp.cursors import overloaded_declarations
 
 # incomplete: we never need the TU's template instantiations at its end
 PARSE_OPTIONS = ci.TranslationUnit.PARSE_INCOMPLETE
@@ -152,9 +153,7 @@ def _overload_at(tu, callee_at, file, line, column):
         if overloaded is None or \
                 overloaded.kind != ci.CursorKind.OVERLOADED_DECL_REF:
             continue
-        library = ci.conf.lib  # (cindex's Cursor lacks these two)
-        for index in range(library.clang_getNumOverloadedDecls(overloaded)):
-            declaration = library.clang_getOverloadedDecl(overloaded, index)
+        for declaration in overloaded_declarations(overloaded):
             place = declaration.location
             if place.file is not None and place.file.name == file and \
                     (place.line, place.column) == (line, column):

@@ -180,9 +180,9 @@ INCLUDES = (STD_HEADER, HEADER)
 # when one name is asked for as several kinds, the first of these wins
 # (a name used as a type somewhere is a class, even where `Name::` made it
 # look like a namespace: QFrame *line; QFrame::HLine)
-_PRIORITY = (MACRO_FUNCTION, MACRO_VALUE, MACRO_VOID, MACRO_EMPTY, MACRO_CONDITION, VALUE,
-             TEMPLATE, TYPE, NAMESPACE, SPECIALIZED, FUNCTION, CONSTANT,
-             OBJECT)
+_PRIORITY = (MACRO_FUNCTION, MACRO_VALUE, MACRO_VOID, MACRO_EMPTY,
+             MACRO_CONDITION, VALUE, TEMPLATE, TYPE, NAMESPACE, SPECIALIZED,
+             FUNCTION, CONSTANT, OBJECT)
 
 # what a name of std:: needs (the model includes the costly ones only when
 # the sources name them; a name reached otherwise is repaired here)
@@ -535,8 +535,9 @@ def _one_kind_each(repairs):
         result.add((kind, name))
     # a member used as a type is a nested type, and one used as a scope
     # the class itself
+    scopes = {name for kind, name in result if kind == MEMBER_SCOPE}
     return {(kind, name) for kind, name in result
-            if (MEMBER_SCOPE, name) not in result - {(kind, name)} and (
+            if kind == MEMBER_SCOPE or name not in scopes and (
                 kind != MEMBER or (MEMBER_TYPE, name) not in result)}
 
 
@@ -922,7 +923,7 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
             elif what in ('type', 'class'):
                 kind = TYPE
             elif what == 'template':
-                kind = template_kind(after)
+                kind = _template_shape(after, texts)
             else:
                 kind = _by_qualified_use(name, after,
                                          text[:max(0, column - 1)], texts)

@@ -127,13 +127,14 @@ _ADDRESS_ERROR = re.compile(
     r"^cannot initialize a (?:parameter|variable) of type '.*\*'"
     r"(?: \(aka '.*'\))? with an rvalue of type "
     r"'(?:::)?(?:rsia_model::)?Any \*'$")
-# an element of a catch-all, which binds no reference to a class of an
-# unknown library (`for (lanelet::LineString3d & line : map->lineStringLayer)`)
 # a pointer's subscript by a catch-all, which converts to every number
 _INDEX_ERROR = re.compile(r'^array subscript is not an integer$')
+# a member pointer that is a catch-all's address
 _MEMBER_POINTER_ERROR = re.compile(
     r'^right hand operand to (?:\.|->)\* has non-pointer-to-member type '
     rf"'{_ANY} \*'$")
+# an element of a catch-all, which binds no reference to a class of an
+# unknown library (`for (lanelet::LineString3d & line : map->lineStringLayer)`)
 _ELEMENT_CONVERSION_ERROR = re.compile(
     r"^no viable conversion from '(?:const )?(?:(?:::)?rsia_model::)?"
     r"AnyElement' to '.*'$")

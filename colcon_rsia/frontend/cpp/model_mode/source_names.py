@@ -41,6 +41,11 @@ KNOWN_METHODS = {
 }
 _RESULT_MEMBER = re.compile(
     r'(?:\.|->)\s*([A-Za-z_]\w*)\s*\(\s*\)\s*(?:\.|->)')
+# the same through a variable: `auto size = image.size();`, then
+# `size.width`
+_RESULT_VARIABLE = re.compile(
+    r'\bauto\s*&{0,2}\s*([A-Za-z_]\w*)\s*=[^;]*?(?:\.|->)\s*'
+    r'([A-Za-z_]\w*)\s*\(\s*\)\s*;')
 # `Type::NAME`, also in the kName style (`ILogger::Severity::kINFO`)
 _CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*|k[A-Z]\w*)\b')
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
@@ -172,6 +177,11 @@ def used_names(codes):
         values.update(m.group(1) for m in _VALUE_MEMBER.finditer(code))
         values.update(m.group(1) for m in _RESULT_MEMBER.finditer(code)
                       if m.group(1) in KNOWN_METHODS)
+        values.update(
+            m.group(2) for m in _RESULT_VARIABLE.finditer(code)
+            if m.group(2) in KNOWN_METHODS and re.search(
+                r'\b' + m.group(1) + r'\s*(?:\.|->)\s*[A-Za-z_]',
+                code[m.end():]))
         constants.update(m.group(1) for m in _CONSTANT.finditer(code))
         field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):

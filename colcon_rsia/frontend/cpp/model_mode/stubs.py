@@ -332,10 +332,10 @@ def _unknown_namespaces(stubs, codes):
     return result, own
 
 
-# what follows the arguments of a class template's use: a member
 # what comes before a name in an expression, where `ns::pi * ratio` is a
 # product, not a declaration of a pointer
 _IN_EXPRESSION = re.compile(r'(?:[-+*/%=?!|^]|\breturn)\s*\Z')
+# what follows the arguments of a class template's use: a member
 # (`fieldList<PointT>::type`) or a declared name (`shared_ptr<T> cloud`)
 _AFTER_CLASS_TEMPLATE = re.compile(r'\s*(?:::|[&*]*\s*[A-Za-z_])')
 
@@ -406,7 +406,8 @@ def _merge_unknown(stub_dir, namespace, names):
         # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
                   _undeclared(namespace, name)]
-        same = same_class_as(name, {n for n in types if not types[n]})
+        same = not members and same_class_as(
+            name, {n for n in types if not types[n]})
         if same:
             lines += [f'using {name} = {same};', '#endif']
             continue
