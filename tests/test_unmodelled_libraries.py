@@ -73,16 +73,21 @@ def test_polling_subscribers_of_an_unmodelled_library_are_inputs(tmp_path):
 
 def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
     # the package also calls a node's `create_subscription<M>(...)`: every
-    # catch-all then has a member template of that name, which the
-    # unknown class's static call reaches
+    # catch-all then has a member template of that name, which a static
+    # call reaches through the unknown class template, and through the
+    # class a member's pointer type names (`decltype(odom_)::element_type`)
     source = POLLING.replace(
         '    pub_ = create_publisher',
         '    sub_ = this->create_subscription<std_msgs::msg::String>(\n'
         '      "in", 1, [](std_msgs::msg::String::SharedPtr) {});\n'
+        '    odom_ = decltype(odom_)::element_type::create_subscription(\n'
+        '      this, "~/input/odom", 1);\n'
         '    pub_ = create_publisher').replace(
         '  rclcpp::TimerBase::SharedPtr timer_;',
         '  rclcpp::TimerBase::SharedPtr timer_;\n'
-        '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;')
+        '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;\n'
+        '  autoware_utils::InterProcessPollingSubscriber<\n'
+        '    nav_msgs::msg::Odometry>::SharedPtr odom_;')
     summary = analyse_source(tmp_path, 'poller', source)
     assert [u.package_errors for u in summary.coverage.units] == [0], \
         summary.diagnostics
@@ -90,5 +95,6 @@ def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
     assert sorted((s.topic, s.api) for s in node.subscribers) == [
         ('in', 'rclcpp::Node::create_subscription'),
         ('~/input/kinematics', 'autoware_utils::InterProcessPollingSubscriber'),
+        ('~/input/odom', 'autoware_utils::InterProcessPollingSubscriber'),
         ('~/input/odometry', 'autoware_utils::InterProcessPollingSubscriber'),
     ]

@@ -387,13 +387,29 @@ def _through_qualifying_class(call, ref):
         if current.kind != CK.DECL_REF_EXPR or \
                 current.spelling != ref.spelling:
             return None
-        scope = next((child for child in current.get_children()
+        children = list(current.get_children())
+        scope = next((child for child in children
                       if child.kind in (CK.TEMPLATE_REF, CK.TYPE_REF)), None)
         owner = qualified_name(scope.referenced) \
             if scope is not None and scope.referenced is not None else ''
+        if owner.endswith('::element_type'):
+            # `decltype(sub_)::element_type::create_subscription(...)`: the
+            # class whose pointer type the operand of decltype is declared
+            # with (`Poller<M>::SharedPtr sub_;`)
+            operand = next((c for c in children if c.kind in REF_KINDS),
+                           None)
+            pointer = _POINTER_OF_CLASS.match(re.sub(
+                r'<.*>', '', operand.type.spelling)) if operand else None
+            owner = pointer.group(1) if pointer else ''
         return f'{owner}::{ref.spelling}' \
             if owner and not owner.startswith(REPAIRED_PREFIX) else None
     return None
+
+
+# a class's pointer type by ROS convention, spelled without template
+# arguments: `autoware_utils::InterProcessPollingSubscriber::SharedPtr`
+_POINTER_OF_CLASS = re.compile(
+    r'^(?:const\s+)?((?:\w+::)*\w+)::(?:Const)?(?:Shared)?Ptr$')
 
 
 def base_class_names(cursor):
