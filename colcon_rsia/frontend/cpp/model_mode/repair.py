@@ -73,8 +73,7 @@ _IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
 _TYPE_IN_CLASS = re.compile(
     r'^(?:no type named|typename specifier refers to non-type member) '
     r"'(\w+)' in '([\w:]+)(<.*>)?'$")
-# a statement that calls an ALL_CAPS name, and the error of a value called
-_STATEMENT_MACRO = re.compile(r'^\s*([A-Z][A-Z0-9]*_[A-Z0-9_]*)\s*\(')
+# the error of a value called (see _MACRO_STATEMENT below)
 _CALLED_NON_FUNCTION = re.compile(
     r"^called object type '.*' is not a function or function pointer$")
 # a name as the element type of an array among template arguments
@@ -1003,7 +1002,7 @@ def _repairs(diagnostics, read_line, stand_in=None, texts=()):
                 # class, which its CamelCase made a class of ours
                 repairs.add((VALUE, _qualified(subject, text, column)))
             continue
-        match = _STATEMENT_MACRO.match(text)
+        match = _MACRO_STATEMENT.match(text)
         if match and _CALLED_NON_FUNCTION.match(message) and \
                 column > match.end():
             # BOOST_SCOPE_EXIT((&a)(&b)) { ... }: the arguments of an
@@ -1358,6 +1357,12 @@ def _render(repairs, source):
         if kind in MEMBER_KINDS:
             owner, member = name.rsplit('::', 1)
             members.setdefault(owner, set()).add((kind, member))
+    # OpenCV's X2i beside X, neither with members of its own: X
+    plain_classes = {name for kind, name in repairs
+                     if kind == TYPE and name not in members}
+    same_classes = {name: same_class_as(name, plain_classes)
+                    for name in plain_classes
+                    if same_class_as(name, plain_classes)}
     for kind, name in sorted(repairs):
         lines.append(f'// repair {kind} {name}')
         *namespaces, short = name.split('::')
@@ -1409,9 +1414,8 @@ def _render(repairs, source):
             # lanelet2) a vector of them; as a class of its own, it would
             # differ from the `std::vector<VirtualWall>` other code writes
             body = f'using {short} = std::vector<{short[:-1]}>;'
-        elif kind == TYPE and name not in members and same_class_as(
-                name, {n for k, n in repairs if k == TYPE} - set(members)):
-            body = f'using {short} = {short[:-2]};'
+        elif kind == TYPE and name in same_classes:
+            body = f'using {short} = {same_classes[name].split("::")[-1]};'
         elif kind == TYPE and name in _NUMBER_TYPES:
             body = f'using {short} = {_NUMBER_TYPES[name]};'
         elif _base_kind(kind) == TEMPLATE and name in _ALLOCATORS:

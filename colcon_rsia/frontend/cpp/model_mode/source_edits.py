@@ -694,15 +694,14 @@ def _changes(kind, masked, offset):
             change = offset, 1, ' '
     elif kind == BINDING:
         change = _bound_initializer(masked, offset)
-    elif kind == MEMBER_POINTER:
+    elif kind == MEMBER_POINTER and masked.startswith(('.*', '->*'), offset):
         # the object and its `.`/`->` blanked, the `*` kept
-        operator = 2 if masked.startswith('.*', offset) else 3
+        star = masked.index('*', offset)
         start = offset
         while start > 0 and re.match(r'[\w.:>\-\[\]]', masked[start - 1]):
             start -= 1
-        if start < offset and masked.startswith(('.*', '->*'), offset):
-            change = start, offset + operator - 1 - start, \
-                ' ' * (offset + operator - 1 - start)
+        if start < offset:
+            change = start, star - start, ' ' * (star - start)
     elif kind == INDEX:
         close = _matching(masked, offset) if masked[offset] == '[' else None
         return [] if close is None else [

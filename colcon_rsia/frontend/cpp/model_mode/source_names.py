@@ -179,9 +179,9 @@ def used_names(codes):
                       if m.group(1) in KNOWN_METHODS)
         values.update(
             m.group(2) for m in _RESULT_VARIABLE.finditer(code)
-            if m.group(2) in KNOWN_METHODS and re.search(
-                r'\b' + m.group(1) + r'\s*(?:\.|->)\s*[A-Za-z_]',
-                code[m.end():]))
+            if m.group(2) in KNOWN_METHODS and re.compile(
+                r'\b' + m.group(1) + r'\s*(?:\.|->)\s*[A-Za-z_]').search(
+                    code, m.end()))
         constants.update(m.group(1) for m in _CONSTANT.finditer(code))
         field_types.update(m.group(1) for m in _FIELD_TYPE.finditer(code))
         for m in _MSGS_TYPE.finditer(code):

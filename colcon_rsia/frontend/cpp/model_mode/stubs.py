@@ -401,13 +401,13 @@ def _merge_unknown(stub_dir, namespace, names):
         '// model mode does not have): catch-all declarations',
         f'#ifndef {guard}', f'#define {guard}', '',
         '#include <rsia_model/message.h>', '', f'namespace {namespace}', '{']
+    plain_classes = {name for name, members in types.items() if not members}
     for name in sorted(types):
         members = sorted(types[name])
         # a repair header (repair.py) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
                   _undeclared(namespace, name)]
-        same = not members and same_class_as(
-            name, {n for n in types if not types[n]})
+        same = name in plain_classes and same_class_as(name, plain_classes)
         if same:
             lines += [f'using {name} = {same};', '#endif']
             continue
