@@ -73,10 +73,11 @@ def analyse_source(root, package, text, *, file=None):
         jobs=1, header_mode='model', workspace_package_dirs=[str(path)])
 
 
-def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S):
-    env = dict(os.environ)
+def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S, env=None):
+    """Run the `colcon` script in `cwd`; `env` adds environment variables."""
+    env = dict(os.environ, **(env or {}))
     # no user mixins or defaults may change what the tests build
-    env['COLCON_HOME'] = str(Path(cwd) / '.colcon_home')
+    env.setdefault('COLCON_HOME', str(Path(cwd) / '.colcon_home'))
     result = subprocess.run(
         [colcon_executable()] + args, cwd=str(cwd), env=env,
         capture_output=True, text=True, timeout=timeout)

@@ -74,8 +74,12 @@ def summary_line(summary):
         f'{len(publishers) - independent} dependent) '
         f'in {summary.seconds:.1f}s')
     if summary.diagnostics:
-        line += (f'; {len(summary.diagnostics)} problems, first: '
+        count = len(summary.diagnostics)
+        line += (f"; {count} problem{'s' if count != 1 else ''}, first: "
                  f'{summary.diagnostics[0]}')
+        if count > 1:
+            line += (" (all: 'colcon rsia problems --packages-select "
+                     f"{summary.package}')")
     return line
 
 

@@ -155,6 +155,29 @@ def find_summaries(build_base):
     return found
 
 
+def read_results(build_base, names):
+    """What the last analysis of each named package left.
+
+    :returns: ``(summaries, failures, not_analysed)``: the summaries read,
+      ``{name: message}`` of the packages whose last analysis failed, and
+      the names of those without a usable summary
+    """
+    summaries = []
+    failures = {}
+    not_analysed = []
+    for name in names:
+        package_build = os.path.join(build_base, name)
+        failure = read_failure(package_build)
+        if failure is not None:
+            failures[name] = failure
+            continue
+        try:
+            summaries.append(read_summary(summary_path(package_build)))
+        except SummaryError:
+            not_analysed.append(name)
+    return summaries, failures, not_analysed
+
+
 # --- the wrappers a package offers the packages analysed after it ---------
 
 WRAPPERS_FILENAME = 'wrappers.json'

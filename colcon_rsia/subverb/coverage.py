@@ -47,20 +47,8 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
         build_base = os.path.abspath(args.build_base)
         selected = [d.descriptor.name for d in get_packages(args)
                     if d.selected]
-        summaries = []
-        failures = {}
-        not_analysed = []
-        for name in selected:
-            package_build = os.path.join(build_base, name)
-            failure = store.read_failure(package_build)
-            if failure is not None:
-                failures[name] = failure
-                continue
-            try:
-                summaries.append(store.read_summary(
-                    store.summary_path(package_build)))
-            except store.SummaryError:
-                not_analysed.append(name)
+        summaries, failures, not_analysed = store.read_results(
+            build_base, selected)
         report = workspace_report(summaries, failures, not_analysed)
         if args.format == 'json':
             print(json.dumps(report, indent=2, sort_keys=True))

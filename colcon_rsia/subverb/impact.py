@@ -33,7 +33,10 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def add_arguments(self, *, parser):  # noqa: D102
         add_system_arguments(parser)
-        group = parser.add_mutually_exclusive_group(required=True)
+        # one of the group is required, checked in main(): argparse's own
+        # check would fire in the first pass of colcon-defaults, which
+        # parses with the help action suppressed (`impact --help`)
+        group = parser.add_mutually_exclusive_group()
         group.add_argument(
             '--changed', nargs='+', metavar='PKG/EXE',
             help='The changed nodes (package/executable, or package/plugin '
@@ -58,6 +61,8 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def main(self, *, context):  # noqa: D102
         args = context.args
+        if not (args.changed or args.since or args.all):
+            return 'one of the arguments --changed --since --all is required'
         system, error = load_system_from_args(args, logger)
         if error:
             return error

@@ -14,6 +14,11 @@ from colcon_rsia.system.workspace import select_changed
 
 logger = colcon_logger.getChild(__name__)
 
+# beside the packages' build directories; a hyphen, which no ROS package
+# name has, keeps it apart from them, and no leading dot keeps it visible
+# to CI artifact uploads that skip hidden files
+DEFAULT_OUTPUT_DIRNAME = 'rsia-report'
+
 
 class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
     """Write a workspace report: HTML page, graph files, PR summary."""
@@ -34,10 +39,11 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
         add_since_argument(group)
         add_model_argument(parser)
         parser.add_argument(
-            '--output', required=True, metavar='DIR',
+            '--output', metavar='DIR', default=None,
             help='The directory the report is written into (created when '
                  'missing): index.html, graph.dot, graph.svg (with '
-                 'Graphviz), graph.json, impact.json, summary.md')
+                 'Graphviz), graph.json, impact.json, summary.md '
+                 f'(default: {DEFAULT_OUTPUT_DIRNAME} in the build base)')
 
     def main(self, *, context):  # noqa: D102
         from colcon_rsia.report.writer import write_report
@@ -48,15 +54,17 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
         changed, reasons, error = select_changed(system, args)
         if error:
             return error
+        output = args.output or os.path.join(
+            args.build_base, DEFAULT_OUTPUT_DIRNAME)
         try:
             written, notes = write_report(
-                system, args.output, changed=changed, reasons=reasons,
+                system, output, changed=changed, reasons=reasons,
                 since=args.since, model_name=args.model)
         except OSError as e:
-            return f"cannot write the report into '{args.output}': " \
+            return f"cannot write the report into '{output}': " \
                 f'{e.strerror or e}'
         for note in notes:
             print(f'rsia: {note}')
-        print(f'rsia: report written to {os.path.abspath(args.output)}: '
+        print(f'rsia: report written to {os.path.abspath(output)}: '
               f"{', '.join(written)}")
         return 0

@@ -377,6 +377,13 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
     return '\n'.join(lines) + '\n'
 
 
+def _unresolved(endpoint):
+    """How an endpoint whose global name is unknown shows its topic."""
+    if endpoint.topic is None:
+        return '(topic unknown)'
+    return f'{endpoint.topic} (not resolved)'
+
+
 def graph_to_text(system):
     """A readable listing of nodes, their edges and labels."""
     lines = []
@@ -389,12 +396,13 @@ def graph_to_text(system):
             publisher = p['publisher']
             rate = f' {publisher.rate_hz:g} Hz' if publisher.rate_hz else ''
             lines.append(
-                f'  publishes {p["resolved"] or "?" + str(publisher.topic)}'
+                f'  publishes {p["resolved"] or _unresolved(publisher)}'
                 f' [{publisher.label}: {publisher.pattern}{rate}]'
                 f' {publisher.location}')
         for s in instance.subscribers:
             subscriber = s['subscriber']
+            callback = subscriber.callback or '(callback unknown)'
             lines.append(
-                f'  subscribes {s["resolved"] or "?" + str(subscriber.topic)}'
-                f' -> {subscriber.callback} {subscriber.location}')
+                f'  subscribes {s["resolved"] or _unresolved(subscriber)}'
+                f' -> {callback} {subscriber.location}')
     return '\n'.join(lines) + '\n'
