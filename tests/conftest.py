@@ -23,6 +23,21 @@ CMAKE_ARGS = [
 BUILD_TIMEOUT_S = 1500
 
 
+# What makes a test slow: compiling a test workspace with colcon, a real
+# browser, a real ROS system. `pytest -m "not slow"` leaves these out (the
+# quick run); `bash .ci/run` runs everything.
+SLOW_FIXTURES = frozenset({
+    'ros1_workspace', 'system_workspace', 'fig2_workspace', 'fig2_summaries',
+    'triggers_workspace', 'fault_builds', 'python_workspace'})
+
+
+def pytest_collection_modifyitems(items):
+    """Mark the tests that need a compiled workspace as slow."""
+    for item in items:
+        if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())):
+            item.add_marker(pytest.mark.slow)
+
+
 def colcon_executable():
     """The colcon of the interpreter running the tests."""
     candidate = Path(sys.executable).parent / 'colcon'

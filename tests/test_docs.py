@@ -54,7 +54,7 @@ def test_readme_is_short_and_keeps_the_quick_start():
 
 
 def _markdown_files():
-    return [README] + sorted(DOCS.glob('*.md'))
+    return [README] + sorted(DOCS.rglob('*.md'))
 
 
 def _anchor(heading):

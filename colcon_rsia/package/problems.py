@@ -87,6 +87,16 @@ def problems_report(summaries, failures=None, not_analysed=()):
         'total': sum(len(p['problems']) for p in packages)}
 
 
+def problem_to_text(problem):
+    """``file:line: reason (in unit)``, the parts known."""
+    where = problem['file'] or ''
+    if problem['line'] is not None:
+        where += f":{problem['line']}"
+    unit = f" (in {problem['unit']})" if problem['unit'] and \
+        problem['unit'] != problem['file'] else ''
+    return f"{where + ': ' if where else ''}{problem['reason']}{unit}"
+
+
 def problems_to_text(report):
     """One line per problem, under a line per package that has any."""
     lines = []
@@ -105,16 +115,10 @@ def problems_to_text(report):
             continue
         lines.append(f'{name}: {len(problems)} '
                      f"problem{'s' if len(problems) != 1 else ''}")
-        for problem in problems:
-            where = problem['file'] or ''
-            if problem['line'] is not None:
-                where += f":{problem['line']}"
-            unit = f" (in {problem['unit']})" if problem['unit'] and \
-                problem['unit'] != problem['file'] else ''
-            lines.append(f"  {where + ': ' if where else ''}"
-                         f"{problem['reason']}{unit}")
+        lines += ['  ' + problem_to_text(p) for p in problems]
     analysed = sum(1 for p in report['packages']
                    if p['status'] != NOT_ANALYSED)
-    lines.append(f"{report['total']} problems in {analysed} analysed "
-                 f"package{'s' if analysed != 1 else ''}")
+    total = report['total']
+    lines.append(f"{total} problem{'s' if total != 1 else ''} in "
+                 f"{analysed} analysed package{'s' if analysed != 1 else ''}")
     return '\n'.join(lines) + '\n'

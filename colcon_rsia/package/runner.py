@@ -24,6 +24,8 @@ from colcon_rsia.package.analysis import analyze_package
 from colcon_rsia.package.analysis import check_stop
 from colcon_rsia.package.analysis import Interrupted
 from colcon_rsia.package.nodes import find_executables
+from colcon_rsia.package.problems import problem_to_text
+from colcon_rsia.package.problems import split_problem
 from colcon_rsia.safe_files import display
 
 # package types whose build produces a compile database
@@ -75,8 +77,9 @@ def summary_line(summary):
         f'in {summary.seconds:.1f}s')
     if summary.diagnostics:
         count = len(summary.diagnostics)
-        line += (f"; {count} problem{'s' if count != 1 else ''}, first: "
-                 f'{summary.diagnostics[0]}')
+        first = problem_to_text(
+            split_problem(summary.diagnostics[0], summary.path))
+        line += f"; {count} problem{'s' if count != 1 else ''}, first: {first}"
         if count > 1:
             line += (" (all: 'colcon rsia problems --packages-select "
                      f"{summary.package}')")

@@ -102,7 +102,8 @@ def _impact_text(result, traditional):
     data = result['traditional_impact']
     lines = [
         f"changed: {', '.join(result['changed']) or '(none)'}",
-        f'rate impact: {len(rate)} nodes; traditional: {len(data)} '
+        f"rate impact: {len(rate)} node{'s' if len(rate) != 1 else ''}; "
+        f'traditional: {len(data)} '
         f"({result['model']} model; paper {len(result['paper_impact'])}, "
         f"trigger {len(result['trigger_impact'])})"]
     lines += [f'  {node_id}' for node_id in rate]
