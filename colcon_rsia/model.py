@@ -58,6 +58,11 @@ ROOT_HOST_SETUP = 'host_setup'
 # expression as written: names relative to it are not resolved
 UNKNOWN_NAMESPACE = '?'
 
+# where a fact comes from: the AST, or the tokens of a call the parse lost
+# (colcon_rsia.frontend.cpp.token_facts)
+ORIGIN_AST = 'ast'
+ORIGIN_TOKENS = 'tokens'
+
 
 @dataclass
 class Function:
@@ -107,6 +112,9 @@ class PublisherFact:
     topic_handle: Optional[str] = None  # the variable holding a non-literal topic
     # [prefix, suffix] the code joins around that variable's value
     topic_affixes: Optional[List[str]] = None
+    # 'ast', or 'tokens' where the AST had lost the call
+    # (colcon_rsia.frontend.cpp.token_facts)
+    origin: str = ORIGIN_AST
 
 
 @dataclass
@@ -125,6 +133,7 @@ class SubscriberFact:
     nh: Optional[str] = None
     topic_handle: Optional[str] = None
     topic_affixes: Optional[List[str]] = None
+    origin: str = ORIGIN_AST           # as PublisherFact.origin
 
 
 @dataclass
@@ -149,6 +158,7 @@ class TimerFact:
     period: str                   # the period/rate expression as written
     rate_hz: Optional[float]
     location: str
+    origin: str = ORIGIN_AST           # as PublisherFact.origin
 
 
 @dataclass
@@ -186,6 +196,7 @@ class PublishSite:
     loops: List[str] = field(default_factory=list)
     # under ``if (++count % n == 0)``: publishes every n-th call
     every: Optional[int] = None
+    origin: str = ORIGIN_AST           # as PublisherFact.origin
 
 
 @dataclass
@@ -449,6 +460,8 @@ class LabelledPublisher:
     # one constant (also for a node without inputs), and which of the two
     paced_rate_hz: Optional[float] = None
     paced_by: Optional[str] = None
+    # 'ast', or 'tokens': read from the tokens of a call the parse lost
+    origin: str = ORIGIN_AST
 
 
 @dataclass
@@ -463,6 +476,7 @@ class NodeSubscriber:
     namespace: Optional[str]
     location: str
     topic_param: Optional[TopicParam] = None
+    origin: str = ORIGIN_AST           # as LabelledPublisher.origin
 
 
 @dataclass
@@ -564,6 +578,8 @@ class CallSiteCoverage:
     role: str       # 'publisher' | 'subscriber'
     api: str
     recorded: str   # 'node' | 'unit' (facts no node runs) | 'none'
+    # of a recorded site: 'ast', or 'tokens' (read where the parse lost it)
+    origin: Optional[str] = None
 
 
 @dataclass

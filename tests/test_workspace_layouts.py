@@ -102,9 +102,9 @@ def test_coverage_of_the_analysed_workspace(tmp_path):
     # 1 advertise + 2 subscribe; sink: 1 subscribe
     calls = total['call_sites']
     assert calls['publisher'] == {
-        'sites': 7, 'in_nodes': 7, 'in_units_only': 0}
+        'sites': 7, 'in_nodes': 7, 'in_units_only': 0, 'from_tokens': 0}
     assert calls['subscriber'] == {
-        'sites': 7, 'in_nodes': 7, 'in_units_only': 0}
+        'sites': 7, 'in_nodes': 7, 'in_units_only': 0, 'from_tokens': 0}
     assert total['percent'] == 100.0
     failing = run_colcon(
         ['rsia', 'coverage', '--fail-under', '100.5'], cwd=root)

@@ -411,33 +411,54 @@ FORWARDING_FACTORIES = frozenset({
     'std::make_shared', 'std::make_unique', 'std::allocate_shared',
     'boost::make_shared', 'boost::allocate_shared',
 })
+FORWARDING_FACTORY_NAMES = frozenset(
+    name.rsplit('::', 1)[1] for name in FORWARDING_FACTORIES)
 
 # functions that are roots of a node by their name alone
 MAIN_FUNCTION = 'main'
 NODELET_INIT_METHOD = 'onInit'
 
 
-# methods whose name alone says what a call on an object of a template
-# parameter's type does (the endpoint-creating ones; no other library of the
-# ROS world has methods of these names): name -> (ROS 1 API, ROS 2 API)
-DEPENDENT_METHODS = {
+# methods whose name alone says what a call does where the AST cannot tell:
+# on an object of a template parameter's type, or in code the parse lost
+# (frontend/cpp/token_facts.py). Only the endpoint-creating ones, which no
+# other library of the ROS world names so: name -> (ROS 1 API, ROS 2 API)
+METHODS_BY_NAME = {
     'advertise': ('ros::NodeHandle::advertise', None),
     'subscribe': ('ros::NodeHandle::subscribe', None),
+    'createTimer': ('ros::NodeHandle::createTimer', None),
+    'createWallTimer': ('ros::NodeHandle::createWallTimer', None),
+    'createSteadyTimer': ('ros::NodeHandle::createSteadyTimer', None),
+    'advertiseService': ('ros::NodeHandle::advertiseService', None),
     'create_publisher': (None, 'rclcpp::Node::create_publisher'),
     'create_subscription': (None, 'rclcpp::Node::create_subscription'),
+    'create_generic_publisher': (
+        None, 'rclcpp::Node::create_generic_publisher'),
+    'create_generic_subscription': (
+        None, 'rclcpp::Node::create_generic_subscription'),
     'create_wall_timer': (None, 'rclcpp::Node::create_wall_timer'),
+    'create_timer': (None, 'rclcpp::Node::create_timer'),
+    'create_service': (None, 'rclcpp::Node::create_service'),
     # a publisher of a template's message type (a wrapper's)
     'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish'),
 }
+# `rate.sleep()` on an object known to be a rate
+RATE_SLEEP_BY_NAME = ('ros::Rate::sleep', 'rclcpp::Rate::sleep')
 
 
 def dependent_method(method, *, ros2):
-    """The API a dependent call of `method` stands for, or None."""
-    names = DEPENDENT_METHODS.get(method)
+    """The API a call of `method` stands for, by its name alone, or None."""
+    names = METHODS_BY_NAME.get(method)
     if names is None:
         return None
     name = names[1] if ros2 else names[0]
     return name if name in CALLS else None
+
+
+def methods_named(method):
+    """The qualified APIs of the table whose method is called `method`."""
+    return [name for name in CALLS if name.rsplit('::', 1)[-1] == method
+            and name.count('::') >= 2]
 
 
 def lookup_call(qualified_name):

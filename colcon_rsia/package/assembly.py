@@ -116,7 +116,8 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
                 msg_type=s.msg_type, api=s.api,
                 callback=names.get(s.callback, s.callback),
                 namespace=resolve_namespace(facts, s.nh),
-                location=s.location, topic_param=topic_param(facts, s))
+                location=s.location, topic_param=topic_param(facts, s),
+                origin=s.origin)
             for s in facts.subscribers),
             key=lambda s: (s.location, s.topic or '')),
         timers=[model.NodeTimer(

@@ -31,11 +31,12 @@ NOT_RECORDED = 'none'
 IN_UNREAD_FILE = 'unread'
 
 
-def _endpoint_lines(holders):
+def _endpoint_lines(holders, origins=None):
     """{(file, role): [lines]} of the endpoints of nodes or of units.
 
     Both hold ``publishers`` and ``subscribers`` facts located at
-    ``file:line``.
+    ``file:line``. `origins`, when given, collects {(file, role, line):
+    {origin}} of the facts.
     """
     lines = collections.defaultdict(list)
     for holder in holders:
@@ -45,7 +46,18 @@ def _endpoint_lines(holders):
                 file, _, line = fact.location.rpartition(':')
                 if line.isdigit():
                     lines[(file, role)].append(int(line))
+                    if origins is not None:
+                        origins[(file, role, int(line))].add(fact.origin)
     return lines
+
+
+def _origin(site, origins):
+    """'tokens' when only facts read from tokens are near a site."""
+    near = set().union(*(
+        origins.get((site.file, site.role, line), set())
+        for line in range(site.line - LINE_SLACK, site.line + LINE_SLACK + 1)))
+    return model.ORIGIN_TOKENS if near == {model.ORIGIN_TOKENS} \
+        else model.ORIGIN_AST
 
 
 def match_sites(sites, lines):
@@ -90,9 +102,10 @@ def call_site_coverage(sites, *, nodes, units):
     :param units: the facts of the units parsed (model.TuFacts); a site in
       a file none of them read is in code the build never compiles
     """
-    in_nodes = match_sites(sites, _endpoint_lines(nodes))
+    origins = collections.defaultdict(set)
+    in_nodes = match_sites(sites, _endpoint_lines(nodes, origins))
     rest = [s for s in sites if s not in in_nodes]
-    in_units = match_sites(rest, _endpoint_lines(units))
+    in_units = match_sites(rest, _endpoint_lines(units, origins))
     rest = [s for s in rest if s not in in_units]
     through_node, through_unit = _through_package_functions(
         rest, nodes, units)
@@ -106,7 +119,8 @@ def call_site_coverage(sites, *, nodes, units):
             IN_UNREAD_FILE if site.file not in read else NOT_RECORDED
         result.append(model.CallSiteCoverage(
             file=site.file, line=site.line, role=site.role, api=site.api,
-            recorded=recorded))
+            recorded=recorded, origin=_origin(site, origins) if recorded in (
+                RECORDED_IN_NODE, RECORDED_IN_UNIT) else None))
     return result
 
 
@@ -224,7 +238,9 @@ def package_report(summary):
             'in_nodes': sum(1 for c in sites
                             if c.recorded == RECORDED_IN_NODE),
             'in_units_only': sum(1 for c in sites
-                                 if c.recorded == RECORDED_IN_UNIT)}
+                                 if c.recorded == RECORDED_IN_UNIT),
+            'from_tokens': sum(1 for c in sites
+                               if c.origin == model.ORIGIN_TOKENS)}
     report['missed'] = [
         {'file': c.file, 'line': c.line, 'role': c.role, 'api': c.api}
         for c in coverage.call_sites if c.recorded == NOT_RECORDED]
@@ -274,16 +290,19 @@ def workspace_report(summaries, failures=None, not_analysed=()):
     for role in (PUBLISHER, SUBSCRIBER):
         total['call_sites'][role] = {
             key: sum(p['call_sites'][role][key] for p in analysed)
-            for key in ('sites', 'in_nodes', 'in_units_only')}
+            for key in ('sites', 'in_nodes', 'in_units_only', 'from_tokens')}
     total['percent'] = recorded_percent(total)
     return {'schema': COVERAGE_SCHEMA, 'packages': packages, 'total': total}
 
 
 def recorded_percent(counts):
-    """The share of call sites with a fact (in a node or a unit), in %."""
+    """The share of call sites whose fact belongs to a node, in %.
+
+    A fact recorded only in code no node runs (a plugin nobody hosts, a
+    helper no executable links) is not covered: it is in no system graph.
+    """
     sites = sum(c['sites'] for c in counts['call_sites'].values())
-    recorded = sum(c['in_nodes'] + c['in_units_only']
-                   for c in counts['call_sites'].values())
+    recorded = sum(c['in_nodes'] for c in counts['call_sites'].values())
     return round(100.0 * recorded / sites, 1) if sites else 100.0
 
 
@@ -292,17 +311,23 @@ def total_line(report):
     total = report['total']
     pub = total['call_sites'][PUBLISHER]
     sub = total['call_sites'][SUBSCRIBER]
+    outside = pub['in_units_only'] + sub['in_units_only']
+    tokens = pub.get('from_tokens', 0) + sub.get('from_tokens', 0)
     return (
         f"rsia: coverage {total['percent']:.1f}% of "
         f"{pub['sites'] + sub['sites']} publisher/subscription call sites "
-        f'recorded ({_fraction(pub)} publishers, {_fraction(sub)} '
-        f"subscriptions); {total['units_with_errors']} of "
+        f'in a node ({_fraction(pub)} publishers, {_fraction(sub)} '
+        'subscriptions' +
+        (f'; {outside} more only in code no node runs' if outside else '') +
+        (f'; {tokens} read from tokens where the parse failed'
+         if tokens else '') +
+        f"); {total['units_with_errors']} of "
         f"{total['units']} translation units with errors in package code; "
         f"{total['failed']} packages failed; see 'colcon rsia coverage'")
 
 
 def _fraction(counts):
-    return f"{counts['in_nodes'] + counts['in_units_only']}/{counts['sites']}"
+    return f"{counts['in_nodes']}/{counts['sites']}"
 
 
 def report_to_text(report, *, missed=False):

@@ -145,7 +145,9 @@ def label_publishers(facts):
         sites = [s for s in facts.publish_sites
                  if publisher.handle and s.handle and
                  publisher.handle in handles_of(facts, s.handle)]
-        evidence = [model.Evidence('publish_site', s.location, s.api)
+        evidence = [model.Evidence(
+            'publish_site', s.location,
+            s.api + (' (read from tokens)' if s.origin == model.ORIGIN_TOKENS else ''))
                     for s in sites]
         base = dict(
             topic=publisher.topic, topic_is_literal=publisher.topic_is_literal,
@@ -154,7 +156,8 @@ def label_publishers(facts):
             namespace=resolve_namespace(facts, publisher.nh),
             location=publisher.location,
             publish_sites=sorted({s.location for s in sites}),
-            topic_param=topic_param(facts, publisher))
+            topic_param=topic_param(facts, publisher),
+            origin=publisher.origin)
         if not driven:
             evidence.append(model.Evidence(
                 'no_subscribers', publisher.location,

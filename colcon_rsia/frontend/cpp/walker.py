@@ -27,6 +27,7 @@ from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import clocks
 from colcon_rsia.frontend.cpp import roles
 from colcon_rsia.frontend.cpp import strings
+from colcon_rsia.frontend.cpp import token_facts
 from colcon_rsia.frontend.cpp import wrappers
 from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
@@ -125,6 +126,9 @@ class _Walker:
         self._wrappers = wrappers.Summaries(self, external_wrappers)
         # {function id: definition} of the package's functions walked
         self._definitions = {}
+        # {(file, callee spelling): [(start, end)]}: the calls the AST
+        # resolved, which the tokens of their place then leave alone
+        self._resolved_calls = {}
         # Qt and boost::asio timers, sleep_until loops
         self._clocks = clocks.OtherClocks(self)
         # what each role of ros_api does to the facts
@@ -160,10 +164,22 @@ class _Walker:
             and '/rsia/stubs/' not in name and '/rsia_model/' not in name
 
     def relpath(self, cursor):
-        name = os.path.abspath(cursor.location.file.name)
+        return self.relative_path(cursor.location.file.name)
+
+    def relative_path(self, file_name):
+        """A file's path relative to the package (absolute outside it)."""
+        name = os.path.abspath(file_name)
         if name.startswith(self.package_path):
             return name[len(self.package_path):]
         return name
+
+    def _note_resolved(self, cursor, spelling):
+        """Remember a call the AST resolved (see token_facts)."""
+        start, end = cursor.extent.start, cursor.extent.end
+        if start.file is not None:
+            self._resolved_calls.setdefault(
+                (start.file.name, spelling), []).append(
+                    (start.offset, end.offset))
 
     def location(self, cursor):
         if cursor.location.file is None:
@@ -189,6 +205,11 @@ class _Walker:
         for cursor in tu.cursor.get_children():
             if self.in_package(cursor):
                 self._declaration(cursor)
+        # what the AST lost of the bodies walked, from their tokens
+        token_facts.recover_facts(
+            tu, self.facts, definitions=self._definitions,
+            relpath=self.relative_path, ros2=self.ros2,
+            resolved_calls=self._resolved_calls)
         if len(self.problems) > MAX_DIAGNOSTICS_PER_TU:
             lost = len(self.problems) - MAX_DIAGNOSTICS_PER_TU
             del self.problems[MAX_DIAGNOSTICS_PER_TU:]
@@ -480,6 +501,7 @@ class _Walker:
         if ref is None:
             self._dependent_call(cursor, ctx, stack)
             return
+        self._note_resolved(cursor, cursor.spelling or ref.spelling)
         if cursor.spelling == 'operator=':
             children = child_cursors(cursor)
             target = first_handle(children[0]) if children else None
@@ -519,12 +541,13 @@ class _Walker:
         On an object of a template parameter's type (``NodeT node``) the
         call resolves only when the template is instantiated, which the
         AST does not show: the endpoint-creating methods are recognised by
-        their name (see ros_api.DEPENDENT_METHODS). So are they on a value
+        their name (see ros_api.METHODS_BY_NAME). So are they on a value
         whose type the model mode could not know (a catch-all).
         """
         name = self.dependent_call_name(cursor)
         if name is None:
             return
+        self._note_resolved(cursor, name.rsplit('::', 1)[-1])
         api = ros_api.lookup_call(name)
         self._handlers[api.role](
             cursor, ctx, stack, api, name, list(cursor.get_arguments()))

@@ -1,0 +1,1092 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Facts from a unit's tokens where its AST lost them.
+
+A call clang could not resolve (its object's type unknown, a member or an
+overload the model lacks, an error earlier in the statement) is dropped
+from the AST or left without the declaration it calls. Its tokens stay,
+and so does the extent of the function around it. After the walk, every
+function body of the package that the unit defines is read again as
+tokens (:func:`recover_facts`): a call the AST did not resolve whose name
+says what it does (``ros_api.METHODS_BY_NAME``: ``advertise``,
+``create_publisher``, ``publish``... or a qualified name of the API table)
+becomes the fact the AST would have made, from what the tokens show: the
+name argument, the message type (the explicit template argument, or the
+callback's parameter), the callback (``&C::m``, ``std::bind``, a lambda, a
+function), the member or variable the result is stored in, the loops and
+branches around it. A call of one of the unit's own functions by name
+becomes a call edge. Facts made here say ``origin='tokens'``; where the AST
+has a call, its facts win and the tokens add nothing.
+"""
+
+from dataclasses import dataclass
+import re
+
+import clang.cindex as ci
+from colcon_rsia import model
+from colcon_rsia.frontend import recorder
+from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
+from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.strings import unquote
+
+CK = ci.CursorKind
+TOKENS = model.ORIGIN_TOKENS
+
+_OPENING = {'(': ')', '[': ']', '{': '}'}
+_CLOSING = {v: k for k, v in _OPENING.items()}
+# tokens after which a `[` starts a lambda, not a subscript
+_BEFORE_LAMBDA = frozenset({
+    '(', ',', '=', '{', '}', ';', 'return', '?', ':', '&&', '||', '!'})
+# calls that store their argument in their object
+_STORING_METHODS = frozenset({
+    'push_back', 'emplace_back', 'reset', 'insert', 'emplace', 'push',
+    'push_front', 'emplace_front', 'assign'})
+_BIND = frozenset({'bind'})
+# seconds per unit of the chrono literals and of the duration types named
+# in a period: `100ms`, `std::chrono::milliseconds(100)`
+_CHRONO_SUFFIX = {'h': 3600.0, 'min': 60.0, 's': 1.0, 'ms': 1e-3,
+                  'us': 1e-6, 'ns': 1e-9}
+_DURATION_TYPES = {
+    'hours': 3600.0, 'minutes': 60.0, 'seconds': 1.0, 'milliseconds': 1e-3,
+    'microseconds': 1e-6, 'nanoseconds': 1e-9, 'Duration': 1.0,
+    'WallDuration': 1.0, 'from_seconds': 1.0, 'duration': 1.0}
+_NUMBER = re.compile(
+    r'^(\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)'
+    r'(h|min|s|ms|us|ns|[fFlLuU]*)$')
+
+
+@dataclass
+class _Token:
+    kind: str          # libclang's TokenKind name
+    text: str
+    line: int
+    column: int
+    offset: int
+
+
+@dataclass
+class _Function:
+    """A body being read: its id, file, class and named declarations."""
+
+    id: str
+    file: str          # as libclang names it
+    relative: str      # relative to the package
+    owner: object      # the class cursor of a method, else None
+    locals: dict       # spelling -> VAR_DECL/PARM_DECL cursor
+
+
+@dataclass
+class _Loop:
+    """Stands for a loop's syntax node in a recorder.Context."""
+
+    body_start: int
+    body_end: int
+
+
+def _tokens(tu, extent):
+    return [_Token(t.kind.name, t.spelling, t.location.line,
+                   t.location.column, t.location.offset)
+            for t in tu.get_tokens(extent=extent)
+            if t.kind != ci.TokenKind.COMMENT]
+
+
+def _brackets(tokens):
+    """{index of an opening or closing bracket: index of its partner}."""
+    pairs = {}
+    stack = []
+    for i, token in enumerate(tokens):
+        if token.text in _OPENING:
+            stack.append(i)
+        elif token.text in _CLOSING:
+            # an unbalanced closing bracket (a macro's) closes nothing
+            while stack and tokens[stack[-1]].text != _CLOSING[token.text]:
+                stack.pop()
+            if stack:
+                opening = stack.pop()
+                pairs[opening] = i
+                pairs[i] = opening
+    return pairs
+
+
+def _text(tokens):
+    """Tokens joined as written, readably (a blank between two words)."""
+    text = ''
+    for token in tokens:
+        if text and (text[-1].isalnum() or text[-1] == '_') and \
+                (token.text[0].isalnum() or token.text[0] == '_'):
+            text += ' '
+        text += token.text
+    return text
+
+
+def _string_literal(tokens):
+    """The value of an argument that is string literals only, or None."""
+    if not tokens or any(t.kind != 'LITERAL' or '"' not in t.text
+                         for t in tokens):
+        return None
+    return ''.join(unquote(t.text) for t in tokens)
+
+
+def seconds_of(tokens):
+    """Seconds of a constant period written in tokens, or None.
+
+    Numbers and the four operations; a chrono literal (``100ms``); a
+    duration type around them (``std::chrono::milliseconds(100)``,
+    ``ros::Duration(0.1)``, ``Duration::from_seconds(0.5)``); a name the
+    tokens cannot value makes the period unknown.
+    """
+    texts = [t.text for t in tokens]
+    scale = 1.0
+    # Type(args) and Type<...>(args): the unit of the outermost duration
+    for i, text in enumerate(texts):
+        if text == '(' and i > 0:
+            name = texts[i - 1]
+            if name == '>':
+                depth = 0
+                for j in range(i - 1, -1, -1):
+                    depth += {'>': 1, '<': -1}.get(texts[j], 0)
+                    if depth == 0:
+                        name = texts[j - 1] if j else ''
+                        break
+            if name in _DURATION_TYPES:
+                scale = _DURATION_TYPES[name]
+                closing = _matching(texts, i)
+                if closing is None:
+                    return None
+                inner = texts[i + 1:closing]
+                # Duration(sec, nanosec)
+                if name in ('Duration', 'WallDuration') and ',' in inner:
+                    comma = inner.index(',')
+                    whole = _arithmetic(inner[:comma])
+                    nanos = _arithmetic(inner[comma + 1:])
+                    return None if whole is None or nanos is None \
+                        else whole + nanos * 1e-9
+                value = _arithmetic(inner)
+                return None if value is None else value * scale
+            break
+    return _arithmetic(texts)
+
+
+def _matching(texts, opening):
+    depth = 0
+    for i in range(opening, len(texts)):
+        depth += {'(': 1, ')': -1}.get(texts[i], 0)
+        if depth == 0:
+            return i
+    return None
+
+
+def _arithmetic(texts):
+    """Value of numbers joined by + - * / and parentheses, or None."""
+    position = 0
+
+    def number():
+        nonlocal position
+        if position >= len(texts):
+            raise ValueError
+        text = texts[position]
+        if text == '(':
+            position += 1
+            value = expression()
+            if position >= len(texts) or texts[position] != ')':
+                raise ValueError
+            position += 1
+            return value
+        if text in ('-', '+'):
+            position += 1
+            value = number()
+            return -value if text == '-' else value
+        match = _NUMBER.match(text)
+        if not match:
+            raise ValueError
+        position += 1
+        value = float(match.group(1))
+        return value * _CHRONO_SUFFIX.get(match.group(2), 1.0)
+
+    def term():
+        nonlocal position
+        value = number()
+        while position < len(texts) and texts[position] in ('*', '/'):
+            operator = texts[position]
+            position += 1
+            right = number()
+            if operator == '/' and right == 0:
+                raise ValueError
+            value = value * right if operator == '*' else value / right
+        return value
+
+    def expression():
+        nonlocal position
+        value = term()
+        while position < len(texts) and texts[position] in ('+', '-'):
+            operator = texts[position]
+            position += 1
+            right = term()
+            value = value + right if operator == '+' else value - right
+        return value
+    try:
+        value = expression()
+    except ValueError:
+        return None
+    return value if position == len(texts) else None
+
+
+def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
+    """Add the facts the tokens of the unit's function bodies show.
+
+    :param tu: the parsed unit
+    :param facts: the unit's model.TuFacts, from the AST walk
+    :param definitions: {function id: definition cursor} of the package's
+      functions the walk met
+    :param relpath: the path of a file relative to the package
+    :param ros2: whether the unit uses rclcpp (a method name's API)
+    :param resolved_calls: {(file, callee spelling): [(start, end)]}: the
+      calls the AST resolved, by their extents' offsets
+    """
+    reader = _Reader(tu, facts, relpath=relpath, ros2=ros2,
+                     resolved_calls=resolved_calls, definitions=definitions)
+    for function_id, cursor in list(definitions.items()):
+        reader.function(function_id, cursor)
+    # a function registered as a callback is a root of its own, not
+    # something the function naming it calls (the AST may have seen the
+    # name alone, in a call it could not resolve)
+    facts.calls = [c for c in facts.calls if not (
+        c.kind == 'ref' and c.callee in reader.registered)]
+
+
+class _Reader:
+    """Reads function bodies as tokens; see :func:`recover_facts`."""
+
+    def __init__(  # noqa: D107
+            self, tu, facts, *, relpath, ros2, resolved_calls, definitions):
+        self.tu = tu
+        self.definitions = definitions
+        self.facts = facts
+        self.relpath = relpath
+        self.ros2 = ros2
+        self.resolved_calls = resolved_calls
+        self.known_functions = {f.id for f in facts.functions}
+        # qualified name -> ids, short name -> functions of the unit
+        self.by_name = {}
+        self.by_short_name = {}
+        for function in facts.functions:
+            self.by_name.setdefault(function.name, []).append(function.id)
+            short = function.name.rsplit('::', 1)[-1]
+            self.by_short_name.setdefault(short, []).append(function)
+        self.rate_handles = {r.handle for r in facts.rates}
+        self.recorded = {
+            role: {f.location for f in found} for role, found in (
+                ('publisher', facts.publishers),
+                ('subscriber', facts.subscribers),
+                ('timer', facts.timers), ('service', facts.services),
+                ('publish', facts.publish_sites), ('rate', facts.rates))}
+        # (function id, lambda token offset) of lambdas passed as callbacks
+        self.consumed = set()
+        # the function ids registered as callbacks
+        self.registered = set()
+        self.tokens = []
+        self.pairs = {}
+        self.function_ = None
+        # the call being read: index, start, object, template, api, name
+        self._current = {}
+
+    # --- one function ------------------------------------------------------
+
+    def function(self, function_id, cursor):
+        body = next((c for c in cursor.get_children()
+                     if c.kind == CK.COMPOUND_STMT), None)
+        if body is None or cursor.location.file is None:
+            return
+        tokens = _tokens(self.tu, cursor.extent)
+        start = next((i for i, t in enumerate(tokens)
+                      if t.offset == body.extent.start.offset), None)
+        if start is None:
+            return  # a body made by a macro: no tokens of its own here
+        self.tokens = tokens
+        self.pairs = _brackets(tokens)
+        parent = cursor.semantic_parent
+        locals_ = {}
+        for current in walk_preorder(cursor):
+            if current.kind in (CK.VAR_DECL, CK.PARM_DECL) and \
+                    current.spelling:
+                locals_.setdefault(current.spelling, current)
+        self.function_ = _Function(
+            id=function_id, file=cursor.location.file.name,
+            relative=self.relpath(cursor.location.file.name),
+            owner=parent if parent is not None and
+            parent.kind in CLASS_KINDS else None, locals=locals_)
+        ctx = recorder.Context(function_id, owner=self.function_.owner)
+        if cursor.kind == CK.CONSTRUCTOR:
+            self._initializers(cursor, start, ctx)
+        end = self.pairs.get(start)
+        if end is not None:
+            self._scan(start + 1, end, ctx)
+
+    def _initializers(self, cursor, body_start, ctx):
+        """``: Node("talker"), pub_(nh.advertise<M>("out", 1))``."""
+        tokens = self.tokens
+        name = next((i for i, t in enumerate(tokens[:body_start])
+                     if t.text == cursor.spelling), None)
+        if name is None or name + 1 >= body_start or \
+                tokens[name + 1].text != '(':
+            return
+        i = self.pairs.get(name + 1, body_start) + 1
+        while i < body_start and tokens[i].text != ':':
+            i += 1
+        i += 1
+        while i < body_start:
+            if tokens[i].kind == 'IDENTIFIER' and i + 1 < body_start and \
+                    tokens[i + 1].text in ('(', '{'):
+                closing = self.pairs.get(i + 1, body_start)
+                self._base_initializer(i, closing, ctx)
+                self._scan(i + 2, closing, ctx, target=(i, tokens[i].text))
+                i = closing + 1
+            else:
+                i += 1
+
+    def _base_initializer(self, i, closing, ctx):
+        """``: Node("talker")``: a base class that names the node."""
+        name = self.tokens[i].text
+        qualifier = self._qualifier(i)
+        candidates = [f'{qualifier}::{name}::{name}'] if qualifier else [
+            c for c in ros_api.methods_named(name)
+            if c.endswith(f'::{name}::{name}')]
+        for candidate in candidates:
+            api = ros_api.lookup_call(candidate)
+            if api is not None and api.role == ros_api.NODE_NAME:
+                self._current = dict(
+                    index=i, start=i, object=None, template=None, api=api,
+                    name=candidate, target=None)
+                self._node_name(self._arguments(i + 1, closing), ctx)
+                return
+
+    # --- statements ----------------------------------------------------------
+
+    def _statement_end(self, i, end):
+        """Index of the last token of the statement starting at `i`."""
+        tokens = self.tokens
+        if i >= end:
+            return end - 1
+        text = tokens[i].text
+        if text == '{':
+            return self.pairs.get(i, end - 1)
+        if text in ('while', 'for', 'switch') and i + 1 < end and \
+                tokens[i + 1].text == '(':
+            return self._statement_end(self.pairs.get(i + 1, end) + 1, end)
+        if text == 'if':
+            j = i + 1
+            if j < end and tokens[j].text == 'constexpr':
+                j += 1
+            if j < end and tokens[j].text == '(':
+                last = self._statement_end(self.pairs.get(j, end) + 1, end)
+                if last + 1 < end and tokens[last + 1].text == 'else':
+                    return self._statement_end(last + 2, end)
+                return last
+        if text == 'do':
+            last = self._statement_end(i + 1, end)
+            j = last + 1
+            if j < end and tokens[j].text == 'while' and j + 1 < end:
+                j = self.pairs.get(j + 1, end - 1) + 1
+            return min(j, end - 1)
+        j = i
+        while j < end and tokens[j].text != ';':
+            j = self.pairs.get(j, j) + 1 if tokens[j].text in _OPENING \
+                else j + 1
+        return min(j, end - 1)
+
+    def _scan(self, start, end, ctx, target=None):
+        """Read tokens[start:end] as statements and expressions."""
+        tokens = self.tokens
+        i = start
+        while i < end:
+            token = tokens[i]
+            text = token.text
+            if token.kind == 'KEYWORD' and text in ('while', 'for') and \
+                    i + 1 < end and tokens[i + 1].text == '(':
+                i = self._loop(i, end, ctx)
+            elif token.kind == 'KEYWORD' and text == 'do':
+                i = self._do_loop(i, end, ctx)
+            elif token.kind == 'KEYWORD' and text in ('if', 'switch'):
+                i = self._branching(i, end, ctx)
+            elif token.kind == 'KEYWORD' and text == 'catch':
+                j = i + 1
+                if j < end and tokens[j].text == '(':
+                    j = self.pairs.get(j, end) + 1
+                last = self._statement_end(j, end)
+                with ctx.branch():
+                    self._scan(j, last + 1, ctx)
+                i = last + 1
+            elif text == '[' and (i == start or tokens[i - 1].text in
+                                  _BEFORE_LAMBDA) and i in self.pairs:
+                i = self._lambda(i, end, ctx)
+            elif token.kind == 'IDENTIFIER':
+                i = self._identifier(i, end, ctx, target)
+            else:
+                i += 1
+
+    def _loop(self, i, end, ctx):
+        tokens = self.tokens
+        closing = self.pairs.get(i + 1, end - 1)
+        last = self._statement_end(closing + 1, end)
+        loop_id = f'{self.function_.relative}@{tokens[i].offset}'
+        with ctx.loop(loop_id, _Loop(closing + 1, last)):
+            self._scan(i + 2, closing, ctx)
+            self._scan(closing + 1, last + 1, ctx)
+        return last + 1
+
+    def _do_loop(self, i, end, ctx):
+        tokens = self.tokens
+        last = self._statement_end(i + 1, end)
+        loop_id = f'{self.function_.relative}@{tokens[i].offset}'
+        condition_end = last
+        if last + 2 < end and tokens[last + 1].text == 'while':
+            condition_end = self.pairs.get(last + 2, last)
+        with ctx.loop(loop_id, _Loop(i + 1, last)):
+            self._scan(i + 1, last + 1, ctx)
+            self._scan(last + 1, condition_end + 1, ctx)
+        return condition_end + 1
+
+    def _branching(self, i, end, ctx):
+        tokens = self.tokens
+        j = i + 1
+        if j < end and tokens[j].text == 'constexpr':
+            j += 1
+        if j >= end or tokens[j].text != '(':
+            return i + 1
+        closing = self.pairs.get(j, end - 1)
+        self._scan(j + 1, closing, ctx)
+        last = self._statement_end(closing + 1, end)
+        with ctx.branch():
+            self._scan(closing + 1, last + 1, ctx)
+        if tokens[i].text == 'if' and last + 1 < end and \
+                tokens[last + 1].text == 'else':
+            other = self._statement_end(last + 2, end)
+            with ctx.branch():
+                self._scan(last + 2, other + 1, ctx)
+            last = other
+        return last + 1
+
+    def _lambda(self, i, end, ctx):
+        """A lambda: a function of its own, referenced where it is made."""
+        tokens = self.tokens
+        j = self.pairs[i] + 1
+        if j < end and tokens[j].text == '(':
+            j = self.pairs.get(j, end) + 1
+        while j < end and tokens[j].text not in ('{', ';', ')', ','):
+            j += 1
+        if j >= end or tokens[j].text != '{' or j not in self.pairs:
+            return i + 1
+        body_end = self.pairs[j]
+        lambda_id = self._lambda_id(i)
+        if lambda_id not in self.known_functions:
+            self.known_functions.add(lambda_id)
+            self.facts.functions.append(model.Function(
+                id=lambda_id,
+                name=f'lambda@{self.function_.relative}:{tokens[i].line}',
+                location=self._location(i), class_id=None))
+            if (ctx.function, tokens[i].offset) not in self.consumed:
+                self._call_edge(ctx, lambda_id, i, kind='ref')
+        self._scan(j + 1, body_end, recorder.Context(
+            lambda_id, owner=ctx.owner))
+        return body_end + 1
+
+    def _lambda_id(self, i):
+        token = self.tokens[i]
+        return f'lambda@{self.function_.relative}:{token.line}:{token.column}'
+
+    def _location(self, i):
+        return f'{self.function_.relative}:{self.tokens[i].line}'
+
+    # --- calls -------------------------------------------------------------
+
+    def _identifier(self, i, end, ctx, target):
+        """An identifier: a call, a declaration made by a call, or nothing."""
+        tokens = self.tokens
+        j = i + 1
+        template = None
+        if j < end and tokens[j].text == '<':
+            closing = self._angle_end(j, end)
+            if closing is None:
+                return i + 1
+            template = (j + 1, closing)
+            j = closing + 1
+        if j >= end or tokens[j].text not in ('(', '{') or \
+                j not in self.pairs:
+            return i + 1
+        closing = self.pairs[j]
+        if tokens[j].text == '(' or self._declares(i):
+            self._call(i, j, closing, template, ctx, target)
+        # what the arguments hold is read in the call's context
+        self._scan(j + 1, closing, ctx)
+        return closing + 1
+
+    def _angle_end(self, j, end):
+        """The `>` closing a template argument list at `j`, or None."""
+        depth = 0
+        i = j
+        while i < end:
+            text = self.tokens[i].text
+            if text == '<':
+                depth += 1
+            elif text == '>':
+                depth -= 1
+            elif text == '>>':
+                depth -= 2
+            elif text in (';', '{', '}', '&&', '||'):
+                return None
+            elif text in _OPENING:
+                i = self.pairs.get(i, i)
+            elif text in _CLOSING:
+                return None
+            if depth <= 0:
+                return i if depth == 0 else None
+            i += 1
+        return None
+
+    def _declares(self, i):
+        """Whether the identifier at `i` is a variable being declared."""
+        if i == 0:
+            return False
+        before = self.tokens[i - 1]
+        return before.kind == 'IDENTIFIER' or before.text in ('>', '*', '&') \
+            and i >= 2 and self.tokens[i - 2].kind in ('IDENTIFIER', 'KEYWORD')
+
+    def _object(self, i):
+        """(start, end) of the object expression of a member call at `i`."""
+        tokens = self.tokens
+        if i < 2 or tokens[i - 1].text not in ('.', '->'):
+            return None
+        j = i - 2
+        while j >= 0:
+            text = tokens[j].text
+            if text in (')', ']') and j in self.pairs:
+                j = self.pairs[j] - 1
+                continue
+            if tokens[j].kind == 'IDENTIFIER' or text == 'this':
+                if j >= 1 and tokens[j - 1].text in ('.', '->', '::'):
+                    j -= 2
+                    continue
+                return j, i - 1
+            return (j + 1, i - 1) if j + 1 < i - 1 else None
+        return (0, i - 1) if i > 1 else None
+
+    def _qualifier(self, i):
+        """``ns::Class`` before ``::name`` at `i`, as text, or ''."""
+        tokens = self.tokens
+        parts = []
+        j = i - 1
+        while j >= 1 and tokens[j].text == '::' and \
+                tokens[j - 1].kind == 'IDENTIFIER':
+            parts.insert(0, tokens[j - 1].text)
+            j -= 2
+        return '::'.join(parts)
+
+    def _resolved(self, i):
+        """Whether the AST resolved the call whose name is at `i`."""
+        offset = self.tokens[i].offset
+        return any(start <= offset < end for start, end in
+                   self.resolved_calls.get(
+                       (self.function_.file, self.tokens[i].text), ()))
+
+    def _call(self, i, opening, closing, template, ctx, target):
+        tokens = self.tokens
+        name = tokens[i].text
+        if self._resolved(i):
+            return
+        qualifier = self._qualifier(i)
+        object_range = self._object(i)
+        start = object_range[0] if object_range else \
+            i - 2 * len(qualifier.split('::')) if qualifier else i
+        arguments = self._arguments(opening, closing)
+        if self._declares(i):
+            # `ros::Rate r(10);`: a variable made, not a call by its name
+            if self._rate_type(i):
+                self._rate(i, arguments, ctx)
+            return
+        if name in ros_api.FORWARDING_FACTORY_NAMES and template is not None:
+            # make_shared<C>(...): C's constructor
+            made = _text(tokens[template[0]:template[1]]).split('<')[0]
+            for constructor in self._constructors(made):
+                self._call_edge(ctx, constructor, start)
+            return
+        api_name = self._api(name, qualifier, object_range, i)
+        if api_name is None:
+            if i > 0 and tokens[i - 1].text == 'new':
+                for constructor in self._constructors(
+                        f'{qualifier}::{name}' if qualifier else name):
+                    self._call_edge(ctx, constructor, start)
+            elif tokens[opening].text == '(':
+                self._package_call(i, start, object_range, qualifier, ctx)
+            return
+        api = ros_api.lookup_call(api_name)
+        handler = {
+            ros_api.PUBLISHER: self._publisher,
+            ros_api.SUBSCRIBER: self._subscriber,
+            ros_api.TIMER: self._timer,
+            ros_api.SERVICE: self._service,
+            ros_api.PUBLISH: self._publish,
+            ros_api.RATE_SLEEP: self._rate_sleep,
+            ros_api.NODE_NAME: self._node_name,
+            ros_api.RATE: self._rate,
+        }.get(api.role)
+        if handler is None:
+            return
+        self._current = dict(
+            index=i, start=start, object=object_range, template=template,
+            api=api, name=api_name, target=target)
+        handler(i, arguments, ctx) if api.role == ros_api.RATE else \
+            handler(arguments, ctx)
+
+    def _api(self, name, qualifier, object_range, i):
+        """The qualified API a token call stands for, or None."""
+        if qualifier:
+            for candidate in (f'{qualifier}::{name}',
+                              f'{qualifier}::{name}::{name}'):
+                if ros_api.lookup_call(candidate) is not None:
+                    return candidate
+            if qualifier not in ('this', 'std', 'boost'):
+                # a base class's method (`Node::create_publisher`)
+                return self._api_by_name(name)
+            return None
+        if name == 'sleep':
+            handle = self._object_handle(object_range)
+            return (ros_api.RATE_SLEEP_BY_NAME[1] if self.ros2 else
+                    ros_api.RATE_SLEEP_BY_NAME[0]) \
+                if handle in self.rate_handles else None
+        return self._api_of_object_type(name, object_range) or \
+            self._api_by_name(name)
+
+    def _api_by_name(self, name):
+        """The API of a method name, of the unit's ROS version first."""
+        return ros_api.dependent_method(name, ros2=self.ros2) or \
+            ros_api.dependent_method(name, ros2=not self.ros2)
+
+    def _api_of_object_type(self, name, object_range):
+        """The API of the class the object's declaration names."""
+        declaration = self._object_declaration(object_range)
+        if declaration is None:
+            return None
+        written = _text(_tokens(self.tu, declaration.extent))
+        written = written.split(declaration.spelling)[0] or written
+        for candidate in ros_api.methods_named(name):
+            owner = candidate.rsplit('::', 2)[-2]
+            if re.search(r'\b' + re.escape(owner) + r'\b', written):
+                return candidate
+        return None
+
+    def _arguments(self, opening, closing):
+        """[(start, end)] of the arguments between two brackets."""
+        tokens = self.tokens
+        ranges = []
+        start = opening + 1
+        i = start
+        while i < closing:
+            text = tokens[i].text
+            if text in _OPENING:
+                i = self.pairs.get(i, i) + 1
+                continue
+            if text == '<' and i > 0 and tokens[i - 1].kind == 'IDENTIFIER':
+                angle = self._angle_end(i, closing)
+                if angle is not None:
+                    i = angle + 1
+                    continue
+            if text == ',':
+                ranges.append((start, i))
+                start = i + 1
+            i += 1
+        if start < closing:
+            ranges.append((start, closing))
+        return ranges
+
+    def _argument(self, arguments, position):
+        """(start, end) of an argument by its ros_api position, or None."""
+        tokens = self.tokens
+        if position == ros_api.FIRST_STRING:
+            return next((a for a in arguments if any(
+                t.kind == 'LITERAL' and '"' in t.text
+                for t in tokens[a[0]:a[1]])), None)
+        if position == ros_api.FIRST_CALLABLE:
+            return next((a for a in arguments if self._looks_callable(a)),
+                        None)
+        if position == ros_api.FIRST_DURATION:
+            return next((a for a in arguments
+                         if seconds_of(tokens[a[0]:a[1]]) is not None), None)
+        if isinstance(position, int) and position < len(arguments):
+            return arguments[position]
+        return None
+
+    def _looks_callable(self, argument):
+        texts = [t.text for t in self.tokens[argument[0]:argument[1]]]
+        return bool(texts) and (texts[0] in ('&', '[') or 'bind' in texts)
+
+    # --- what the arguments say -------------------------------------------
+
+    def _topic(self, argument):
+        """(topic as written, is it a literal, handle of its variable)."""
+        if argument is None:
+            return None, False, None
+        tokens = self.tokens[argument[0]:argument[1]]
+        literal = _string_literal(tokens)
+        if literal is not None:
+            return literal, True, None
+        names = [t for t in tokens if t.kind == 'IDENTIFIER']
+        handle = None
+        if len(names) == 1 and all(
+                t.kind == 'IDENTIFIER' or t.text in ('this', '->', '.')
+                for t in tokens):
+            handle = self._handle(names[0].text)[0]
+        return (_text(tokens) or None), False, handle
+
+    def _msg_type(self, arguments, callback_declaration=None):
+        api = self._current['api']
+        if api.msg_type:
+            return self._table_msg_type(api.msg_type)
+        if api.type_name_arg is not None:
+            written, literal, _ = self._topic(
+                self._argument(arguments, api.type_name_arg))
+            if literal and re.fullmatch(r'\w+/\w+/\w+', written or ''):
+                return written.replace('/', '::')
+        template = self._current['template']
+        if template is not None:
+            tokens = self.tokens[template[0]:template[1]]
+            depth = 0
+            first = []
+            for token in tokens:
+                depth += {'<': 1, '>': -1, '>>': -2}.get(token.text, 0)
+                if token.text == ',' and depth == 0:
+                    break
+                first.append(token)
+            return normalize_msg_type(_text(first))
+        return self._parameter_type(callback_declaration)
+
+    def _table_msg_type(self, msg_type):
+        if not msg_type or not self.ros2 or '::msg::' in msg_type:
+            return msg_type
+        package, _, name = msg_type.partition('::')
+        return f'{package}::msg::{name}'
+
+    def _parameter_type(self, declaration):
+        """The message type of a callback's first parameter, as written."""
+        if declaration is None:
+            return None
+        for child in declaration.get_children():
+            if child.kind != CK.PARM_DECL:
+                continue
+            written = [t for t in _tokens(self.tu, child.extent)
+                       if t.text != child.spelling]
+            return normalize_msg_type(_text(written)) or \
+                normalize_msg_type(child.type.spelling)
+        return None
+
+    def _callback(self, argument, ctx):
+        """(function id, declaration cursor) of a callback argument."""
+        callback, declaration = self._callable(argument, ctx)
+        if callback is not None:
+            self.registered.add(callback)
+        return callback, declaration
+
+    def _callable(self, argument, ctx):
+        if argument is None:
+            return None, None
+        tokens = self.tokens
+        start, end = argument
+        if start < end and tokens[start].text == '[':
+            self.consumed.add((ctx.function, tokens[start].offset))
+            return self._lambda_id(start), None
+        texts = [t.text for t in tokens[start:end]]
+        if 'bind' in texts:
+            bind = texts.index('bind')
+            opening = start + bind + 1
+            if opening < end and tokens[opening].text == '(' and \
+                    opening in self.pairs:
+                inner = self._arguments(opening, self.pairs[opening])
+                if inner:
+                    return self._callable(inner[0], ctx)
+            return None, None
+        names = [(t.text, k) for k, t in enumerate(tokens[start:end])
+                 if t.kind == 'IDENTIFIER']
+        if not names or any(t.text not in ('&', '::') and
+                            t.kind != 'IDENTIFIER'
+                            for t in tokens[start:end]):
+            return None, None
+        qualified = ''.join(texts).lstrip('&')
+        return self._function_named(qualified)
+
+    def _function_named(self, qualified):
+        """(id, declaration) of the unit's function a name designates."""
+        short = qualified.rsplit('::', 1)[-1]
+        matches = [f for f in self.by_short_name.get(short, ())
+                   if f.name == qualified or
+                   f.name.endswith('::' + qualified)]
+        if len(matches) == 1:
+            return matches[0].id, self._declaration_of(matches[0].id, short)
+        # declared in a class here, defined in another unit
+        owner = self.function_.owner
+        scope = qualified.rsplit('::', 1)[0] if '::' in qualified else None
+        if owner is not None and (scope is None or scope == owner.spelling):
+            for child in owner.get_children():
+                if child.kind in FUNCTION_KINDS and child.spelling == short:
+                    return child.get_usr(), child
+        return None, None
+
+    def _constructors(self, class_name):
+        """The ids of the unit's constructors of a class."""
+        short = class_name.rsplit('::', 1)[-1]
+        return [f.id for f in self.by_short_name.get(short, ())
+                if f.name.endswith(f'{class_name}::{short}')]
+
+    def _declaration_of(self, function_id, short):
+        if function_id in self.definitions:
+            return self.definitions[function_id]
+        owner = self.function_.owner
+        if owner is not None:
+            for child in owner.get_children():
+                if child.kind in FUNCTION_KINDS and \
+                        child.get_usr() == function_id:
+                    return child
+        return None
+
+    def _handle(self, name):
+        """(id, cursor) of the variable or member a name designates.
+
+        A local or parameter of the function, else a member of its class,
+        else a name of the function (or class) the tokens alone know.
+        """
+        function = self.function_
+        if name in function.locals:
+            cursor = function.locals[name]
+            return cursor.get_usr(), cursor
+        owner = function.owner
+        if owner is not None:
+            for child in owner.get_children():
+                if child.kind in (CK.FIELD_DECL, CK.VAR_DECL) and \
+                        child.spelling == name:
+                    return child.get_usr(), child
+            return f'{TOKENS}:{owner.get_usr()}:{name}', None
+        return f'{TOKENS}:{function.id}:{name}', None
+
+    def _object_handle(self, object_range):
+        declaration_id, _ = self._object_name(object_range)
+        return declaration_id
+
+    def _object_name(self, object_range):
+        """(handle id, cursor) of the last name of an object expression."""
+        if object_range is None:
+            return None, None
+        names = [t for t in self.tokens[object_range[0]:object_range[1]]
+                 if t.kind == 'IDENTIFIER']
+        if not names:
+            return None, None
+        return self._handle(names[-1].text)
+
+    def _object_declaration(self, object_range):
+        return self._object_name(object_range)[1]
+
+    def _target(self):
+        """(id, name) of the variable or member a call's result goes to."""
+        tokens = self.tokens
+        start = self._current['start']
+        target = self._current['target']
+        j = start - 1
+        if j >= 0 and tokens[j].text == '=':
+            k = j - 1
+            while k >= 0 and tokens[k].text == ']' and k in self.pairs:
+                k = self.pairs[k] - 1
+            if k >= 0 and tokens[k].kind == 'IDENTIFIER':
+                return self._handle(tokens[k].text)[0], tokens[k].text
+            return None, None
+        if j >= 1 and tokens[j].text in ('(', '{') and \
+                tokens[j - 1].kind == 'IDENTIFIER':
+            name = tokens[j - 1].text
+            if name in _STORING_METHODS:
+                handle, _ = self._object_name(self._object(j - 1))
+                names = [t for t in tokens[(self._object(j - 1) or (j, j))[0]:
+                                           j - 2] if t.kind == 'IDENTIFIER']
+                return handle, names[-1].text if names else None
+            if self._declares(j - 1) or (target and target[0] == j - 1):
+                return self._handle(name)[0], name
+        if target is not None and target[0] == start - 2:
+            return self._handle(target[1])[0], target[1]
+        return None, None
+
+    def _namespace(self):
+        """The NodeHandle (or namespace marker) a create call was made on."""
+        object_range = self._current['object']
+        if object_range is None:
+            return None
+        texts = [t.text for t in self.tokens[object_range[0]:object_range[1]]]
+        for text in texts:
+            api = ros_api.lookup_call(f'nodelet::Nodelet::{text}')
+            if api is not None and api.role == ros_api.PRIVATE_HANDLE:
+                return '~'
+            if api is not None and api.role == ros_api.PUBLIC_HANDLE:
+                return ''
+        return self._object_handle(object_range)
+
+    # --- facts -------------------------------------------------------------
+
+    def _here(self):
+        return self._location(self._current['start'])
+
+    def _is_recorded(self, role):
+        return self._here() in self.recorded[role]
+
+    def _endpoint(self, arguments, ctx, callback_declaration=None):
+        api = self._current['api']
+        topic, literal, topic_handle = self._topic(
+            self._argument(arguments, api.name_arg))
+        handle, handle_name = self._target()
+        return dict(
+            function=ctx.function, api=ros_api.api_label(self._current['name']),
+            topic=topic, topic_is_literal=literal,
+            msg_type=self._msg_type(arguments, callback_declaration),
+            handle=handle, location=self._here(), nh=self._namespace(),
+            topic_handle=topic_handle, origin=TOKENS), handle_name
+
+    def _publisher(self, arguments, ctx):
+        if self._is_recorded('publisher'):
+            return
+        common, handle_name = self._endpoint(arguments, ctx)
+        if common['topic'] is None:
+            return  # a constructor without a name: init() gives it later
+        self.facts.publishers.append(model.PublisherFact(
+            handle_name=handle_name, **common))
+
+    def _subscriber(self, arguments, ctx):
+        if self._is_recorded('subscriber'):
+            return
+        api = self._current['api']
+        callback, declaration = self._callback(
+            self._argument(arguments, api.callback_arg), ctx) \
+            if api.callback_arg is not None else (None, None)
+        common, _ = self._endpoint(arguments, ctx, declaration)
+        if common['topic'] is None:
+            return
+        self.facts.subscribers.append(model.SubscriberFact(
+            callback=callback, **common))
+
+    def _timer(self, arguments, ctx):
+        if self._is_recorded('timer'):
+            return
+        api = self._current['api']
+        callback, _ = self._callback(
+            self._argument(arguments, api.callback_arg), ctx)
+        period = self._argument(arguments, api.period_arg)
+        tokens = self.tokens[period[0]:period[1]] if period else []
+        seconds = seconds_of(tokens)
+        if seconds is not None:
+            seconds *= api.period_unit
+        self.facts.timers.append(model.TimerFact(
+            function=ctx.function, api=ros_api.api_label(self._current['name']),
+            callback=callback, period=_text(tokens),
+            rate_hz=recorder.rate_of_period(seconds), location=self._here(),
+            origin=TOKENS))
+
+    def _service(self, arguments, ctx):
+        if self._is_recorded('service'):
+            return
+        api = self._current['api']
+        name, _, _ = self._topic(self._argument(arguments, api.name_arg))
+        callback, _ = self._callback(
+            self._argument(arguments, api.callback_arg), ctx)
+        self.facts.services.append(model.ServiceFact(
+            function=ctx.function, api=self._current['name'], name=name,
+            callback=callback, location=self._here()))
+
+    def _publish(self, arguments, ctx):
+        if self._is_recorded('publish'):
+            return
+        self.facts.publish_sites.append(model.PublishSite(
+            function=ctx.function, api=self._current['name'],
+            handle=self._object_handle(self._current['object']),
+            location=self._here(), loops=ctx.loop_ids(), origin=TOKENS))
+
+    def _node_name(self, arguments, ctx):
+        api = self._current['api']
+        name, literal, _ = self._topic(self._argument(arguments, api.name_arg))
+        if not literal or any(f.location == self._here()
+                              for f in self.facts.node_names):
+            return
+        self.facts.node_names.append(model.NodeNameFact(
+            function=ctx.function, name=name, namespace=None,
+            location=self._here()))
+
+    def _rate_type(self, i):
+        """Whether the declaration at `i` is of an adaptive-sleep class."""
+        j = i - 1
+        while j >= 0 and self.tokens[j].text in ('*', '&'):
+            j -= 1
+        if j < 0 or self.tokens[j].kind != 'IDENTIFIER':
+            return False
+        api = ros_api.lookup_call(
+            self._type_before(j) + '::' + self.tokens[j].text)
+        return api is not None and api.role == ros_api.RATE
+
+    def _type_before(self, j):
+        qualifier = self._qualifier(j)
+        name = self.tokens[j].text
+        return f'{qualifier}::{name}' if qualifier else name
+
+    def _rate(self, i, arguments, ctx):
+        """``ros::Rate r(10);``: a rate object and its rate."""
+        location = self._location(i)
+        handle, _ = self._handle(self.tokens[i].text) if self._declares(i) \
+            else self._target()
+        if handle is None or handle in self.rate_handles:
+            return
+        tokens = self.tokens[arguments[0][0]:arguments[0][1]] \
+            if arguments else []
+        hz = _arithmetic([t.text for t in tokens])
+        self.rate_handles.add(handle)
+        self.facts.rates.append(model.RateObject(
+            handle=handle, rate_hz=recorder.round_rate(hz),
+            expression=_text(tokens), location=location))
+
+    def _rate_sleep(self, arguments, ctx):
+        i = self._current['index']
+        handle = self._object_handle(self._current['object'])
+
+        def continue_before(loop):
+            return any(t.text == 'continue'
+                       for t in self.tokens[loop.body_start:i])
+        found = recorder.paced_loop(
+            ctx, continue_before=continue_before,
+            made_in_loop=lambda loop: False)
+        if found is None:
+            return
+        loop_id, loop = found
+        if any(p.loop == loop_id for p in self.facts.paced_loops):
+            return
+        recorder.record_paced_loop(
+            self.facts, ctx, loop_id=loop_id, clock=handle,
+            loop_location=self._location(loop.body_start),
+            sleep_location=self._location(i))
+
+    def _package_call(self, i, start, object_range, qualifier, ctx):
+        """A call of one of the unit's functions, by its name."""
+        name = self.tokens[i].text
+        callee = None
+        if object_range is None or all(
+                t.text in ('this', '->') for t in
+                self.tokens[object_range[0]:object_range[1]]):
+            callee, _ = self._function_named(
+                f'{qualifier}::{name}' if qualifier else name)
+        else:
+            methods = [f for f in self.by_short_name.get(name, ())
+                       if f.class_id is not None]
+            if len(methods) == 1:
+                callee = methods[0].id
+        if callee is not None and callee != ctx.function:
+            self._call_edge(ctx, callee, start)
+
+    def _call_edge(self, ctx, callee, i, kind='call'):
+        location = self._location(i)
+        if any(c.caller == ctx.function and c.callee == callee and
+               c.location == location for c in self.facts.calls):
+            return
+        self.facts.calls.append(model.Call(
+            caller=ctx.function, callee=callee, location=location,
+            loops=ctx.loop_ids(), kind=kind))
