@@ -354,6 +354,8 @@ class TuFacts:
     errors: int = 0
     package_errors: int = 0
     repair_rounds: int = 0
+    # [rule id, kind, name or place] of the unit's repairs (model mode)
+    repairs: List[List[str]] = field(default_factory=list)
 
     def to_dict(self):  # noqa: D102
         return asdict(self)
@@ -567,6 +569,8 @@ class UnitCoverage:
     errors: int = 0            # parse errors left, in all
     package_errors: int = 0    # of which in the package's own files
     repair_rounds: int = 0     # parses after the first (model mode)
+    # [rule id, kind, name or place] of the unit's repairs (model mode)
+    repairs: List[List[str]] = field(default_factory=list)
 
 
 @dataclass

@@ -69,8 +69,11 @@ class Workspace:
         return run_colcon(list(args), cwd=self.root, check=check)
 
 
-def analyse_source(root, package, text, *, file=None):
+def analyse_source(root, package, text, *, file=None, repair='always'):
     """Analyse one C++ file as a package of its own, unbuilt (model mode).
+
+    Repairs are made wherever the unit has errors (`repair`): the tests of
+    what a repair declares need them whether or not the facts do.
 
     :param root: a scratch directory
     :param package: the package name (its directory under ``root``)
@@ -85,7 +88,8 @@ def analyse_source(root, package, text, *, file=None):
     source.write_text(text)
     return analysis.analyze_package(
         name=package, path=str(path), build_base=str(Path(root) / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(path)])
+        jobs=1, header_mode='model', workspace_package_dirs=[str(path)],
+        repair=repair)
 
 
 def run_colcon(args, *, cwd, check=False, timeout=BUILD_TIMEOUT_S, env=None):

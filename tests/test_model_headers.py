@@ -18,8 +18,8 @@ from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.cpp import model_mode
-from colcon_rsia.frontend.cpp.model_mode import repair
 from colcon_rsia.frontend.cpp.model_mode import source_names
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
@@ -786,8 +786,8 @@ def _assert_parses_clean(tmp_path, code, repairs=()):
     stub_dir = tmp_path / 'stubs'
     arguments = _prepare(package, source, stub_dir)
     if repairs:
-        header = repair.repair_header(str(stub_dir), str(source))
-        repair.add_repairs(header, str(source), set(repairs))
+        header = store.repair_header(str(stub_dir), str(source))
+        store.add_repairs(header, str(source), set(repairs))
         arguments = ['-include', header] + arguments
     tu = _parse(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
@@ -1013,8 +1013,8 @@ def test_a_repair_of_another_kind_hides_the_unknown_librarys_declaration(
     arguments = _prepare(package, source, stub_dir)
     unknown = (stub_dir / 'rsia_model' / 'unknown' / 'geo_utils.h').read_text()
     assert 'extern ::rsia_model::Any to_msg;' in unknown
-    header = repair.repair_header(str(stub_dir), str(source))
-    repair.add_repairs(header, str(source), {('function', 'geo_utils::to_msg')})
+    header = store.repair_header(str(stub_dir), str(source))
+    store.add_repairs(header, str(source), {('function', 'geo_utils::to_msg')})
     tu = _parse(file=source, arguments=arguments + ['-include', header],
                 directory=package)
     assert [d for d in cpp.parse_diagnostics(tu) if 'redefinition' in d] == []

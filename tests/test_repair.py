@@ -5,7 +5,9 @@
 import re
 
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend.cpp.model_mode import repair
+from colcon_rsia.frontend.cpp.model_mode.recovery import kinds
+from colcon_rsia.frontend.cpp.model_mode.recovery import rules
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.frontend.cpp.walker import _Walker
 from colcon_rsia.package import analysis
 from conftest import analyse_source
@@ -81,11 +83,13 @@ def _package(tmp_path):
     return package
 
 
-def _analyze(package, build_base):
+def _analyze(package, build_base, repair=analysis.REPAIR_ALWAYS):
+    # the tests of what repairs declare have them made whether or not the
+    # facts need them (see test_repair_only_when_it_pays)
     return analysis.analyze_package(
         name='acme_vision', path=str(package), build_base=str(build_base),
         jobs=1, header_mode='model',
-        workspace_package_dirs=[str(package)])
+        workspace_package_dirs=[str(package)], repair=repair)
 
 
 def test_model_mode_repairs_what_unknown_libraries_leave_undeclared(
@@ -377,7 +381,7 @@ def _lines(text):
      {('header', 'rclcpp/rclcpp.hpp')}),
 ])
 def test_repairs_from_one_diagnostic(message, line, column, expected):
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, column)], _lines(line))
     assert found == expected
 
@@ -394,7 +398,7 @@ def test_repairs_from_one_diagnostic(message, line, column, expected):
 def test_an_undeclared_variable_is_repaired_unless_the_code_declares_it(
         code, expected):
     line = code.split('\n').index('use(scan);') + 1
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [("use of undeclared identifier 'scan'", 'a.cpp', line, 5)],
         lambda file, number: code.split('\n')[number - 1], texts=[code])
     assert found == expected
@@ -420,7 +424,7 @@ def test_a_template_argument_the_code_declares_a_variable_is_a_value():
         ("no member named 'box' in namespace 'bg::model'", 5, 26):
             ('template', 'bg::model::box')}
     for (message, line, column), expected in messages.items():
-        found = repair.repairs_from_diagnostics(
+        found = rules.repairs_from_diagnostics(
             [(message, 'a.cpp', line, column)], _lines(code), texts=[code])
         assert found == {expected}, message
 
@@ -430,10 +434,10 @@ def test_the_packages_own_namespace_is_repaired_where_used_first():
     # library names it before any of the package's code opens it
     code = 'using autoware::kalman_filter::KalmanFilter;\n' \
         'namespace autoware::tracker { class Tracker {}; }\n'
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [("use of undeclared identifier 'autoware'", 'a.h', 1, 7)],
         _lines(code.split('\n')[0]), texts=[code],
-        declared=repair.declared_names([code]))
+        declared=kinds.declared_names([code]))
     assert ('namespace', 'autoware') in found
     # nothing of the package's own is declared again
     assert not {name for _, name in found if 'Tracker' in name}
@@ -443,7 +447,7 @@ def test_a_function_brought_in_by_a_using_declaration_is_declared_there():
     # `using geo::calc;` alone looks like a value; the call that failed for
     # it shows a function, which a global declaration would conflict with
     lines = {1: 'using geo::calc;', 2: 'double d = calc(a, b);'}
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [("no member named 'calc' in namespace 'geo'", 'a.cpp', 1, 12),
          ("use of undeclared identifier 'calc'", 'a.cpp', 2, 12)],
         lambda file, line: lines[line])
@@ -455,13 +459,13 @@ def test_a_member_of_an_unknown_librarys_class_goes_into_its_repair():
     # the class without it: the repair declares the class with the member
     message = "no type named 'ConstPtr' in 'pcl::PointCloud<pcl::PointXYZ>'"
     line = _lines('pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud;')
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, 34)], line,
         stand_in=lambda relative: relative == 'rsia_model/unknown/pcl.h')
     assert found == {('member-type', 'pcl::PointCloud::ConstPtr'),
                      ('template', 'pcl::PointCloud')}
     # a class of a library we know nothing of is not declared again
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         [(message, 'a.cpp', 1, 34)], line, stand_in=lambda relative: False) \
         == {('member-type', 'pcl::PointCloud::ConstPtr')}
 
@@ -469,9 +473,9 @@ def test_a_member_of_an_unknown_librarys_class_goes_into_its_repair():
 def test_a_scope_inside_a_repaired_class_is_a_nested_type(tmp_path):
     # `Estimator::Direction::MAXIMIZE`: clang says Direction is no scope
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('type', 'Estimator'), ('namespace', 'Estimator::Direction')})
-    assert repair.read_repairs(str(header)) == {
+    assert store.read_repairs(str(header)) == {
         ('type', 'Estimator'), ('member-type', 'Estimator::Direction')}
     assert 'using Direction = ::rsia_model::Unknown;' in header.read_text()
 
@@ -480,10 +484,10 @@ def test_a_member_through_a_using_declared_class_is_the_classs(tmp_path):
     # `using ns::Estimator;` then `Estimator::Direction::MAXIMIZE`: an
     # earlier round took Direction for a value of ns::Estimator
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('type', 'ns::Estimator'), ('member', 'ns::Estimator::Direction'),
         ('namespace', 'Estimator::Direction')})
-    assert repair.read_repairs(str(header)) == {
+    assert store.read_repairs(str(header)) == {
         ('type', 'ns::Estimator'), ('member-type', 'ns::Estimator::Direction')}
     text = header.read_text()
     assert 'using Direction = ::rsia_model::Unknown;' in text
@@ -493,7 +497,7 @@ def test_a_member_through_a_using_declared_class_is_the_classs(tmp_path):
 def test_constant_members_of_a_repaired_class_are_distinct_ints(tmp_path):
     # TensorRT's `case (nvinfer1::CalibrationAlgoType::kLEGACY_...):`
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('type', 'trt::Algo'), ('member', 'trt::Algo::kLEGACY'),
         ('member', 'trt::Algo::kENTROPY'), ('member', 'trt::Algo::MAX_N'),
         ('member', 'trt::Algo::instance')})
@@ -506,7 +510,7 @@ def test_constant_members_of_a_repaired_class_are_distinct_ints(tmp_path):
 
 def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('type', 'walls::VirtualWall'), ('type', 'walls::VirtualWalls'),
         ('type', 'walls::Status')})
     text = header.read_text()
@@ -515,35 +519,9 @@ def test_a_plural_beside_its_singular_is_a_vector_of_it(tmp_path):
     assert 'struct Status :' in text  # no `Statu` to be a vector of
 
 
-def test_opencvs_default_point_is_one_class_under_both_names(tmp_path):
-    # declared with cv::Point, defined with cv::Point2i: OpenCV's same class
-    summary, unit = _analyze_one_unit(tmp_path, (
-        '#include <opencv2/core.hpp>\n'
-        'class CostMap\n'
-        '{\n'
-        'public:\n'
-        '  cv::Point to_pixel(float x, float y) const;\n'
-        '  cv::Size2i size_;\n'
-        '};\n'
-        'cv::Point2i CostMap::to_pixel(float x, float y) const\n'
-        '{\n'
-        '  cv::Size area = size_;\n'
-        '  return cv::Point2i(x * area.width, y);\n'
-        '}\n'))
-    assert unit.package_errors == 0, summary.diagnostics
-    header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
-        ('type', 'cv::Point'), ('type', 'cv::Point2i'), ('type', 'cv::Rect2i'),
-        ('type', 'cv::Point2f')})
-    text = header.read_text()
-    assert 'using Point2i = Point;' in text
-    # no cv::Rect to be; and cv::Point2f is a point of floats
-    assert 'struct Rect2i :' in text and 'struct Point2f :' in text
-
-
 def test_a_repaired_class_has_pointer_types_of_its_own(tmp_path):
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('template', 'pcl::PointCloud'), ('member-type', 'pcl::PointCloud::Ptr'),
         ('member-type', 'pcl::PointCloud::iterator')})
     text = header.read_text()
@@ -551,7 +529,7 @@ def test_a_repaired_class_has_pointer_types_of_its_own(tmp_path):
     assert text.count('using Ptr = ') == 1
     assert 'using Ptr = ::rsia_model::UnknownPointer<PointCloud>;' in text
     assert 'using iterator = ::rsia_model::Unknown;' in text
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('template', 'rviz_common::RosTopicDisplay'),
         ('member-scope', 'rviz_common::RosTopicDisplay::RTDClass'),
         ('member', 'rviz_common::RosTopicDisplay::RTDClass'),
@@ -572,11 +550,11 @@ def test_a_message_named_before_its_header_is_included_from_the_stand_ins():
     # catch-all class would tie rclcpp::Time's conversion to the message
     # with its own constructor from anything)
     for exists in (True, False):
-        assert repair.repairs_from_diagnostics(
+        assert rules.repairs_from_diagnostics(
             diagnostics, line, stand_in=lambda header: exists) == {
                 ('header', 'geometry_msgs/msg/polygon.hpp')}
     # no stand-ins at all: declare the type
-    assert repair.repairs_from_diagnostics(diagnostics, line) == {
+    assert rules.repairs_from_diagnostics(diagnostics, line) == {
         ('type', 'geometry_msgs::msg::Polygon')}
 
 
@@ -584,7 +562,7 @@ def test_a_new_namespace_gets_what_the_code_uses_of_it():
     text = ('karto::Pose2 pose;\n'
             'karto::LaserRangeFinder * laser = karto::make(3);\n'
             'int n = karto::MAX_RANGE + karto::Grid::Size;\n')
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [("use of undeclared identifier 'karto'", 'a.cpp', 1, 1)],
         _lines(text), texts=[text])
     assert found == {
@@ -596,8 +574,8 @@ def test_a_new_namespace_gets_what_the_code_uses_of_it():
 
 def test_names_the_package_declares_are_never_repaired():
     header = 'namespace karto {\nclass Transform\n{\n};\n}\n'
-    declared = repair.declared_names([header])
-    found = repair.repairs_from_diagnostics(
+    declared = kinds.declared_names([header])
+    found = rules.repairs_from_diagnostics(
         [("no type named 'Transform' in namespace 'karto'", 'a.cpp', 1, 8),
          ("no type named 'Transform' in namespace 'acme'", 'a.cpp', 2, 7)],
         _lines('karto::Transform a;\nacme::Transform b;'), declared=declared)
@@ -663,7 +641,8 @@ def test_unresolved_callees_are_no_crash(tmp_path):
         '}\n')
     summary = analysis.analyze_package(
         name='pkg', path=str(package), build_base=str(tmp_path / 'build'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)],
+        repair=analysis.REPAIR_ALWAYS)
     assert not [d for d in summary.diagnostics if 'internal error' in d]
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['out']
@@ -794,7 +773,7 @@ def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
 ])
 def test_camel_case_names_in_a_namespace_by_their_use(line, expected):
     namespace = expected[1].split('::')[0]
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [(f"use of undeclared identifier '{namespace}'", 'a.cpp', 1,
           line.index(namespace) + 1)], _lines(line), texts=[line])
     assert found == {('namespace', namespace), expected}
@@ -1053,20 +1032,20 @@ def test_a_global_function_gives_way_to_the_qualified_one(tmp_path):
     # `f(x)` failed before `using ns::f;` took effect (a global f), then
     # the using-declaration (ns::f): both would conflict at the using
     header = tmp_path / 'unit.h'
-    repair.add_repairs(str(header), 'unit.cpp', {
+    store.add_repairs(str(header), 'unit.cpp', {
         ('function', 'calcOffsetPose')})
-    repair.add_repairs(str(header), 'unit.cpp', {
+    store.add_repairs(str(header), 'unit.cpp', {
         ('namespace', 'motion_utils'),
         ('function', 'motion_utils::calcOffsetPose')})
-    assert repair.read_repairs(str(header)) == {
+    assert store.read_repairs(str(header)) == {
         ('namespace', 'motion_utils'),
         ('function', 'motion_utils::calcOffsetPose')}
     # a class's function beside it (Qt's connect(...) in a derived class
     # and QObject::connect(...)) leaves the global one
-    repair.add_repairs(str(header), 'unit.cpp', {
+    store.add_repairs(str(header), 'unit.cpp', {
         ('function', 'connect'), ('function', 'QObject::connect')})
     assert {('function', 'connect'), ('function', 'QObject::connect')} <= \
-        repair.read_repairs(str(header))
+        store.read_repairs(str(header))
 
 
 def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):
@@ -1074,10 +1053,10 @@ def test_a_global_class_gives_way_to_the_qualified_one(tmp_path):
     # class), round 2 the class itself: under `using namespace acme::vehicle`
     # both would be found and every use ambiguous
     header = tmp_path / 'unit.h'
-    repair.add_repairs(str(header), 'unit.cpp', {('type', 'VehicleInfo')})
-    repair.add_repairs(str(header), 'unit.cpp', {
+    store.add_repairs(str(header), 'unit.cpp', {('type', 'VehicleInfo')})
+    store.add_repairs(str(header), 'unit.cpp', {
         ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')})
-    assert repair.read_repairs(str(header)) == {
+    assert store.read_repairs(str(header)) == {
         ('namespace', 'acme::vehicle'), ('type', 'acme::vehicle::VehicleInfo')}
 
 
@@ -1179,25 +1158,25 @@ def test_the_packages_own_endpoint_functions_are_no_ros_call_sites():
 def test_a_member_used_with_template_arguments_is_a_member_template(
         tmp_path):
     header = tmp_path / 'unit.h'
-    repair.ensure_repair_header(str(header), 'src/unit.cpp')
+    store.ensure_repair_header(str(header), 'src/unit.cpp')
     line = _lines('auto r = lanelet.regulatoryElementsAs<Light>();')
     # first use: declared as a member of the unknown class (a value)
-    first = repair.repairs_from_diagnostics(
+    first = rules.repairs_from_diagnostics(
         [("unknown type name 'Lanelet'", 'a.cpp', 1, 1),
          ("no member named 'size' in 'lanelet::Lanelet'", 'a.cpp', 1, 1)],
         line)
-    assert repair.add_repairs(str(header), 'src/unit.cpp', first | {
+    assert store.add_repairs(str(header), 'src/unit.cpp', first | {
         ('type', 'lanelet::Lanelet')})
     # clang then says it is no template: it becomes a member template
-    second = repair.repairs_from_diagnostics(
+    second = rules.repairs_from_diagnostics(
         [("'size' does not name a template but is followed by template "
           'arguments', 'a.cpp', 1, 18)], line)
     assert second == {('template-use', 'size')}
-    assert repair.add_repairs(str(header), 'src/unit.cpp', second)
+    assert store.add_repairs(str(header), 'src/unit.cpp', second)
     assert ('member-template', 'lanelet::Lanelet::size') in \
-        repair.read_repairs(str(header))
+        store.read_repairs(str(header))
     # written as a template in a first go when the use shows it
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         [("no member named 'regulatoryElementsAs' in 'lanelet::Lanelet'",
           'a.cpp', 1, 19)], line) == {
         ('member-template', 'lanelet::Lanelet::regulatoryElementsAs')}
@@ -1389,7 +1368,8 @@ def test_call_sites_of_a_helper_defined_in_another_file(tmp_path):
         (package / relative).write_text(text)
     summary = analysis.analyze_package(
         name='acme_watch', path=str(package), build_base=str(tmp_path / 'b'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)],
+        repair=analysis.REPAIR_ALWAYS)
     recorded = sorted((c.file, c.line, c.role, c.recorded)
                       for c in summary.coverage.call_sites)
     assert recorded == [
@@ -1423,7 +1403,7 @@ def test_a_macro_called_in_a_macros_body_is_a_function_like_macro():
     code = ('#define REGISTER_STATE(ID, VALUE) REGISTER_ENTITY(ID, VALUE)\n'
             'void f() { REGISTER_STATE("state", x); }\n')
     lines = dict(enumerate(code.split('\n'), start=1))
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [("use of undeclared identifier 'REGISTER_ENTITY'", 'a.cpp', 2, 12)],
         lambda file, line: lines[line], texts=[code])
     assert found == {('macro-value', 'REGISTER_ENTITY')}
@@ -1435,7 +1415,7 @@ def test_a_namespace_alias_is_repaired_through_its_target():
     # with the alias once boost::geometry is declared
     code = 'namespace bg = boost::geometry;\ndouble d = bg::distance(a, b);\n'
     lines = dict(enumerate(code.split('\n'), start=1))
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [('expected namespace name', 'a.cpp', 1, 16),
          ("use of undeclared identifier 'bg'", 'a.cpp', 2, 12)],
         lambda file, line: lines[line], texts=[code])
@@ -1449,7 +1429,7 @@ def test_an_alias_taken_for_a_type_is_its_namespace():
     code = ('namespace pt = boost::property_tree;\n'
             'void f() { pt::ptree tree; }\n')
     lines = dict(enumerate(code.split('\n'), start=1))
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [('expected namespace name', 'a.cpp', 1, 16),
          ("unknown type name 'pt'", 'a.cpp', 2, 12)],
         lambda file, line: lines[line], texts=[code])
@@ -1464,7 +1444,7 @@ def test_the_namespaces_inside_a_repaired_one_are_repaired_at_once():
     code = ('namespace bg = boost::geometry;\n'
             'using Point = bg::model::d2::point_xy<double>;\n')
     lines = dict(enumerate(code.split('\n'), start=1))
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [('expected namespace name', 'a.cpp', 1, 16)],
         lambda file, line: lines[line], texts=[code])
     assert {('namespace', 'boost::geometry'),
@@ -1479,7 +1459,7 @@ def test_a_templates_arguments_past_its_line_still_shape_it():
             '  bg::radian, double, 2, 2>\n'
             '  rotation(-angle);\n')
     lines = dict(enumerate(code.split('\n'), start=1))
-    found = repair.repairs_from_diagnostics(
+    found = rules.repairs_from_diagnostics(
         [('expected namespace name', 'a.cpp', 1, 16)],
         lambda file, line: lines[line], texts=[code])
     assert ('template:ttvv',
@@ -1543,7 +1523,8 @@ def test_calls_on_a_value_of_an_unknown_base_class_are_known_by_name(
     summary = analysis.analyze_package(
         name='acme_panels', path=str(package),
         build_base=str(tmp_path / 'build' / 'acme_panels'), jobs=1,
-        header_mode='model', workspace_package_dirs=[str(package)])
+        header_mode='model', workspace_package_dirs=[str(package)],
+        repair=analysis.REPAIR_ALWAYS)
 
     [unit] = summary.coverage.units
     assert unit.package_errors == 0, summary.diagnostics
@@ -1590,7 +1571,7 @@ def test_a_specialisation_of_an_unknown_function_template_is_repaired(
     [header] = (tmp_path / 'build' / 'acme_vision').rglob(
         'repair/detector_node_cpp_*.h')
     assert ('specialized-function', 'vendor_stats::customRegister') in \
-        repair.read_repairs(str(header))
+        store.read_repairs(str(header))
 
 
 def test_streams_value_member_templates_and_casts_to_a_field_type(tmp_path):
@@ -1654,12 +1635,12 @@ def test_a_name_among_a_macros_arguments_on_a_later_line():
     diagnostics = [(
         "use of undeclared identifier 'cudaMemcpyHostToDevice'", 'a.cu', 1,
         3)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == {
         ('object', 'cudaMemcpyHostToDevice')}
     # spelled in the body of a macro: no later line of the call has it
     lines = _lines('  LOG_FAILURE(code);\n  next(code);')
     diagnostics = [("use of undeclared identifier 'logging'", 'a.cpp', 1, 3)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == {
         ('namespace', 'logging')}
 
 
@@ -1688,8 +1669,6 @@ def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
         '  typedef pcl::Registration<PointT, PointT> Base;\n'
         '  typedef typename Base::PointCloudSource Source;\n'
         '  typedef typename Source::Ptr SourcePtr;\n'
-        '  std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<'
-        'Eigen::Matrix4f>> poses_;\n'
         'public:\n'
         '  pcl::PointCloud<PointT> cloud(const SourcePtr & source) const\n'
         '  {\n'
@@ -1706,7 +1685,6 @@ def test_point_cloud_filters_cuda_calls_and_eigen_containers_parse(tmp_path):
         '  CHECK_CUDA_ERROR(cudaMemcpy(\n'
         '    device, host.data(),\n'
         '    host.size() * sizeof(float), cudaMemcpyHostToDevice));\n'
-        '  for (Eigen::Index i = 0; i < 3; ++i) {}\n'
         '  stamped(now);\n'
         '  auto result = client.async_send_request(\n'
         '    std::make_shared<std_srvs::srv::Trigger::Request>(),\n'
@@ -1748,14 +1726,14 @@ def test_a_module_macros_body_is_a_function(tmp_path):
     assert [p.topic for p in node.publishers] == ['gain']
     lines = _lines('PYBIND11_MODULE(acme_tuner, m)\n{')
     diagnostics = [('expected unqualified-id', 'a.cpp', 1, 1)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == {
         ('macro-function', 'PYBIND11_MODULE')}
     # without a body, still a statement-like declaration
     lines = _lines(
         'BOOST_GEOMETRY_REGISTER_POINT_2D(P, double, cs, x, y)\n'
         'namespace acme {')
     diagnostics = [('expected unqualified-id', 'a.cpp', 1, 1)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == set()
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == set()
 
 
 def test_headers_beside_a_subdirectorys_sources_are_found(tmp_path):
@@ -1854,13 +1832,13 @@ def test_a_name_that_ends_its_line_is_known_by_the_next_one():
         '                     : Qt::ArrowCursor);')
     diagnostics = [("no member named 'ForbiddenCursor' in namespace 'Qt'",
                     'a.cpp', 1, 29)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == {
         ('constant', 'Qt::ForbiddenCursor')}
     # and a type at the end of its line stays one
     lines = _lines('  std::unique_ptr<acme::Device>\n    device_;')
     diagnostics = [("no member named 'Device' in namespace 'acme'",
                     'a.cpp', 1, 25)]
-    assert repair.repairs_from_diagnostics(diagnostics, lines) == {
+    assert rules.repairs_from_diagnostics(diagnostics, lines) == {
         ('type', 'acme::Device')}
 
 
@@ -1869,7 +1847,7 @@ def test_an_attribute_macro_before_a_class_name_is_empty():
     # `struct EIGEN_ALIGN16`
     diagnostics = [("variable has incomplete type 'struct EIGEN_ALIGN16'",
                     'a.cpp', 1, 8)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines('struct EIGEN_ALIGN16 LivoxPoint')) == {
             ('macro-empty', 'EIGEN_ALIGN16')}
 
@@ -1887,33 +1865,17 @@ def test_a_member_of_an_unknown_base_multiplied_is_no_local():
     for name, line, column in (('resolution_', 4, 41), ('origin_x_', 5, 36)):
         diagnostics = [(f"use of undeclared identifier '{name}'", 'a.cpp',
                         line, column)]
-        assert repair.repairs_from_diagnostics(
+        assert rules.repairs_from_diagnostics(
             diagnostics, lines, texts=[code]) == {('object', name)}
     code = 'void f()\n{\n  Cell * cell_ = find();\n  use(cell_);\n}\n'
     diagnostics = [("use of undeclared identifier 'cell_'", 'a.cpp', 4, 7)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines(code), texts=[code]) == set()
-
-
-def test_ids_indices_and_allocators_of_libraries_are_the_real_kinds(tmp_path):
-    # lanelet::Id is an int64_t (ids go into std::vector<int64_t>),
-    # Eigen::Index counts a loop, Eigen::aligned_allocator is an allocator
-    # std::vector takes
-    header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
-        ('type', 'lanelet::Id'), ('type', 'lanelet::Ids'),
-        ('type', 'Eigen::Index'), ('template', 'Eigen::aligned_allocator')})
-    text = header.read_text()
-    assert 'using Id = std::int64_t;' in text
-    assert 'using Ids = std::vector<Id>;' in text
-    assert 'using Index = std::ptrdiff_t;' in text
-    assert 'template <class RsiaT> using aligned_allocator = ' \
-        'std::allocator<RsiaT>;' in text
 
 
 def test_a_repaired_class_is_hashed_unless_the_package_hashes_it(tmp_path):
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('type', 'boost::uuids::uuid'),
         ('type', 'lanelet::routing::LaneletPath'),
         ('no-hash', 'lanelet::routing::LaneletPath'), ('literal', '_a')})
@@ -1933,7 +1895,7 @@ def test_a_static_member_template_of_a_repaired_namespaces_class():
             '    map, "elevation", image);\n'
             '}\n')
     diagnostics = [("use of undeclared identifier 'grid_map'", 'a.cpp', 3, 3)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines(code), texts=[code]) == {
             ('namespace', 'grid_map'),
             ('type', 'grid_map::GridMapCvConverter'),
@@ -1944,11 +1906,11 @@ def test_a_value_used_with_template_arguments_becomes_a_function(tmp_path):
     # `using boost::geometry::return_centroid;` read as a value, then
     # `return_centroid<Point2d>(polygon)`
     header = tmp_path / 'repair.h'
-    repair.add_repairs(str(header), 'a.cpp', {
+    store.add_repairs(str(header), 'a.cpp', {
         ('object', 'boost::geometry::return_centroid')})
-    assert repair.add_repairs(str(header), 'a.cpp', {
+    assert store.add_repairs(str(header), 'a.cpp', {
         ('template-use', 'return_centroid')})
-    assert repair.read_repairs(str(header)) == {
+    assert store.read_repairs(str(header)) == {
         ('function', 'boost::geometry::return_centroid')}
 
 
@@ -1961,18 +1923,18 @@ def test_a_comparison_declares_no_variable():
             '  int size_y{static_cast<int>(size_y_)};\n'
             '}\n')
     diagnostics = [("use of undeclared identifier 'size_y_'", 'a.cpp', 4, 30)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines(code), texts=[code]) == {('object', 'size_y_')}
     code = 'void f()\n{\n  std::vector<int> cells_;\n  use(cells_);\n}\n'
     diagnostics = [("use of undeclared identifier 'cells_'", 'a.cpp', 4, 7)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines(code), texts=[code]) == set()
 
 
 def test_an_alias_of_its_namesake_declares_nothing_of_the_package():
     # the package opens a `namespace pcl` of its own (for a point type) and
     # aliases pcl's names: pcl::PointCloud is still pcl's, and missing
-    declared = repair.declared_names([
+    declared = kinds.declared_names([
         'namespace pcl\n{\nstruct PointXYZIR {};\n}\n'
         'class Filter\n{\n'
         '  using PointCloud = pcl::PointCloud<pcl::PointXYZ>;\n'
@@ -1984,7 +1946,7 @@ def test_an_alias_of_its_namesake_declares_nothing_of_the_package():
     assert not {'PointCloud', 'IndicesPtr'} & declared
     diagnostics = [("no template named 'PointCloud' in namespace 'pcl'",
                     'a.hpp', 1, 27)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics,
         _lines('  using PointCloud = pcl::PointCloud<pcl::PointXYZ>;'),
         declared=declared) == {('template', 'pcl::PointCloud')}
@@ -1994,7 +1956,7 @@ def test_a_name_the_package_declares_in_another_namespace_is_repaired():
     # the package's `using Trajectory = autoware::trajectory::Trajectory<P>;`
     # inside its own `namespace autoware::planning` declares no
     # autoware::trajectory::Trajectory
-    declared = repair.declared_names([
+    declared = kinds.declared_names([
         'namespace autoware::planning\n{\n'
         'class Module\n{\n'
         '  using Trajectory = autoware::trajectory::Trajectory<Point>;\n'
@@ -2004,12 +1966,12 @@ def test_a_name_the_package_declares_in_another_namespace_is_repaired():
         '  using Trajectory = autoware::trajectory::Trajectory<Point>;')
     diagnostics = [("no template named 'Trajectory' in namespace "
                     "'autoware::trajectory'", 'a.hpp', 1, 44)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, line, declared=declared) == {
             ('template', 'autoware::trajectory::Trajectory')}
     # one in the package's own namespaces stays the package's
     diagnostics = [("no member named 'Module' in namespace "
                     "'autoware::planning'", 'a.hpp', 1, 1)]
-    assert repair.repairs_from_diagnostics(
+    assert rules.repairs_from_diagnostics(
         diagnostics, _lines('autoware::planning::Module m;'),
         declared=declared) == set()

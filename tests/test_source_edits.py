@@ -4,21 +4,23 @@
 
 import os
 
-from colcon_rsia.frontend.cpp.model_mode import source_edits
-from colcon_rsia.frontend.cpp.model_mode.source_edits import ADDRESS
-from colcon_rsia.frontend.cpp.model_mode.source_edits import AS
-from colcon_rsia.frontend.cpp.model_mode.source_edits import ASSIGNED
-from colcon_rsia.frontend.cpp.model_mode.source_edits import AUTO_POINTER
-from colcon_rsia.frontend.cpp.model_mode.source_edits import BINDING
-from colcon_rsia.frontend.cpp.model_mode.source_edits import CAST
-from colcon_rsia.frontend.cpp.model_mode.source_edits import CONSTEXPR
-from colcon_rsia.frontend.cpp.model_mode.source_edits import DYNAMIC_CAST
-from colcon_rsia.frontend.cpp.model_mode.source_edits import INDEX
-from colcon_rsia.frontend.cpp.model_mode.source_edits import LAMBDA_RESULT
-from colcon_rsia.frontend.cpp.model_mode.source_edits import MEMBER_POINTER
-from colcon_rsia.frontend.cpp.model_mode.source_edits import OPERAND
-from colcon_rsia.frontend.cpp.model_mode.source_edits import RANGE_REFERENCE
-from colcon_rsia.frontend.cpp.model_mode.source_edits import REINTERPRET_CAST
+from colcon_rsia.frontend.cpp.model_mode.recovery import applied
+from colcon_rsia.frontend.cpp.model_mode.recovery import edits as edit_rules
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import ADDRESS
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import AS
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import ASSIGNED
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import AUTO_POINTER
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import BINDING
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import CAST
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import CONSTEXPR
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import DYNAMIC_CAST
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import INDEX
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import LAMBDA_RESULT
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import MEMBER_POINTER
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import OPERAND
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import RANGE_REFERENCE
+from colcon_rsia.frontend.cpp.model_mode.recovery.edits import REINTERPRET_CAST
 from test_repair import _analyze_one_unit
 
 MISMATCH = ("return type 'double' must match previous return type 'Any' "
@@ -53,13 +55,13 @@ struct Limits {
 
 
 def _edits(diagnostics, code=CODE):
-    return source_edits.edits_from_diagnostics(
+    return edit_rules.edits_from_diagnostics(
         [(m, 'a.cpp', line, column) for m, line, column in diagnostics],
         lambda file: code)
 
 
 def _edited(edits, code=CODE):
-    [(text, insertions)] = source_edits.edited_files(
+    [(text, insertions)] = applied.edited_files(
         edits, lambda file: code).values()
     return text.decode('latin-1'), insertions
 
@@ -81,9 +83,9 @@ def test_a_lambda_with_mixed_returns_returns_a_catch_all_value():
     assert len(lines) == len(CODE.split('\n'))
     assert [line for i, line in enumerate(lines) if i not in (2, 8)] == \
         [line for i, line in enumerate(CODE.split('\n')) if i not in (2, 8)]
-    assert source_edits.disk_column(insertions, 9, 16 + 29) == 16
-    assert source_edits.disk_column(insertions, 9, 5) == 5
-    assert source_edits.disk_column(insertions, 3, 5) == 5
+    assert applied.disk_column(insertions, 9, 16 + 29) == 16
+    assert applied.disk_column(insertions, 9, 5) == 5
+    assert applied.disk_column(insertions, 3, 5) == 5
 
 
 def test_a_return_outside_any_lambda_is_not_edited():
@@ -108,7 +110,7 @@ def test_a_pointer_auto_and_constexpr_variables_take_a_catch_all():
     # a static member keeps its initializer as an inline variable
     assert lines[18] == '  static inline    float max_angle = deg2rad(40.f);'
     # (three more characters: columns after them map back)
-    assert source_edits.disk_column(insertions, 15, 23) == 20
+    assert applied.disk_column(insertions, 15, 23) == 20
     assert set(insertions) == {15}
 
 
@@ -134,7 +136,7 @@ def test_casts_of_repaired_classes_and_catch_alls_are_made_to_work():
         '(layer);',
         '  auto & c = reinterpret_cast<const Conv &>(*layer); f(conv, c);',
         '  return ::rsia_model::as<const char *>(blob.data());']
-    assert source_edits.disk_column(insertions, 2, 59) == 55
+    assert applied.disk_column(insertions, 2, 59) == 55
 
 
 def test_structured_bindings_of_a_catch_all_get_as_many_values():
@@ -160,7 +162,7 @@ def test_structured_bindings_of_a_catch_all_get_as_many_values():
         'any.at(0) == 1 ? any : any;',
         '  for (auto && [a, b, c] : ::rsia_model::BoundEach<3>() <<=  any) {}',
         '  auto [x, y]{ ::rsia_model::Bound<2>() <<= any};']
-    assert source_edits.disk_column(insertions, 4, 62) == 28
+    assert applied.disk_column(insertions, 4, 62) == 28
 
 
 def test_the_address_of_a_catch_all_is_the_catch_all():
@@ -196,7 +198,7 @@ def test_a_range_for_reference_to_a_catch_alls_element_is_a_copy():
         '  for (lanelet::LineString3d   line : map->lineStringLayer) {}',
         '  for (Point   p : points) {}']
     # no other edit there: the range is no value of the class
-    assert source_edits.edits_from_notes(
+    assert edit_rules.edits_from_notes(
         [(m, 'a.cpp', line, column, []) for m, line, column in errors[:2]],
         lambda file: code, parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None) == set()
@@ -240,7 +242,7 @@ def test_the_address_of_a_catch_all_passed_to_an_overload_is_dropped():
     code = '  paths.push_back(&object.paths.at(i)); keep(&count);\n'
     note = ("candidate function not viable: no known conversion from '{}' "
             "to 'const PredictedPath *const' for 1st argument")
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("no matching member function for call to 'push_back'",
          'a.cpp', 1, 9, [(note.format('rsia_model::AnyElement *'),
                           'stl_list.h', 1200, 7)]),
@@ -322,7 +324,7 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
              ('h.hpp', 9, 6): ['const std::vector<int> &', 'const Path &'],
              ('h.hpp', 12, 6): ['std::vector<int> &', 'const Path &']}
     candidate = 'candidate function'
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("call to 'is_timeout' is ambiguous", 'a.cpp', 1, 7,
          [(candidate, 'h.hpp', 3, 6), (candidate, 'h.hpp', 4, 6)]),
         ("call to member function 'willLeave' is ambiguous", 'a.cpp', 2, 15,
@@ -344,7 +346,7 @@ def test_an_ambiguous_call_takes_its_first_candidate_that_is_no_template():
         '::rsia_model::as<const Path &>(path))) {}',
         # (not for a reference to a class to change: no temporary binds)
         '  fill({lane}, ::rsia_model::as<const Path &>(path));']
-    assert source_edits.disk_column(insertions, 2, 80) == 33
+    assert applied.disk_column(insertions, 2, 80) == 33
 
 
 def test_a_literal_argument_keeps_its_place_among_the_casts():
@@ -355,7 +357,7 @@ def test_a_literal_argument_keeps_its_place_among_the_casts():
     candidate = 'candidate function'
     types = {('h.hpp', 3, 6): ['const Point &', 'const std::string &', 'int'],
              ('h.hpp', 5, 6): ['const std::string &']}
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("call to member function 'pushPoseMarker' is ambiguous", 'a.cpp',
          1, 10, [(candidate, 'h.hpp', 3, 6)]),
         ("call to 'f' is ambiguous", 'a.cpp', 2, 3,
@@ -397,7 +399,7 @@ def test_an_ambiguous_constructor_of_one_argument_copies_the_class():
             '  std::vector<size_t> filled(cluster.width, 0);\n'
             '  outer.push_back(Point2d(point));\n')
     candidate = ('candidate constructor', 'stl_vector.h', 512, 7)
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("call to constructor of 'std::vector<int>' is ambiguous",
          'a.cpp', 1, 22, [candidate]),
         ("call to constructor of 'std::vector<size_t>' (aka 'vector<unsigned "
@@ -435,7 +437,7 @@ def test_an_argument_for_a_class_parameter_is_made_of_that_class():
             '  return layer->getName();\n'
             '  std::unique_ptr<lanelet::Projector> projector = make(info);\n')
     params = 'const acme::Params &'
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         # at the argument, its parameter in a note
         ("no viable conversion from 'Any' to 'const Params'", 'a.cpp', 1, 18,
          [("passing argument to parameter 'param' here", 'h.hpp', 5, 30)]),
@@ -499,7 +501,7 @@ def test_an_argument_for_a_lambdas_parameter_is_made_of_its_class():
     code = ('  const auto ignored = [&](const LivoxPoint & p) { return p.tag; };\n'
             '  for (const auto & p : points) { if (ignored(p)) {} }\n'
             '  ignored(count);\n')
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("no matching function for call to object of type 'const (lambda at "
          "a.cpp:1:24)'", 'a.cpp', 2, 39,
          [("candidate function not viable: no known conversion from 'const "
@@ -526,7 +528,7 @@ def test_a_catch_all_pushed_into_a_vector_of_c_strings_is_made_one():
     note = ('candidate function not viable: no known conversion from '
             "'::rsia_model::Any' to 'const value_type' (aka 'char *const') "
             'for 1st argument')
-    edits = source_edits.edits_from_notes(
+    edits = edit_rules.edits_from_notes(
         [("no matching member function for call to 'push_back'", 'a.cpp',
           1, 9, [(note, 'stl_vector.h', 1276, 7)])],
         lambda file: code,
@@ -545,7 +547,7 @@ def test_a_constant_passed_for_a_string_is_made_one():
     note = ("candidate function not viable: no known conversion from 'const "
             "int' to 'const std::string' (aka 'const basic_string<char>') "
             'for 1st argument')
-    edits = source_edits.edits_from_notes(
+    edits = edit_rules.edits_from_notes(
         [("no matching member function for call to 'declare_parameter'",
           'a.cpp', 1, 3, [(note, 'node.hpp', 131, 34)])],
         lambda file: code,
@@ -597,7 +599,7 @@ def test_a_pointer_to_a_derived_class_of_an_unknown_library_converts():
 def test_an_argument_of_a_new_class_is_made_that_class():
     # clang reports `new Handle(any)` at the class
     code = '  HandlePtr rt_goal(new Handle(gh));\n'
-    edits = source_edits.edits_from_notes(
+    edits = edit_rules.edits_from_notes(
         [("no viable conversion from 'Any' to 'Handle'", 'a.cpp', 1, 25, [])],
         lambda file: code, parameter_types=lambda *at, callee=None: None,
         parameter_type=lambda *at: None)
@@ -619,7 +621,7 @@ def test_a_catch_all_argument_takes_the_type_its_template_deduces():
                           (2, 20, 'const rsia_model::Any')],
         ('a.cpp', 3, 3): [(3, 9, 'rsia_model::AnyValue'),
                           (3, 14, 'std::vector<int>')]}
-    edits = source_edits.edits_from_notes([
+    edits = edit_rules.edits_from_notes([
         ("no matching function for call to 'pushUniqueVector'", 'a.cpp', 1,
          3, [(note.format("'lanelet::ConstLanelets' (aka "
                           "'vector<ConstLanelet>')", "'Any'"), 'h.hpp', 4,
@@ -651,7 +653,7 @@ def test_a_message_constant_or_field_beside_a_fields_catch_all_is_made_one():
                  (1, 29, 'rsia_model::Any'), (1, 39, 'int')]
 
     def edited(parameter, other):
-        edits = source_edits.edits_from_notes([
+        edits = edit_rules.edits_from_notes([
             ("no matching function for call to 'at_or'", 'a.cpp', 1, 15,
              [(note.format(parameter, other), 'a.cpp', 9, 3)])],
             lambda file: code, parameter_types=lambda *at, callee=None: None,
@@ -674,7 +676,7 @@ def test_a_value_assigned_is_made_of_its_targets_type():
             '  loss_ = new ceres::HuberLoss(0.7);\n'
             '  std::tie(left, right) = align(left, right);\n')
     message = "no viable overloaded '='"
-    edits = source_edits.edits_from_notes(
+    edits = edit_rules.edits_from_notes(
         [(message, 'a.cpp', 1, 22, []), (message, 'a.cpp', 2, 12, []),
          (message, 'a.cpp', 3, 5, []),
          # at the value (a catch-all, which converts to no `const char *`)
@@ -708,7 +710,7 @@ def test_a_messages_string_constant_initialising_a_string_is_made_one():
     code = ': Node("selector"), current_(Scenario::EMPTY), rate_(rate)\n'
     note = ('candidate constructor not viable: no known conversion from '
             "'const int' to '{}' for 1st argument")
-    edits = source_edits.edits_from_notes([(
+    edits = edit_rules.edits_from_notes([(
         "no matching constructor for initialization of 'std::string' (aka "
         "'basic_string<char>')", 'a.cpp', 1, 22,
         [(note.format('const std::allocator<char>'), 'string.h', 528, 7),
@@ -728,7 +730,7 @@ def test_an_edit_whose_code_changed_is_dropped():
     assert 'double lowest = kmph2mps(10);' in text
     assert text.count('AnyValue') == 1
     # nothing left to edit: the file is read as it is
-    assert source_edits.edited_files(
+    assert applied.edited_files(
         {(CONSTEXPR, 'a.cpp:15:3')}, lambda file: changed) == {}
 
 
@@ -827,9 +829,13 @@ def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
     [header] = [os.path.join(root, name)
                 for root, _, names in os.walk(tmp_path / 'build')
                 for name in names if '/repair' in root and
-                name.startswith('detector_node')]
-    with open(header) as h:
-        kinds = [line.split()[2] for line in h if line.startswith('// repair')]
+                name.startswith('detector_node') and name.endswith('.h')]
+    # the unit's repairs, each with the rule that made it
+    records = store.read_records(header)
+    kinds = [kind for kind, _ in records]
+    assert all(rule == kind.partition(':')[0]
+               for (kind, _), rule in records.items()
+               if kind.startswith('edit-'))
     assert sorted(k.partition(':')[0] for k in kinds) == sorted([
         ADDRESS, ADDRESS, AS, AS, AS, ASSIGNED, AUTO_POINTER, BINDING,
         BINDING, CAST, CAST, CAST, CONSTEXPR, CONSTEXPR, DYNAMIC_CAST,

@@ -6,6 +6,7 @@ The event handler and ``colcon rsia analyze`` both call
 :func:`analyze_package`.
 """
 
+import collections
 from concurrent.futures import ThreadPoolExecutor
 import glob
 import os
@@ -31,7 +32,7 @@ from colcon_rsia.package.assembly import executable_nodes
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
-from colcon_rsia.package.call_sites import CXX_HEADER_EXTENSIONS
+from colcon_rsia.package.call_sites import cxx_call_sites
 from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.node_facts import select_functions
@@ -81,6 +82,10 @@ def default_jobs():
 
 HEADER_MODES = ('model', 'exact')
 
+REPAIR_WHEN_IT_PAYS = 'when-it-pays'
+REPAIR_ALWAYS = 'always'
+REPAIR_POLICIES = (REPAIR_WHEN_IT_PAYS, REPAIR_ALWAYS)
+
 DEFAULT_STD = 'c++17'
 
 # directories whose sources are never a node's (tests, generated output)
@@ -90,7 +95,8 @@ SKIPPED_DIRECTORIES = frozenset({
 
 def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                     nothing_compiled=False, header_mode='exact',
-                    workspace_package_dirs=(), extra_arguments=()):
+                    workspace_package_dirs=(), extra_arguments=(),
+                    repair=REPAIR_WHEN_IT_PAYS):
     """Analyse a C++ package; store the summary.
 
     The translation units and their flags come from the package's compile
@@ -111,6 +117,10 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     :param workspace_package_dirs: source directories of every package of
       the workspace, whose headers the model mode keeps
     :param extra_arguments: more compiler arguments for every TU
+    :param str repair: model mode: REPAIR_WHEN_IT_PAYS repairs a unit only
+      when the AST lost some of its calls (the tokens have them);
+      REPAIR_ALWAYS repairs every unit with errors in its own code (fewer
+      parse errors, more parses)
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
     :rtype: colcon_rsia.model.PackageSummary
     :raises AnalysisError: when the package cannot be analysed at all
@@ -150,7 +160,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         entries, package_path=path, resource_dir=resource_dir,
         precompiled_dir=precompiled_dir,
         cache=store.cache_dir(build_base) if use_cache else None,
-        jobs=jobs or default_jobs(),
+        jobs=jobs or default_jobs(), repair=repair,
         wrappers=store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
@@ -197,8 +207,10 @@ def _coverage(path, units, nodes):
         units=[model.UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
             package_errors=unit.package_errors,
-            repair_rounds=unit.repair_rounds)
-            for file, unit in sorted(units.items())],
+            repair_rounds=unit.repair_rounds,
+            repairs=[[rule, kind, _relative(name, path)]
+                     for rule, kind, name in unit.repairs])
+               for file, unit in sorted(units.items())],
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=False),
             nodes=nodes, units=list(units.values())))
@@ -272,8 +284,8 @@ def _own_include_dirs(path):
 
 
 def _model_entries(entries, path, workspace_package_dirs, stub_dir):
-    from colcon_rsia.frontend.cpp.model_mode import repair
     from colcon_rsia.frontend.cpp.model_mode import prepare_model_arguments
+    from colcon_rsia.frontend.cpp.model_mode import recovery
     from colcon_rsia.frontend.cpp.model_mode.include_scan import FileCache
     model_entries = []
     files = FileCache()
@@ -283,14 +295,64 @@ def _model_entries(entries, path, workspace_package_dirs, stub_dir):
             package_path=path,
             workspace_package_dirs=list(workspace_package_dirs),
             stub_dir=stub_dir, directory=entry.directory, files=files)
-        # what clang's errors show missing is declared there (repair.py)
-        header = repair.repair_header(stub_dir, entry.file)
-        repair.ensure_repair_header(
+        # what clang's errors show missing is declared there (recovery/)
+        header = recovery.repair_header(stub_dir, entry.file)
+        recovery.ensure_repair_header(
             header, os.path.relpath(entry.file, path))
         arguments += ['-include', header]
         model_entries.append(CompileEntry(
             file=entry.file, directory=entry.directory, arguments=arguments))
     return model_entries
+
+
+def _unrecorded_calls(tu, facts, package_path):
+    """How many calls of the unit the AST lost: what a repair may win.
+
+    The endpoint call sites of coverage (call_sites.py) in the unit's
+    source and the package headers it includes without a fact of the AST,
+    and the publish sites and timers read from tokens: where there is none,
+    repairing the unit pays nothing.
+    """
+    files = [tu.spelling] + [
+        i.include.name for i in tu.get_includes()
+        if i.include is not None and _inside(i.include.name, package_path)]
+    # a fact read from tokens is approximate (names as written, no types):
+    # the AST's is wanted
+    origins = collections.defaultdict(set)
+    coverage.fact_lines([facts], origins)
+    lines = collections.defaultdict(list)
+    for (file, role, line), found in origins.items():
+        if model.ORIGIN_AST in found:
+            lines[(file, role)].append(line)
+    missing = sum(1 for fact in facts.publish_sites + facts.timers
+                  if fact.origin == model.ORIGIN_TOKENS)
+    for file in dict.fromkeys(os.path.abspath(f) for f in files):
+        relative = os.path.relpath(file, package_path)
+        for line, role, _ in _call_sites_of(file):
+            if not any(abs(line - recorded) <= coverage.LINE_SLACK
+                       for recorded in lines.get((relative, role), ())):
+                missing += 1
+    return missing
+
+
+_call_sites = {}
+_call_sites_lock = threading.Lock()
+
+
+def _call_sites_of(path):
+    """The endpoint call sites a C++ file shows (read once per content)."""
+    try:
+        text = safe_files.read_text(path, errors='replace')
+    except OSError:
+        return []
+    key = (path, hash(text))
+    with _call_sites_lock:
+        found = _call_sites.get(key)
+    if found is None:
+        found = cxx_call_sites(text)
+        with _call_sites_lock:
+            _call_sites[key] = found
+    return found
 
 
 def _relative(path, directory):
@@ -303,8 +365,11 @@ def _inside(file, directory):
 
 
 def parse_units(entries, *, package_path, resource_dir, cache, jobs,
-                wrappers=(), precompiled_dir=None):
+                wrappers=(), precompiled_dir=None,
+                repair=REPAIR_WHEN_IT_PAYS):
     """Parse the TUs in a thread pool; return (facts by file, messages).
+
+    :param repair: when the model mode repairs a unit (analyze_package)
 
     :param precompiled_dir: where the model mode's precompiled standard
       headers are kept (None: parse without them)
@@ -312,7 +377,8 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs,
       packages, for the calls of functions whose body is out of sight
     """
     hidden = _unsafe_includes(entries, package_path)
-    digest = store.wrappers_digest(wrappers)
+    # (the cached facts of a unit depend on its repairs too)
+    digest = f'{store.wrappers_digest(wrappers)}:{repair}'
 
     def work(entry):
         try:
@@ -320,7 +386,7 @@ def parse_units(entries, *, package_path, resource_dir, cache, jobs,
             return _unit_facts(
                 entry, package_path, resource_dir, cache, hidden,
                 wrappers=wrappers, wrappers_digest=digest,
-                precompiled_dir=precompiled_dir)
+                precompiled_dir=precompiled_dir, repair=repair)
         except Interrupted:
             raise
         except Exception as e:  # noqa: B902
@@ -351,7 +417,8 @@ def _unsafe_includes(entries, package_path):
 
 
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
-                wrappers=(), wrappers_digest=None, precompiled_dir=None):
+                wrappers=(), wrappers_digest=None, precompiled_dir=None,
+                repair=REPAIR_WHEN_IT_PAYS):
     """Facts of one TU, from the cache when nothing it reads changed.
 
     :param hidden: {file: why} of files libclang is given as empty
@@ -383,20 +450,51 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     if not os.path.isfile(entry.file):
         return None, [f'{relative}: source file missing (stale compile '
                       'database?); skipped']
+    from colcon_rsia.frontend.cpp.model_mode import precompiled
+    from colcon_rsia.frontend.cpp.model_mode.recovery import parse_unit
+    from colcon_rsia.frontend.cpp.wrappers import ExternalWrappers
+    external = ExternalWrappers(wrappers) if wrappers else None
+    # the files that failed the checks are seen by libclang as empty
+    hidden_files = [(file, '') for file in sorted(
+        set(hidden) | {os.path.realpath(h) for h in hidden})]
+    pch = [precompiled.precompiled_header(
+        precompiled_dir, entry.file, entry.arguments, resource_dir)
+        if precompiled_dir else None]
+    index = ci.Index.create()
+
+    def parse(arguments, edited_files):
+        def parse_with(arguments):
+            return cpp.parse(
+                index, file=entry.file, arguments=arguments,
+                resource_dir=resource_dir, working_directory=entry.directory,
+                unsaved_files=hidden_files + list(edited_files))
+        if pch[0] is None:
+            return parse_with(arguments)
+        try:
+            return parse_with(list(arguments) + ['-include-pch', pch[0]])
+        except ci.TranslationUnitLoadError:
+            # raises again when the unit itself is the problem
+            tu = parse_with(arguments)
+            precompiled.discard(pch[0])
+            pch[0] = None
+            return tu
+
+    def facts_of(tu):
+        return cpp.extract_facts(tu, package_path=package_path,
+                                 source=relative, external_wrappers=external)
     try:
-        index = ci.Index.create()
-        # the files that failed the checks are seen by libclang as empty
-        tu, rounds = _parse_repaired(
-            index, entry, resource_dir, package_path, relative,
-            unsaved_files=[(file, '') for file in sorted(
-                set(hidden) | {os.path.realpath(h) for h in hidden})],
-            precompiled_dir=precompiled_dir)
+        parsed = parse_unit(
+            index, entry, parse=parse, resource_dir=resource_dir,
+            package_path=package_path, relative=relative, facts_of=facts_of,
+            unrecorded=(lambda tu, facts: _unrecorded_calls(
+                tu, facts, package_path))
+            if repair == REPAIR_WHEN_IT_PAYS else None,
+            check_stop=check_stop)
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
-    from colcon_rsia.frontend.cpp.wrappers import ExternalWrappers
-    facts = cpp.extract_facts(
-        tu, package_path=package_path, source=relative,
-        external_wrappers=ExternalWrappers(wrappers) if wrappers else None)
+    tu, facts, rounds = parsed.tu, parsed.facts, parsed.rounds
+    facts.repairs = sorted(
+        [rule, kind, name] for (kind, name), rule in parsed.repairs.items())
     facts.diagnostics = [
         f'{relative}: parse error: {m}' for m in cpp.parse_diagnostics(tu)
     ] + facts.diagnostics
@@ -421,226 +519,6 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         write_cached_facts(cache_file, entry, [entry.file] + inputs, facts,
                            wrappers_digest)
     return facts, list(facts.diagnostics)
-
-
-def _parse_repaired(index, entry, resource_dir, package_path, relative,
-                    unsaved_files=(), precompiled_dir=None):
-    """Parse a TU; in model mode, repair what its errors show missing.
-
-    Returns (the TU with the fewest errors in package code, parses after
-    the first). The repair header is left as that best round had it.
-    """
-    import clang.cindex as ci
-    from colcon_rsia.frontend import cpp
-    from colcon_rsia.frontend.cpp.model_mode import precompiled
-    from colcon_rsia.frontend.cpp.model_mode import repair
-    from colcon_rsia.frontend.cpp.model_mode import source_edits
-    from colcon_rsia.frontend.cpp.parse import call_arguments
-    from colcon_rsia.frontend.cpp.parse import errors_with_notes
-    from colcon_rsia.frontend.cpp.parse import parameter_type
-    from colcon_rsia.frontend.cpp.parse import parameter_types
-
-    header = _repair_header_of(entry.arguments)
-    codes = {}
-
-    def read_code(file):
-        # latin-1: one character per byte, as clang counts columns
-        if file not in codes:
-            try:
-                codes[file] = safe_files.read_bytes(file).decode('latin-1')
-            except OSError:
-                codes[file] = None
-        return codes[file]
-    # {file: (its text with the repair header's edits, where they inserted)}
-    edited = {}
-    pch = precompiled.precompiled_header(
-        precompiled_dir, entry.file, entry.arguments, resource_dir) \
-        if precompiled_dir and header is not None else None
-
-    def parse_with(arguments):
-        return cpp.parse(
-            index, file=entry.file, arguments=arguments,
-            resource_dir=resource_dir, working_directory=entry.directory,
-            unsaved_files=list(unsaved_files) + [
-                (file, text) for file, (text, _) in edited.items()])
-
-    def parse():
-        nonlocal pch, edited
-        if header is not None:
-            edited = source_edits.edited_files(
-                repair.read_repairs(header), read_code)
-        if pch is None:
-            return parse_with(entry.arguments)
-        try:
-            return parse_with(list(entry.arguments) + ['-include-pch', pch])
-        except ci.TranslationUnitLoadError:
-            # raises again when the unit itself is the problem
-            tu = parse_with(entry.arguments)
-            precompiled.discard(pch)
-            pch = None
-            return tu
-    if header is not None and not repair.read_repairs(header):
-        # a unit never repaired starts with what its package's other units
-        # needed (their names, unless this package declares them)
-        repair.seed_repairs(header, relative,
-                            _package_declarations(package_path))
-    tu = parse()
-    if header is None:
-        return tu, 0
-    texts = {}
-
-    def text_of(file):
-        if file not in texts:
-            try:
-                texts[file] = safe_files.read_text(file, errors='replace')
-            except OSError:
-                texts[file] = ''
-        return texts[file]
-
-    lines_of = {}  # a file's lines, split once (a repair reads many)
-
-    def read_line(file, line):
-        if file not in lines_of:
-            lines_of[file] = text_of(file).split('\n')
-        lines = lines_of[file]
-        return lines[line - 1] if 0 < line <= len(lines) else ''
-
-    from colcon_rsia.frontend.cpp.model_mode import MODEL_HEADERS_DIR
-    stub_dir = os.path.dirname(os.path.dirname(os.path.dirname(header)))
-
-    def _user_file(file):
-        # the workspace's code (the package's and the headers of other
-        # packages it includes): not stand-ins, model or system headers
-        return not _inside(file, stub_dir) and \
-            not _inside(file, MODEL_HEADERS_DIR) and \
-            not file.startswith(('/usr/', '/opt/'))
-
-    def disk_column(file, line, column):
-        return source_edits.disk_column(
-            edited.get(file, (None, {}))[1], line, column)
-
-    def in_parse(file, line, column):
-        # a place on disk, as the parse with the edits in memory has it
-        return file, line, source_edits.edited_column(
-            edited.get(file, (None, {}))[1], line, column)
-
-    def on_disk(file, arguments):
-        return None if arguments is None else [
-            (line, disk_column(file, line, column), argument_type)
-            for line, column, argument_type in arguments]
-
-    def own_errors(tu):
-        # errors elsewhere hide none of the package's calls, and
-        # declarations cannot fix them; columns as on disk
-        return [(message, file, line, disk_column(file, line, column))
-                for message, file, line, column in cpp.error_diagnostics(tu)
-                if file and _user_file(file)]
-    errors = own_errors(tu)
-    best = (len(errors), 0, tu, _read_text(header))
-    rounds = 0
-    while errors and rounds < repair.MAX_REPAIR_ROUNDS:
-        check_stop()  # each round is one more parse
-        own_files = {entry.file} | {
-            i.include.name for i in tu.get_includes()
-            if i.include is not None and _user_file(i.include.name)}
-        repairs = repair.repairs_from_diagnostics(
-            errors, read_line,
-            texts=[text_of(f) for f in sorted({e[1] for e in errors})],
-            declared=set().union(*(
-                repair.file_declarations(f, text_of(f))
-                for f in sorted(own_files))),
-            stand_in=lambda relative: os.path.isfile(
-                os.path.join(stub_dir, relative)))
-        edits = source_edits.edits_from_diagnostics(errors, read_code)
-        # (edits that need the parse's declarations: the parameters a
-        # call passes its arguments to)
-        edits |= source_edits.edits_from_notes(
-            [(message, file, line, disk_column(file, line, column), notes)
-             for message, file, line, column, notes
-             in errors_with_notes(tu, source_edits.needs_notes)
-             if file and _user_file(file)],
-            read_code,
-            parameter_types=lambda *at, callee=None: parameter_types(
-                tu, *at, object_at=callee and in_parse(*callee)),
-            parameter_type=lambda *at: parameter_type(tu, *at),
-            call_arguments=lambda file, line, column: on_disk(
-                file, call_arguments(tu, *in_parse(file, line, column))))
-        # one edit a place: one made in an earlier round stays (a second
-        # would wrap the first)
-        edited_places = {name for kind, name in repair.read_repairs(header)
-                         if source_edits.is_edit(kind)}
-        repairs |= {edit for edit in edits if edit[1] not in edited_places}
-        if not repair.add_repairs(header, relative, repairs):
-            break
-        if any(kind == repair.HEADER for kind, _ in repairs):
-            _write_stand_ins_of_repair(header, entry, package_path, stub_dir)
-        rounds += 1
-        tu = parse()
-        errors = own_errors(tu)
-        if len(errors) < best[0]:
-            best = (len(errors), rounds, tu, _read_text(header))
-    if best[1] != rounds:
-        # a later round made things worse (a repair can): keep the best,
-        # so that later parses of the unit do not pay for it
-        from colcon_rsia.frontend.cpp.model_mode import write_atomically
-        write_atomically(header, best[3])
-    if best[1]:
-        repair.share_repairs(header, repair.read_repairs(header))
-    return best[2], rounds
-
-
-def _write_stand_ins_of_repair(header, entry, package_path, stub_dir):
-    """Write the stand-ins the headers a repair header includes need.
-
-    A model header included by a repair (rclcpp/rclcpp.hpp, for an
-    `rclcpp::` name used before any include brought it in) includes
-    generated ones in turn (rcl_interfaces' messages), which the unit's
-    own scan never met.
-    """
-    from colcon_rsia.frontend.cpp.model_mode import prepare_model_arguments
-    try:
-        prepare_model_arguments(
-            source=header, arguments=entry.arguments,
-            package_path=package_path, workspace_package_dirs=[],
-            stub_dir=stub_dir, directory=entry.directory)
-    except (OSError, ValueError):
-        pass  # the parse then reports the missing header, as before
-
-
-_declarations = {}
-_declarations_lock = threading.Lock()
-
-
-def _package_declarations(package_path):
-    """The names a package's own C++ files declare (read once)."""
-    with _declarations_lock:
-        if package_path not in _declarations:
-            texts = []
-            for root, dirs, files in os.walk(package_path):
-                dirs[:] = [d for d in dirs if d not in SKIPPED_DIRECTORIES
-                           and not d.startswith('.')]
-                for name in files:
-                    if name.endswith(CXX_SOURCE_EXTENSIONS + CXX_HEADER_EXTENSIONS):
-                        try:
-                            texts.append(safe_files.read_text(
-                                os.path.join(root, name), errors='replace'))
-                        except OSError:
-                            pass  # named by the checks before the parse
-            from colcon_rsia.frontend.cpp.model_mode import repair
-            _declarations[package_path] = repair.declared_names(texts)
-        return _declarations[package_path]
-
-
-def _repair_header_of(arguments):
-    for option, value in zip(arguments, arguments[1:]):
-        if option == '-include' and '/rsia_model/repair/' in value:
-            return value
-    return None
-
-
-def _read_text(path):
-    with open(path, encoding='utf-8', errors='surrogateescape') as h:
-        return h.read()
 
 
 def build_summary(*, name, path, build_base, units):

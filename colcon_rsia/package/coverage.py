@@ -31,7 +31,7 @@ NOT_RECORDED = 'none'
 IN_UNREAD_FILE = 'unread'
 
 
-def _endpoint_lines(holders, origins=None):
+def fact_lines(holders, origins=None):
     """{(file, role): [lines]} of the endpoints of nodes or of units.
 
     Both hold ``publishers`` and ``subscribers`` facts located at
@@ -103,9 +103,9 @@ def call_site_coverage(sites, *, nodes, units):
       a file none of them read is in code the build never compiles
     """
     origins = collections.defaultdict(set)
-    in_nodes = match_sites(sites, _endpoint_lines(nodes, origins))
+    in_nodes = match_sites(sites, fact_lines(nodes, origins))
     rest = [s for s in sites if s not in in_nodes]
-    in_units = match_sites(rest, _endpoint_lines(units, origins))
+    in_units = match_sites(rest, fact_lines(units, origins))
     rest = [s for s in rest if s not in in_units]
     through_node, through_unit = _through_package_functions(
         rest, nodes, units)
@@ -257,6 +257,10 @@ def package_report(summary):
         (endpoint.namespace or '').startswith(model.UNKNOWN_NAMESPACE)]
     report['unnamed_nodes'] = sorted(
         node.id for node in summary.nodes if not node.name)
+    # which rules of the model mode's recovery repaired what, where
+    report['repairs'] = [
+        {'file': u.file, 'rule': rule, 'kind': kind, 'name': name}
+        for u in coverage.units for rule, kind, name in u.repairs]
     return report
 
 
@@ -292,6 +296,8 @@ def workspace_report(summaries, failures=None, not_analysed=()):
             key: sum(p['call_sites'][role][key] for p in analysed)
             for key in ('sites', 'in_nodes', 'in_units_only', 'from_tokens')}
     total['percent'] = recorded_percent(total)
+    total['repairs'] = dict(sorted(collections.Counter(
+        r['rule'] for p in analysed for r in p.get('repairs', ())).items()))
     return {'schema': COVERAGE_SCHEMA, 'packages': packages, 'total': total}
 
 
@@ -330,8 +336,12 @@ def _fraction(counts):
     return f"{counts['in_nodes']}/{counts['sites']}"
 
 
-def report_to_text(report, *, missed=False):
-    """The report as a table, one package a line, then the total."""
+def report_to_text(report, *, missed=False, repairs=False):
+    """The report as a table, one package a line, then the total.
+
+    :param missed: list each call site without a fact
+    :param repairs: list each repair of the model mode, with its rule
+    """
     lines = [f"{'package':<40} {'units':>6} {'errors':>6} "
              f"{'pub':>9} {'sub':>9} {'unres.':>6} {'unnamed':>7}"]
     for p in report['packages']:
@@ -349,5 +359,12 @@ def report_to_text(report, *, missed=False):
         if missed:
             lines += [f"  missed {m['role']}: {m['file']}:{m['line']} "
                       f"({m['api']})" for m in p['missed']]
+        if repairs:
+            lines += [f"  repair {r['rule']}: {r['kind']} {r['name']} "
+                      f"({r['file']})" for r in p.get('repairs', ())]
+    if repairs:
+        counts = report['total'].get('repairs', {})
+        lines.append('repairs by rule: ' + (', '.join(
+            f'{rule} {count}' for rule, count in counts.items()) or 'none'))
     lines.append(total_line(report))
     return '\n'.join(lines) + '\n'

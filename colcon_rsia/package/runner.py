@@ -23,6 +23,7 @@ from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
 from colcon_rsia.package.analysis import check_stop
 from colcon_rsia.package.analysis import Interrupted
+from colcon_rsia.package.analysis import REPAIR_WHEN_IT_PAYS
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.problems import problem_to_text
 from colcon_rsia.package.problems import split_problem
@@ -148,10 +149,11 @@ def workspace_package_dirs(args):
 
 def analyze(*, name, package_type, path, build_base, cmake_args=None,
             jobs=None, header_mode=None, workspace_package_dirs=(),
-            without_build=False):
+            without_build=False, repair=REPAIR_WHEN_IT_PAYS):
     """Analyse one package; return an :class:`Outcome`, never raise.
 
     :param header_mode: 'model' or 'exact'; None: :func:`default_header_mode`
+    :param repair: when the model mode repairs a unit (see analyze_package)
     :param workspace_package_dirs: the source directories of all the
       workspace's packages (see :func:`workspace_package_dirs`)
     :param bool without_build: analyse a package that has no compile
@@ -166,7 +168,7 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
             build_base=build_base, cmake_args=cmake_args, jobs=jobs,
             header_mode=header_mode,
             workspace_package_dirs=workspace_package_dirs,
-            without_build=without_build)
+            without_build=without_build, repair=repair)
     except Interrupted:
         # nothing to say, nothing written: the build says it was interrupted
         return Outcome(display(name), skipped=True)
@@ -186,7 +188,7 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
 
 
 def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
-             header_mode, workspace_package_dirs, without_build):
+             header_mode, workspace_package_dirs, without_build, repair):
     # imported here: most colcon calls never analyse anything
     from colcon_rsia.package.python_analysis import analyze_python_package
     from colcon_rsia.package.python_analysis import build_python_summary
@@ -219,7 +221,8 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
     summary = analyze_package(
         name=name, path=path, build_base=build_base, jobs=jobs,
         nothing_compiled=exported and not has_database,
-        header_mode=header_mode, workspace_package_dirs=workspace_package_dirs)
+        header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
+        repair=repair)
     if has_python:
         started = time.monotonic()
         python = build_python_summary(name=name, path=path)

@@ -46,6 +46,13 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                  f'{HEADER_MODE_ENVIRONMENT_VARIABLE.name} environment '
                  'variable, else model')
         parser.add_argument(
+            '--repair', choices=('when-it-pays', 'always'),
+            default='when-it-pays',
+            help='model mode: repair a unit when its AST lost calls the '
+                 'tokens show (when-it-pays), or whenever its own code has '
+                 'parse errors (always: fewer errors, more parses) '
+                 '(default: when-it-pays)')
+        parser.add_argument(
             '--jobs', type=positive_int, default=None, metavar='N',
             help='Translation units parsed in parallel (default: the number '
                  'of CPUs)')
@@ -74,6 +81,7 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                 name=pkg.name, package_type=pkg.type, path=str(pkg.path),
                 build_base=os.path.join(build_base, pkg.name),
                 jobs=args.jobs, header_mode=args.header_mode,
+                repair=args.repair,
                 workspace_package_dirs=package_dirs, without_build=True)
             print(outcome.line(), flush=True)
             analysed += outcome.summary is not None

@@ -33,6 +33,10 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
             '--missed', action='store_true',
             help='List every call site without a fact (text format)')
         parser.add_argument(
+            '--repairs', action='store_true',
+            help='List the repairs of the model mode, each with the rule '
+                 'that made it, and their count by rule (text format)')
+        parser.add_argument(
             '--fail-under', type=float, metavar='PERCENT', default=None,
             help='Exit with 2 when fewer than PERCENT %% of the publisher '
                  'and subscription call sites have a fact, or a package '
@@ -53,7 +57,8 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
         if args.format == 'json':
             print(json.dumps(report, indent=2, sort_keys=True))
         else:
-            print(report_to_text(report, missed=args.missed), end='')
+            print(report_to_text(report, missed=args.missed,
+                                 repairs=args.repairs), end='')
         if args.fail_under is not None and (
                 report['total']['percent'] < args.fail_under or
                 any(p['status'] == FAILED for p in report['packages'])):

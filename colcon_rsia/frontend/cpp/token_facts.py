@@ -243,8 +243,8 @@ def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
       functions the walk met
     :param relpath: the path of a file relative to the package
     :param ros2: whether the unit uses rclcpp (a method name's API)
-    :param resolved_calls: {(file, callee spelling): [(start, end)]}: the
-      calls the AST resolved, by their extents' offsets
+    :param resolved_calls: {file: {end offset: start offset}}: the calls
+      the AST resolved, by their extents
     """
     reader = _Reader(tu, facts, relpath=relpath, ros2=ros2,
                      resolved_calls=resolved_calls, definitions=definitions)
@@ -584,17 +584,20 @@ class _Reader:
             j -= 2
         return '::'.join(parts)
 
-    def _resolved(self, i):
-        """Whether the AST resolved the call whose name is at `i`."""
-        offset = self.tokens[i].offset
-        return any(start <= offset < end for start, end in
-                   self.resolved_calls.get(
-                       (self.function_.file, self.tokens[i].text), ()))
+    def _resolved(self, i, closing):
+        """Whether the AST resolved the call named at `i`, ending at `closing`.
+
+        The AST's call ends where its `)` does, and starts at or before
+        its name (at its object).
+        """
+        start = self.resolved_calls.get(self.function_.file, {}).get(
+            self.tokens[closing].offset + 1)
+        return start is not None and start <= self.tokens[i].offset
 
     def _call(self, i, opening, closing, template, ctx, target):
         tokens = self.tokens
         name = tokens[i].text
-        if self._resolved(i):
+        if self._resolved(i, closing):
             return
         qualifier = self._qualifier(i)
         object_range = self._object(i)

@@ -126,8 +126,9 @@ class _Walker:
         self._wrappers = wrappers.Summaries(self, external_wrappers)
         # {function id: definition} of the package's functions walked
         self._definitions = {}
-        # {(file, callee spelling): [(start, end)]}: the calls the AST
-        # resolved, which the tokens of their place then leave alone
+        # {file: {end offset: start offset}}: the calls the AST resolved,
+        # which the tokens of their place then leave alone (a call is known
+        # by where its `)` ends: its callee's spelling may be an operator's)
         self._resolved_calls = {}
         # Qt and boost::asio timers, sleep_until loops
         self._clocks = clocks.OtherClocks(self)
@@ -173,13 +174,12 @@ class _Walker:
             return name[len(self.package_path):]
         return name
 
-    def _note_resolved(self, cursor, spelling):
+    def _note_resolved(self, cursor):
         """Remember a call the AST resolved (see token_facts)."""
         start, end = cursor.extent.start, cursor.extent.end
         if start.file is not None:
-            self._resolved_calls.setdefault(
-                (start.file.name, spelling), []).append(
-                    (start.offset, end.offset))
+            ends = self._resolved_calls.setdefault(start.file.name, {})
+            ends[end.offset] = min(start.offset, ends.get(end.offset, start.offset))
 
     def location(self, cursor):
         if cursor.location.file is None:
@@ -501,7 +501,7 @@ class _Walker:
         if ref is None:
             self._dependent_call(cursor, ctx, stack)
             return
-        self._note_resolved(cursor, cursor.spelling or ref.spelling)
+        self._note_resolved(cursor)
         if cursor.spelling == 'operator=':
             children = child_cursors(cursor)
             target = first_handle(children[0]) if children else None
@@ -547,7 +547,7 @@ class _Walker:
         name = self.dependent_call_name(cursor)
         if name is None:
             return
-        self._note_resolved(cursor, name.rsplit('::', 1)[-1])
+        self._note_resolved(cursor)
         api = ros_api.lookup_call(name)
         self._handlers[api.role](
             cursor, ctx, stack, api, name, list(cursor.get_arguments()))

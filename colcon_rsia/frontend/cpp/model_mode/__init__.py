@@ -30,8 +30,8 @@ serialised by a lock.
 :func:`prepare_model_arguments` is the whole mode for one unit: the
 arguments kept (:mod:`.arguments`), the include scan (:mod:`.include_scan`),
 what the sources use (:mod:`.source_names`), the stand-ins written
-(:mod:`.stubs`, their text in :mod:`.stand_ins`); :mod:`.repair` completes
-what clang's errors show missing.
+(:mod:`.stubs`, their text in :mod:`.stand_ins`); :mod:`.recovery`
+completes what clang's errors show missing.
 """
 
 

@@ -48,16 +48,13 @@ def empty_stub(name):
 # <QPushButton>, <QtWidgets/QWidget>, <QtGui/qpainter.h>
 _QT_HEADER = re.compile(r'^Qt?[A-Z]\w*(?:/|$)')
 
-# include directories whose libraries use another namespace name
-_NAMESPACE_OF_DIRECTORY = {'opencv2': 'cv', 'opencv': 'cv'}
-
 
 def guessed_namespace(include):
     """The namespace an unknown `dir/...` include probably declares."""
     parts = include.split('/')
     if len(parts) < 2 or not PACKAGE.match(parts[0]):
         return None
-    namespace = _NAMESPACE_OF_DIRECTORY.get(parts[0], parts[0])
+    namespace = parts[0]
     if namespace in MODEL_NAMESPACES or namespace.endswith(
             ('_msgs', '_srvs')) or not member_ok(namespace):
         return None

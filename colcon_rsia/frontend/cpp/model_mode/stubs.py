@@ -247,7 +247,7 @@ def _unknown_namespaces(stubs, codes):
     arguments (`ns::Name<T>`, or `Name<T>` after `using ns::Name;`) is a
     template: a class template when capitalised, a function template
     otherwise, unless a use has value arguments (`ns::Grid<3>`), whose
-    parameters the repairs declare from the use (repair.py). A namespace
+    parameters the repairs declare from the use (recovery/). A namespace
     the sources open themselves, or one with messages of this TU, is left
     alone (and named in the second result).
     """
@@ -401,16 +401,11 @@ def _merge_unknown(stub_dir, namespace, names):
         '// model mode does not have): catch-all declarations',
         f'#ifndef {guard}', f'#define {guard}', '',
         '#include <rsia_model/message.h>', '', f'namespace {namespace}', '{']
-    plain_classes = {name for name, members in types.items() if not members}
     for name in sorted(types):
         members = sorted(types[name])
-        # a repair header (repair.py) may have declared it already
+        # a repair header (recovery/) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
                   _undeclared(namespace, name)]
-        same = name in plain_classes and same_class_as(name, plain_classes)
-        if same:
-            lines += [f'using {name} = {same};', '#endif']
-            continue
         lines += catch_all_class(name, members=[
             line for member in members if member not in POINTER_TYPES
             for line in (
@@ -449,16 +444,6 @@ def _merge_unknown(stub_dir, namespace, names):
     content = '\n'.join(lines)
     if content != old:
         write_atomically(path, content)
-
-
-def same_class_as(name, declared):
-    """The name among declared that is the same class as name, or None.
-
-    OpenCV's `cv::Point2i` is `cv::Point` (`Size2i`, `Rect2i` likewise):
-    code declares a function with one and defines it with the other.
-    """
-    return name[:-2] if name.endswith('2i') and name[:-2] in declared \
-        else None
 
 
 def _undeclared(namespace, name):

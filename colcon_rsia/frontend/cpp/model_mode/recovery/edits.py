@@ -59,7 +59,7 @@ assigned ``rsia_model::assigned_as<decltype(target)>(value)``, the
 ``rsia_model::as``. An edit never
 adds or removes a line break, so every fact keeps its file and line.
 
-An edit is kept in the unit's repair header like a declaration, as
+An edit is kept among the unit's repairs like a declaration, as
 ``(kind, "file:line:column")`` with the position in the file as it is on
 disk, and checked against the file's text each time it is applied: when
 the file changed, an edit whose text is no longer there is dropped.
@@ -67,11 +67,22 @@ the file changed, an edit whose text is no longer there is dropped.
 
 import re
 from urllib.parse import quote
-from urllib.parse import unquote
 
-from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
-from colcon_rsia.frontend.cpp.model_mode.source_names import \
-    end_of_template_arguments
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import address_of
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import arguments_of_call
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import binding_names
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import constexpr_keyword
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import end_before
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import end_of_argument
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import lambda_body
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import masked_reader
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import offset_of
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import operands
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import pointer_star
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import position_of
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import range_reference
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import statement_start
+from colcon_rsia.frontend.cpp.model_mode.recovery.edit_text import word_before
 
 # the kinds of edit, as repair headers name them
 LAMBDA_RESULT = 'edit-lambda-result'  # `-> AnyValue` before a lambda's body
@@ -155,25 +166,25 @@ _POINTER_MISMATCH = re.compile(
     r"'[^']*\*'(?: \(aka '[^']*'\))?$")
 # the errors of a conditional's operands (a literal's type is an array:
 # `const char[1]` of "")
-_LITERAL_OPERAND_ERROR = re.compile(
+LITERAL_OPERAND_ERROR = re.compile(
     r"^incompatible operand types \((?:'(const char\[\d+\])' and .*|"
     r".* and '(const char\[\d+\])')\)$")
-_NULL_OPERAND_ERROR = re.compile(
+NULL_OPERAND_ERROR = re.compile(
     r"^non-pointer operand type '(?:const )?Any(?:Element|Value)?' "
     'incompatible with nullptr$')
 # (a catch-all beside a class the code names: `ok ? goal.value() : make()`)
-_OTHER_OPERAND_ERROR = re.compile(
+OTHER_OPERAND_ERROR = re.compile(
     rf'^incompatible operand types \(({_TYPE}) and ({_TYPE})\)$')
-_MUTUAL_OPERAND_ERROR = re.compile(
+MUTUAL_OPERAND_ERROR = re.compile(
     rf'^conditional expression is ambiguous; ({_TYPE}) can be converted to '
     rf'({_TYPE}) and vice versa$')
-_STRING = '::std::string'
+STRING = '::std::string'
 # the same, for an operand that is no literal (an edit checks that the
-# operand it makes a `_STRING` is still a literal)
-_CONSTANT_STRING = '::std::basic_string<char>'
-_STRING_TYPE = re.compile(
+# operand it makes a `STRING` is still a literal)
+CONSTANT_STRING = '::std::basic_string<char>'
+STRING_TYPE = re.compile(
     r'^(?:const )?(?:std::)?(?:string|basic_string<char>)$')
-_CATCH_ALL_VALUE = '::rsia_model::AnyValue'
+CATCH_ALL_VALUE = '::rsia_model::AnyValue'
 # from a catch-all, or from a class a repair or stand-in declared (the
 # real build converts it, or it would not build); the class as the message
 # spells it: where the code names it
@@ -226,39 +237,25 @@ _AMBIGUOUS_CONSTRUCTOR = re.compile(
     r"^call to constructor of '([^']*)'(?: \(aka '[^']*'\))? is ambiguous$|"
     rf"^ambiguous conversion for functional-style cast from '{_ANY}' to "
     r"'([^']*)'(?: \(aka '[^']*'\))?$")
-# the callee of a call, from where clang reports it: a (qualified) name,
-# its template arguments after it
-_CALLEE = re.compile(r'(?:::)?\s*~?[A-Za-z_]\w*(?:\s*::\s*~?[A-Za-z_]\w*)*\s*')
 # the types of C++ itself, which a catch-all converts to
-_BUILTIN = re.compile(
+BUILTIN = re.compile(
     r'^(?:(?:un)?signed\s+|long\s+|short\s+)*'
     r'(?:int|long|short|char|bool|float|double|void|size_t)?$')
 # what a canonical type spelling can hold that no scope can name
-_UNNAMEABLE = re.compile(r'\(anonymous|\(lambda|\(unnamed|type-parameter|::\(')
+UNNAMEABLE = re.compile(r'\(anonymous|\(lambda|\(unnamed|type-parameter|::\(')
 # a variable's name up to its initializer (`screen = ` of `Screen *screen =
 # DefaultScreenOfDisplay(d)`, where clang reports the conversion)
-_DECLARATOR = re.compile(r'[A-Za-z_]\w*\s*=(?!=)\s*')
-# where a variable's initializer takes an address (`data = &msg.data[0]`)
-_INITIALIZED_ADDRESS = re.compile(r'\w+\s*(?:=|\(|\{)\s*(&)(?!&)')
+DECLARATOR = re.compile(r'[A-Za-z_]\w*\s*=(?!=)\s*')
 
 # a class that is moved, never copied
-_MOVE_ONLY = re.compile(r'^(?:::)?std::unique_ptr<')
-_RESULT = '-> ::rsia_model::AnyValue '
-# how far before a `return` its lambda's body may open
-_SCAN_LIMIT = 20000
-# the words that end a statement's head before a block (`if (...) {`,
-# `if constexpr (...) {`)
-_BLOCK_HEADS = frozenset(('if', 'for', 'while', 'switch', 'catch', 'constexpr'))
-# the words a lambda may follow
-_BEFORE_LAMBDA = frozenset(('return', 'co_return', 'co_yield', 'case'))
-_CONSTEXPR_WORD = re.compile(r'\bconstexpr\b')
+MOVE_ONLY = re.compile(r'^(?:::)?std::unique_ptr<')
+RESULT = '-> ::rsia_model::AnyValue '
 # the keyword each edit of a cast replaces, and with what
-_CAST_KEYWORDS = {DYNAMIC_CAST: ('dynamic_cast', 'reinterpret_cast'),
-                  REINTERPRET_CAST: ('reinterpret_cast', '::rsia_model::as')}
+CAST_KEYWORDS = {DYNAMIC_CAST: ('dynamic_cast', 'reinterpret_cast'),
+                 REINTERPRET_CAST: ('reinterpret_cast', '::rsia_model::as')}
 # words that begin statements, never an assignment's target
-_KEYWORDS = frozenset(('return', 'if', 'else', 'case', 'throw', 'delete',
-                       'co_return', 'goto'))
-_AUTO_POINTER = re.compile(r'\bauto\s*(\*)\s*(?:const\s*)?$')
+KEYWORDS = frozenset(('return', 'if', 'else', 'case', 'throw', 'delete',
+                      'co_return', 'goto'))
 
 
 def edits_from_diagnostics(diagnostics, read_code):
@@ -270,7 +267,7 @@ def edits_from_diagnostics(diagnostics, read_code):
       character per byte, as clang counts columns), or None
     """
     edits = set()
-    masked_of = _masked_reader(read_code)
+    masked_of = masked_reader(read_code)
     for message, file, line, column in diagnostics:
         kind = _kind_of(message)
         pointer = _POINTER_MISMATCH.match(message)
@@ -281,15 +278,15 @@ def edits_from_diagnostics(diagnostics, read_code):
         if kind is None or not file or ' ' in file:
             continue  # (a repair header's entry is one word)
         masked = masked_of(file)
-        offset = None if masked is None else _offset(masked, line, column)
+        offset = None if masked is None else offset_of(masked, line, column)
         if offset is None:
             continue
         if kind == OPERAND:
-            edits |= _operand_edit(masked, file, offset, message)
+            edits |= operand_edit(masked, file, offset, message)
             continue
-        anchor = _ANCHORS[kind](masked, offset)
+        anchor = ANCHORS[kind](masked, offset)
         if anchor is not None:
-            at_line, at_column = _position(masked, anchor)
+            at_line, at_column = position_of(masked, anchor)
             edits.add((kind, f'{file}:{at_line}:{at_column}'))
     return edits
 
@@ -327,7 +324,7 @@ def edits_from_notes(errors, read_code, *, parameter_types,
       disk; None if there is none
     """
     edits = set()
-    masked_of = _masked_reader(read_code)
+    masked_of = masked_reader(read_code)
     for message, file, line, column, notes in errors:
         if not file or ' ' in file:
             continue
@@ -337,7 +334,7 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                 types = parameter_types(
                     *candidate, callee=(file, line, column)) \
                     if note.startswith('candidate') else None
-                if types and not any(_UNNAMEABLE.search(t) for t in types):
+                if types and not any(UNNAMEABLE.search(t) for t in types):
                     joined = quote(';'.join(types), safe='')
                     edits.add((f'{CAST}:{joined}', f'{file}:{line}:{column}'))
                     break
@@ -347,9 +344,9 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                 if constructed and masked is not None:
                     # no candidate to name (a class template's): a single
                     # argument is made the class itself, as copied
-                    offset = _offset(masked, line, column)
+                    offset = offset_of(masked, line, column)
                     arguments = None if offset is None else \
-                        _call_arguments(masked, offset)
+                        arguments_of_call(masked, offset)
                     if arguments is not None and len(arguments) == 1:
                         edits |= _as_parameter_of_argument(
                             masked, file, line, column, 0,
@@ -363,8 +360,8 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                               if note.startswith('passing argument to')),
                              None)
             masked = masked_of(file)
-            offset = None if masked is None else _offset(masked, line, column)
-            if offset is not None and _range_reference(masked, offset):
+            offset = None if masked is None else offset_of(masked, line, column)
+            if offset is not None and range_reference(masked, offset):
                 continue  # (a range-for's variable: its own edit)
             if parameter is None and masked is not None:
                 wanted = _NO_CONVERSION.match(message).group(1)
@@ -409,7 +406,7 @@ def edits_from_notes(errors, read_code, *, parameter_types,
                     # *const' of a vector's push_back)
                     real = re.sub(r'\s*\bconst$', '',
                                   match.group(3) or match.group(2))
-                    named = _STRING if _CONSTANT_FOR_STRING.match(note) \
+                    named = STRING if _CONSTANT_FOR_STRING.match(note) \
                         else real if _C_STRING.match(real) \
                         else _named_in(masked_of(file), match.group(2))
                     if named:
@@ -426,11 +423,11 @@ def edits_from_notes(errors, read_code, *, parameter_types,
         elif _NO_ASSIGNMENT.match(message) or \
                 _NOT_ASSIGNABLE.match(message):
             masked = masked_of(file)
-            offset = None if masked is None else _offset(masked, line, column)
+            offset = None if masked is None else offset_of(masked, line, column)
             if offset is not None and masked[offset] != '=':
-                offset = _end_before(masked, offset) - 1  # the value's `=`
+                offset = end_before(masked, offset) - 1  # the value's `=`
             if offset is not None and _assignment(masked, offset):
-                at_line, at_column = _position(masked, offset)
+                at_line, at_column = position_of(masked, offset)
                 edits.add((ASSIGNED, f'{file}:{at_line}:{at_column}'))
     return edits
 
@@ -440,15 +437,15 @@ def _assignment(masked, equals):
     if masked[equals] != '=' or masked[equals + 1:equals + 2] == '=' or \
             masked[equals - 1:equals] in '=!<>+-*/%&|^':
         return None
-    start = _statement_start(masked, equals)
+    start = statement_start(masked, equals)
     target = ' '.join(masked[start:equals].split())
-    if not _TARGET.match(target) or target.split()[0] in _KEYWORDS:
+    if not _TARGET.match(target) or target.split()[0] in KEYWORDS:
         return None
     value = equals + 1
     while value < len(masked) and masked[value].isspace():
         value += 1
     end = None if masked[value:value + 1] == '{' else \
-        _end_of_argument(masked, value)
+        end_of_argument(masked, value)
     return None if end is None else (target, value, end)
 
 
@@ -471,8 +468,8 @@ def _as_pointer(masked, file, line, column, mismatch):
 
 def _after_new(masked, line, column):
     """Whether the code at (line, column) follows a `new`."""
-    offset = None if masked is None else _offset(masked, line, column)
-    return offset is not None and _word_before(masked, offset) == 'new'
+    offset = None if masked is None else offset_of(masked, line, column)
+    return offset is not None and word_before(masked, offset) == 'new'
 
 
 def _named_in(masked, spelled):
@@ -483,7 +480,7 @@ def _named_in(masked, spelled):
     reads `int`: a class the file does not name as spelled is no edit's.
     """
     core = re.sub(r'^const\s+|[\s*&]+$', '', spelled)
-    if not core or _BUILTIN.match(core):
+    if not core or BUILTIN.match(core):
         return None
     pattern = r'(?<![\w:])' + r'\s*'.join(
         re.escape(part) for part in re.findall(r'\w+|\S', core))
@@ -492,19 +489,19 @@ def _named_in(masked, spelled):
 
 def _initializer_of(masked, line, column):
     """Where the initializer of the variable at (line, column) begins."""
-    offset = _offset(masked, line, column)
+    offset = offset_of(masked, line, column)
     declarator = None if offset is None else \
-        _DECLARATOR.match(masked, offset)
+        DECLARATOR.match(masked, offset)
     return (line, column) if declarator is None else \
-        _position(masked, declarator.end())
+        position_of(masked, declarator.end())
 
 
 def _as_parameter(masked, file, line, column, parameter):
     """The edit that makes the value at a position a `parameter`."""
-    if masked is None or not parameter or _UNNAMEABLE.search(parameter):
+    if masked is None or not parameter or UNNAMEABLE.search(parameter):
         return set()
-    offset = _offset(masked, line, column)
-    if offset is None or _end_of_argument(masked, offset) is None:
+    offset = offset_of(masked, line, column)
+    if offset is None or end_of_argument(masked, offset) is None:
         return set()
     target = re.sub(r'\s*&+$', '', parameter)
     return {(f'{AS}:{quote(target, safe="")}', f'{file}:{line}:{column}')}
@@ -515,24 +512,24 @@ def _as_parameter_of_argument(masked, file, line, column, index,
     """The same for the index-th argument of the call at a position."""
     if masked is None:
         return set()
-    callee = _offset(masked, line, column)
-    arguments = None if callee is None else _call_arguments(masked, callee)
+    callee = offset_of(masked, line, column)
+    arguments = None if callee is None else arguments_of_call(masked, callee)
     if not arguments or index >= len(arguments):
         return set()
-    at_line, at_column = _position(masked, arguments[index][0])
+    at_line, at_column = position_of(masked, arguments[index][0])
     return _as_parameter(masked, file, at_line, at_column, parameter)
 
 
 def _address_argument(masked, file, line, column, index):
     """The edit that drops the `&` of the index-th argument of a call."""
-    callee = None if masked is None else _offset(masked, line, column)
-    arguments = None if callee is None else _call_arguments(masked, callee)
+    callee = None if masked is None else offset_of(masked, line, column)
+    arguments = None if callee is None else arguments_of_call(masked, callee)
     if not arguments or index >= len(arguments):
         return set()
     start = arguments[index][0]
-    if _address_of(masked, start) != start:
+    if address_of(masked, start) != start:
         return set()
-    at_line, at_column = _position(masked, start)
+    at_line, at_column = position_of(masked, start)
     return {(ADDRESS, f'{file}:{at_line}:{at_column}')}
 
 
@@ -565,7 +562,7 @@ def _as_deduced(masked, file, conflict, arguments):
         return made(lambda t: _unscoped(t) == 'Any',
                     f'::rsia_model::{own.pop()}') if len(own) == 1 else set()
     catch_all = next(t for t in spellings if t != real[0])
-    if catch_all != 'Any' and _BUILTIN.match(real[0]):
+    if catch_all != 'Any' and BUILTIN.match(real[0]):
         return made(lambda t: _unscoped(t) == real[0],
                     f'::rsia_model::{catch_all}')
     deduced = next((re.sub(r'^const |\s*&+$', '', t)
@@ -590,288 +587,16 @@ def _kind_of(message):
                           (RANGE_REFERENCE, _ELEMENT_CONVERSION_ERROR),
                           (INDEX, _INDEX_ERROR),
                           (MEMBER_POINTER, _MEMBER_POINTER_ERROR),
-                          (OPERAND, _LITERAL_OPERAND_ERROR),
-                          (OPERAND, _NULL_OPERAND_ERROR),
-                          (OPERAND, _OTHER_OPERAND_ERROR),
-                          (OPERAND, _MUTUAL_OPERAND_ERROR)):
+                          (OPERAND, LITERAL_OPERAND_ERROR),
+                          (OPERAND, NULL_OPERAND_ERROR),
+                          (OPERAND, OTHER_OPERAND_ERROR),
+                          (OPERAND, MUTUAL_OPERAND_ERROR)):
         if pattern.match(message):
             return kind
     return None
 
 
-def edited_files(edits, read_code):
-    """{file: (edited bytes, {line: [(disk column, inserted length)]})}.
-
-    :param edits: (kind, "file:line:column") pairs, of any repair kinds
-      (the others are left out)
-    :param read_code: as for :func:`edits_from_diagnostics`
-    """
-    by_file = {}
-    for kind, name in edits:
-        if not is_edit(kind):
-            continue
-        file, line, column = name.rsplit(':', 2)
-        by_file.setdefault(file, set()).add((kind, int(line), int(column)))
-    result = {}
-    for file, positions in sorted(by_file.items()):
-        code = read_code(file)
-        if code is None:
-            continue
-        masked = _masked(code)
-        changes = set()  # (offset, characters replaced, replacement)
-        for kind, line, column in sorted(positions):
-            offset = _offset(masked, line, column)
-            if offset is not None:
-                changes.update(_changes(kind, masked, offset))
-        if not changes:
-            continue
-        insertions = {}
-        for offset, replaced, replacement in sorted(changes, reverse=True):
-            code = code[:offset] + replacement + code[offset + replaced:]
-            if len(replacement) != replaced:
-                line, column = _position(masked, offset)
-                insertions.setdefault(line, []).append(
-                    (column, len(replacement) - replaced))
-        result[file] = (code.encode('latin-1'),
-                        {line: sorted(shifts)
-                         for line, shifts in insertions.items()})
-    return result
-
-
-def disk_column(insertions, line, column):
-    """The column on disk of a column of the edited text's `line`.
-
-    :param insertions: what :func:`edited_files` gives for the file, or {}
-    """
-    shift = 0
-    for at, length in insertions.get(line, ()):
-        if column <= at + shift:
-            break
-        shift += length
-    return max(1, column - shift)
-
-
-def edited_column(insertions, line, column):
-    """The column in the edited text of a column on disk (see above)."""
-    return column + sum(length for at, length in insertions.get(line, ())
-                        if at <= column)
-
-
-def _changes(kind, masked, offset):
-    """[(offset, characters replaced, replacement)] of the edit at offset.
-
-    None when the code there is not what the edit was made for.
-    """
-    kind, _, detail = kind.partition(':')
-    if kind == CAST:
-        return _casts(masked, offset, unquote(detail).split(';'))
-    if kind == AS:
-        end = _end_of_argument(masked, offset)
-        made = unquote(detail)
-        # (a std::unique_ptr is moved from, never copied: an rvalue)
-        function = 'assigned_as' if _MOVE_ONLY.match(made) else 'as'
-        return [] if end is None else [
-            (offset, 0, f'::rsia_model::{function}<{made}>('), (end, 0, ')')]
-    if kind == ASSIGNED:
-        assignment = _assignment(masked, offset)
-        if assignment is None:
-            return []
-        target, value, end = assignment
-        return [(value, 0,
-                 f'::rsia_model::assigned_as<decltype({target})>('),
-                (end, 0, ')')]
-    change = None
-    if kind == LAMBDA_RESULT:
-        if masked[offset] == '{' and \
-                _lambda_kind(masked, offset) is not None:
-            has_parameters = _lambda_kind(masked, offset)
-            change = offset, 0, \
-                _RESULT if has_parameters else '() ' + _RESULT
-    elif kind in (AUTO_POINTER, ADDRESS, RANGE_REFERENCE):
-        blanked = '*' if kind == AUTO_POINTER else '&'
-        if masked[offset] == blanked and \
-                masked[offset + 1:offset + 2] != blanked:
-            change = offset, 1, ' '
-    elif kind == BINDING:
-        change = _bound_initializer(masked, offset)
-    elif kind == MEMBER_POINTER and masked.startswith(('.*', '->*'), offset):
-        # the object and its `.`/`->` blanked, the `*` kept
-        star = masked.index('*', offset)
-        start = offset
-        while start > 0 and re.match(r'[\w.:>\-\[\]]', masked[start - 1]):
-            start -= 1
-        if start < offset:
-            change = start, star - start, ' ' * (star - start)
-    elif kind == INDEX:
-        close = _matching(masked, offset) if masked[offset] == '[' else None
-        return [] if close is None else [
-            (offset + 1, 0, '::rsia_model::as<long>('), (close, 0, ')')]
-    elif kind == OPERAND:
-        which, _, type_name = detail.partition(':')
-        type_name = unquote(type_name)
-        spans = _operands(masked, offset)
-        if spans is None:
-            return []
-        start, end = spans[int(which) - 2]
-        # (only a literal is blank once literals are masked)
-        if (not masked[start:end].strip()) != (type_name == _STRING):
-            return []
-        return [(start, 0, f' ::rsia_model::as<{type_name}>('), (end, 0, ')')]
-    elif kind in _CAST_KEYWORDS and \
-            masked.startswith(_CAST_KEYWORDS[kind][0], offset):
-        # (a cast between classes that know no bases of each other; a
-        # value made the pointer wanted, see message.h's `as`)
-        keyword, replacement = _CAST_KEYWORDS[kind]
-        change = offset, len(keyword), replacement
-    elif kind == CONSTEXPR and masked.startswith('constexpr', offset):
-        # in a class, a static member keeps an initializer of any type
-        # only as an inline variable; elsewhere a `static const` takes any,
-        # and a lambda uses it uncaptured, as it would the constant
-        static = _word_before(masked, offset) == 'static'
-        change = offset, len('constexpr'), \
-            'inline   ' if static else 'static const'
-    return [] if change is None else [change]
-
-
-def _casts(masked, callee, types):
-    """The insertions that cast a call's arguments to `types`.
-
-    A braced argument (`{lane}`) has no type to cast: it is made a
-    temporary of the parameter's class (`std::vector<Lanelet>{lane}`),
-    unless the parameter is a reference to a class to change.
-    """
-    arguments = _call_arguments(masked, callee)
-    if arguments is None or len(arguments) > len(types):
-        return []
-    changes = []
-    for (start, end), parameter in zip(arguments, types):
-        if masked[start] == '{':
-            if not re.search(r'(?<!&)&$', parameter) or \
-                    parameter.startswith('const '):
-                changes.append((start, 0, re.sub(
-                    r'^const\s+|\s*&+$', '', parameter)))
-        else:
-            # (no static_cast: a catch-all converts to a class that has
-            # constructors of its own, `const_iterator`, more ways than one)
-            made = 'assigned_as' if parameter.endswith('&&') else 'as'
-            changes += [(start, 0, f'::rsia_model::{made}<{parameter}>('),
-                        (end, 0, ')')]
-    return changes
-
-
-def _end_of_argument(masked, start):
-    """The end of the argument or initializer that starts at start.
-
-    Before the `,`, `)` or `;` that ends it; None when a block (a `;`
-    inside brackets) comes first.
-    """
-    if masked[start].isspace() or masked[start] in ',)':
-        return None
-    ending = _expression_end(masked, start)
-    if ending is None:
-        return None
-    end, inner_statement = ending
-    if inner_statement or masked[end] in ']}':
-        return None
-    return _end_before(masked, end)
-
-
-def _expression_end(masked, start):
-    """(offset, inner statement) of what ends the expression at start.
-
-    The offset of the first `,` or `;` at the expression's own level, or
-    of the bracket that closes around it; whether a `;` inside brackets
-    (a lambda's body) came before it. None past the scan's limit.
-    """
-    depth = 0
-    inner_statement = False
-    skip_to = start
-    for i in range(start, min(len(masked), start + _SCAN_LIMIT)):
-        if i < skip_to:
-            continue
-        character = masked[i]
-        if character == '<' and i > start and \
-                (masked[i - 1].isalnum() or masked[i - 1] == '_'):
-            # template arguments, written against the name (`T<A, 1>`;
-            # a comparison has spaces): their commas end nothing
-            skip_to = end_of_template_arguments(masked, i) or i
-        elif character in '([{':
-            depth += 1
-        elif character in ')]}':
-            if depth == 0:
-                return i, inner_statement
-            depth -= 1
-        elif character in ',;' and depth == 0:
-            return i, inner_statement
-        elif character == ';':
-            inner_statement = True
-    return None
-
-
-def _call_arguments(masked, callee):
-    """[(start, end)] of the arguments of the call of the callee there."""
-    name = _CALLEE.match(masked, callee)
-    if name is None:
-        return None
-    opening = end_of_template_arguments(masked, name.end()) or name.end()
-    while opening < len(masked) and masked[opening].isspace():
-        opening += 1
-    if masked[opening:opening + 1] != '(':
-        return None
-    return _arguments(masked, opening)
-
-
-def _arguments(masked, opening):
-    """[(start, end)] of the arguments of the call whose `(` is at opening.
-
-    A literal, blank in the masked code, keeps its place (its span blank):
-    the arguments after it keep their indexes.
-    """
-    closing = _matching(masked, opening)
-    if closing is None:
-        return None
-    spans = []
-    start = opening + 1
-    depth = 0
-    for i in range(opening + 1, closing + 1):
-        character = masked[i]
-        if character in '([{':
-            depth += 1
-        elif character in ')]}' and i < closing:
-            depth -= 1
-        elif character == ',' and depth == 0 or i == closing:
-            first = _end_before(masked, i)  # (the argument's end)
-            begin = start
-            while begin < first and masked[begin].isspace():
-                begin += 1
-            if begin < first:
-                spans.append((begin, first))
-            elif i - start >= 2:  # (`"name"`: blank, two quotes at least)
-                spans.append((start, i))
-            start = i + 1
-    return spans
-
-
-def _bound_initializer(masked, names):
-    """The insertion that gives the binding `[...]` at `names` a Bound."""
-    if masked[names] != '[':
-        return None
-    end = _matching(masked, names)
-    if end is None:
-        return None
-    count = _top_level_commas(masked, names + 1, end) + 1
-    after = end + 1
-    while after < len(masked) and masked[after].isspace():
-        after += 1
-    follows = masked[after:after + 2]
-    if follows[:1] in ('=', '(', '{') and follows != '==':
-        return after + 1, 0, f' ::rsia_model::Bound<{count}>() <<= '
-    if follows[:1] == ':' and follows != '::':
-        return after + 1, 0, f' ::rsia_model::BoundEach<{count}>() <<= '
-    return None
-
-
-def _operand_edit(masked, file, question, message):
+def operand_edit(masked, file, question, message):
     """The edit that gives one operand of the conditional at `?` a type.
 
     A literal beside a catch-all becomes a std::string, and so does an int
@@ -881,37 +606,37 @@ def _operand_edit(masked, file, question, message):
     that class. The literal is the operand that is only white space once
     literals are masked (adjacent literals too); it is wrapped whole.
     """
-    spans = _operands(masked, question)
+    spans = operands(masked, question)
     if spans is None:
         return set()
     texts = [masked[start:end].strip() for start, end in spans]
     which = type_name = None
-    literal = _LITERAL_OPERAND_ERROR.match(message)
-    mutual = _MUTUAL_OPERAND_ERROR.match(message)
-    other = _OTHER_OPERAND_ERROR.match(message)
+    literal = LITERAL_OPERAND_ERROR.match(message)
+    mutual = MUTUAL_OPERAND_ERROR.match(message)
+    other = OTHER_OPERAND_ERROR.match(message)
     if literal and (literal.group(1) or literal.group(2)):
-        which, type_name = (2 if literal.group(1) else 3), _STRING
+        which, type_name = (2 if literal.group(1) else 3), STRING
         if texts[which - 2]:
             return set()
-    elif _NULL_OPERAND_ERROR.match(message) and 'nullptr' in texts:
-        which, type_name = texts.index('nullptr') + 2, _CATCH_ALL_VALUE
+    elif NULL_OPERAND_ERROR.match(message) and 'nullptr' in texts:
+        which, type_name = texts.index('nullptr') + 2, CATCH_ALL_VALUE
     elif mutual:
-        catch_alls = [bool(_CATCH_ALL.match(_aliased(t)))
+        catch_alls = [bool(_CATCH_ALL.match(aliased(t)))
                       for t in mutual.groups()]
         if catch_alls in ([True, False], [False, True]):
             # the other operand becomes the catch-all's
-            which, type_name = 3 if catch_alls[0] else 2, _CATCH_ALL_VALUE
+            which, type_name = 3 if catch_alls[0] else 2, CATCH_ALL_VALUE
     elif other:
         types = other.groups()
-        catch_alls = [bool(_CATCH_ALL.match(_aliased(t))) for t in types]
-        constants = [bool(re.match(r'^(?:const )?int$', _aliased(t)))
+        catch_alls = [bool(_CATCH_ALL.match(aliased(t))) for t in types]
+        constants = [bool(re.match(r'^(?:const )?int$', aliased(t)))
                      for t in types]
-        strings = [bool(_STRING_TYPE.match(_aliased(t))) for t in types]
+        strings = [bool(STRING_TYPE.match(aliased(t))) for t in types]
         if constants in ([True, False], [False, True]) and any(strings):
             # a message's string constant, an int in the model, beside a
             # string (`stopped ? Scenario::PARKING : current`): the real
             # code has two strings
-            which, type_name = (2 if constants[0] else 3), _CONSTANT_STRING
+            which, type_name = (2 if constants[0] else 3), CONSTANT_STRING
         elif catch_alls in ([True, False], [False, True]):
             # the catch-all becomes the other's class, as the code names it
             which = 2 if catch_alls[0] else 3
@@ -919,277 +644,41 @@ def _operand_edit(masked, file, question, message):
             type_name = _named_in(masked, re.sub(r'^const ', '', spelled))
     if which is None or type_name is None:
         return set()
-    at_line, at_column = _position(masked, question)
+    at_line, at_column = position_of(masked, question)
     return {(f'{OPERAND}:{which}:{quote(type_name, safe="")}',
              f'{file}:{at_line}:{at_column}')}
 
 
-def _aliased(spelled):
+def aliased(spelled):
     """What a message's type names: its aka's type, or its own."""
     match = re.match(r"^'(.*?)'(?: \(aka '(.*)'\))?$", spelled)
     return (match.group(2) or match.group(1)) if match else spelled
 
 
-def _operands(masked, question):
-    """[(start, end)] of the second and third operands of a `?`, or None.
-
-    Each with the white space around it.
-    """
-    if masked[question] != '?':
-        return None
-    colon = _conditional_colon(masked, question)
-    ending = None if colon is None else _expression_end(masked, colon + 1)
-    if ending is None:
-        return None
-    return [(question + 1, colon), (colon + 1, ending[0])]
-
-
-def _conditional_colon(masked, question):
-    """Offset of the `:` pairing with the `?` at question, or None."""
-    depth = 0
-    nested = 0
-    for i in range(question + 1, min(len(masked), question + _SCAN_LIMIT)):
-        character = masked[i]
-        if character in '([{':
-            depth += 1
-        elif character in ')]};' and depth == 0:
-            return None
-        elif character in ')]}':
-            depth -= 1
-        elif depth == 0 and character == '?':
-            nested += 1
-        elif depth == 0 and character == ':':
-            if masked[i + 1:i + 2] == ':' or masked[i - 1] == ':':
-                continue  # a scope's `::`
-            if not nested:
-                return i
-            nested -= 1
-    return None
-
-
-def _address_of(masked, offset):
-    """Offset of the `&` taking an address clang reported.
-
-    At the argument (a parameter's), or at the variable's name.
-    """
-    if masked[offset] == '&':
-        return offset if masked[offset + 1:offset + 2] != '&' else None
-    match = _INITIALIZED_ADDRESS.match(masked, offset)
-    return match.start(1) if match else None
-
-
-def _range_reference(masked, offset):
-    """Offset of the `&` of the range-for variable named at offset."""
-    if not re.match(r'[A-Za-z_]\w*\s*:(?!:)', masked[offset:offset + 200]):
-        return None
-    before = masked[:offset].rstrip()
-    if not before.endswith('&') or before.endswith('&&'):
-        return None
-    ampersand = len(before) - 1
-    head = masked[_statement_start(masked, ampersand):ampersand]
-    return ampersand if re.search(r'\bfor\s*\([^;()]*$', head) else None
-
-
-def _binding_names(masked, offset):
-    """Offset of the `[` of a structured binding clang reported."""
-    line_end = masked.find('\n', offset)
-    names = masked.find('[', offset, None if line_end < 0 else line_end)
-    return None if names < 0 else names
-
-
-def _lambda_body(masked, offset):
-    """Offset of the `{` opening the innermost lambda around a `return`."""
-    depth = 0
-    for i in range(offset - 1, max(-1, offset - _SCAN_LIMIT), -1):
-        character = masked[i]
-        if character == '}':
-            depth += 1
-        elif character == '{':
-            if depth:
-                depth -= 1
-                continue
-            opened = _opened_by(masked, i)
-            if opened == 'lambda':
-                return i
-            if opened != 'block':
-                return None
-    return None
-
-
-def _opened_by(masked, brace):
-    """What a `{` opens: 'lambda', 'block' (of a statement) or 'other'."""
-    if _lambda_kind(masked, brace) is not None:
-        return 'lambda'
-    end = _end_before(masked, brace)
-    if masked[end - 1:end] == ')':
-        opening = _matching(masked, end - 1)
-        if opening is not None and \
-                _word_before(masked, opening) in _BLOCK_HEADS:
-            return 'block'
-        return 'other'  # a function's body: no lambda is around it
-    return 'block'  # `else {`, `do {`, `{` alone, `case x: {`
-
-
-def _lambda_kind(masked, brace):
-    """For a lambda's body `{`: whether it has parameters; else None."""
-    end = _end_before(masked, brace)
-    # `mutable`, `noexcept` and the like between
-    while _word_before(masked, end) in (
-            'mutable', 'noexcept', 'constexpr', 'consteval'):
-        end = _end_before(masked, end - len(_word_before(masked, end)))
-    has_parameters = masked[end - 1:end] == ')'
-    if has_parameters:
-        opening = _matching(masked, end - 1)
-        if opening is None:
-            return None
-        end = _end_before(masked, opening)
-    if masked[end - 1:end] != ']':
-        return None
-    introducer = _matching(masked, end - 1)
-    if introducer is None:
-        return None
-    # `a[i] {` subscripts; a lambda follows an operator, `(`, `,`, `=` or
-    # a word such as `return`
-    word = _word_before(masked, introducer)
-    if word and word not in _BEFORE_LAMBDA:
-        return None
-    before = _end_before(masked, introducer)
-    if masked[before - 1:before] in (')', ']'):
-        return None
-    return has_parameters
-
-
-def _pointer_star(masked, offset):
-    """Offset of the `*` of `auto *name` (`name` at offset)."""
-    match = _AUTO_POINTER.search(masked, max(0, offset - 200), offset)
-    return match.start(1) if match else None
-
-
-def _constexpr_keyword(masked, offset):
-    """Offset of the `constexpr` declaring the variable at offset."""
-    keywords = list(_CONSTEXPR_WORD.finditer(
-        masked, _statement_start(masked, offset), offset))
-    return keywords[-1].start() if keywords else None
-
-
-def _cast_keyword(kind):
+def cast_keyword(kind):
     """The anchor of an edit of a cast: the keyword at or before offset."""
-    keyword = _CAST_KEYWORDS[kind][0]
+    keyword = CAST_KEYWORDS[kind][0]
     pattern = re.compile(rf'\b{keyword}\b')
 
     def anchor(masked, offset):
         found = list(pattern.finditer(
-            masked, _statement_start(masked, offset),
+            masked, statement_start(masked, offset),
             offset + len(keyword)))
         return found[-1].start() if found else None
     return anchor
 
 
-def _statement_start(masked, offset):
-    """Where the statement around offset begins (after `;`, `{` or `}`)."""
-    return max(masked.rfind(c, 0, offset) for c in ';{}') + 1
-
-
-# where each edit of edits_from_diagnostics goes, from where clang reports
-# its error (the operand's edit is placed by _operand_edit)
-_ANCHORS = {
-    LAMBDA_RESULT: _lambda_body,
-    AUTO_POINTER: _pointer_star,
-    CONSTEXPR: _constexpr_keyword,
-    BINDING: _binding_names,
-    ADDRESS: _address_of,
-    RANGE_REFERENCE: _range_reference,
+# where each edit is anchored, from the place clang reports its error
+ANCHORS = {
+    LAMBDA_RESULT: lambda_body,
+    AUTO_POINTER: pointer_star,
+    CONSTEXPR: constexpr_keyword,
+    BINDING: binding_names,
+    ADDRESS: address_of,
+    RANGE_REFERENCE: range_reference,
     INDEX: lambda masked, offset: offset if masked[offset] == '[' else None,
     MEMBER_POINTER: lambda masked, offset: offset if masked.startswith(
         ('.*', '->*'), offset) else None,
-    DYNAMIC_CAST: _cast_keyword(DYNAMIC_CAST),
-    REINTERPRET_CAST: _cast_keyword(REINTERPRET_CAST),
+    DYNAMIC_CAST: cast_keyword(DYNAMIC_CAST),
+    REINTERPRET_CAST: cast_keyword(REINTERPRET_CAST),
 }
-
-_PAIRED = {'(': ')', '[': ']', '{': '}', ')': '(', ']': '[', '}': '{'}
-
-
-def _matching(masked, at):
-    """Offset of the bracket that pairs with the one at `at`, or None.
-
-    Forward from an opening bracket, backward from a closing one.
-    """
-    own = masked[at]
-    other = _PAIRED[own]
-    step = 1 if own in '([{' else -1
-    depth = 0
-    for i in range(at, max(-1, min(len(masked), at + step * _SCAN_LIMIT)),
-                   step):
-        if masked[i] == own:
-            depth += 1
-        elif masked[i] == other:
-            depth -= 1
-            if depth == 0:
-                return i
-    return None
-
-
-def _top_level_commas(masked, start, end):
-    depth = 0
-    commas = 0
-    for character in masked[start:end]:
-        if character in '([{<':
-            depth += 1
-        elif character in ')]}>':
-            depth -= 1
-        elif character == ',' and depth == 0:
-            commas += 1
-    return commas
-
-
-def _end_before(masked, offset):
-    """The end of the code before offset, white space left out."""
-    while offset > 0 and masked[offset - 1].isspace():
-        offset -= 1
-    return offset
-
-
-def _word_before(masked, offset):
-    """The word that ends right before offset (white space between), or ''."""
-    end = _end_before(masked, offset)
-    start = end
-    while start > 0 and (masked[start - 1].isalnum() or masked[start - 1] == '_'):
-        start -= 1
-    return masked[start:end]
-
-
-def _masked_reader(read_code):
-    """A file's masked code (see :func:`_masked`), masked once a file."""
-    masked_code = {}
-
-    def masked_of(file):
-        if file not in masked_code:
-            code = read_code(file)
-            masked_code[file] = None if code is None else _masked(code)
-        return masked_code[file]
-    return masked_of
-
-
-def _masked(code):
-    """The code with comments and literals blanked (offsets kept)."""
-    return COMMENT_OR_STRING.sub(
-        lambda m: re.sub(r'[^\n]', ' ', m.group(0)), code)
-
-
-def _offset(code, line, column):
-    """Offset of a 1-based line and (byte) column, if inside the line."""
-    start = 0
-    for _ in range(line - 1):
-        start = code.find('\n', start) + 1
-        if start == 0:
-            return None
-    end = code.find('\n', start)
-    end = len(code) if end < 0 else end
-    offset = start + column - 1
-    return offset if start <= offset < end or (offset == end and column == 1) \
-        else None
-
-
-def _position(code, offset):
-    line = code.count('\n', 0, offset) + 1
-    return line, offset - (code.rfind('\n', 0, offset) + 1) + 1

@@ -1,0 +1,159 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Where a unit's repairs are kept, and what its package shares.
+
+A unit's repairs are data: ``<stub dir>/rsia_model/repair/<unit>.json``
+holds one record per repair (its kind, the name it declares or the place
+it edits, and the id of the rule that made it, see :mod:`.rules`). The
+repair header the parse force-includes is rendered from them
+(:mod:`.render`) each time they change; nothing is read back from it.
+"""
+
+import hashlib
+import json
+import os
+import re
+import threading
+
+from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
+    is_declared
+from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
+    model_declarations
+from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
+    one_kind_each
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import FUNCTION
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import INCLUDES
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import is_edit
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import MEMBER
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import MEMBER_KINDS
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import \
+    MEMBER_TEMPLATE
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import OBJECT
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TEMPLATE_USE
+from colcon_rsia.frontend.cpp.model_mode.recovery.render import render
+from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
+
+REPAIR_DIR = os.path.join('rsia_model', 'repair')
+REPAIRS_SCHEMA = 'colcon-rsia/repairs@1'
+# the rule id of repairs a unit starts with, from its package's other units
+SEEDED = 'seeded'
+
+
+def repair_header(stub_dir, source):
+    """The path of a unit's repair header (one per main file)."""
+    digest = hashlib.sha1(os.path.abspath(source).encode(
+        'utf-8', 'surrogateescape')).hexdigest()[:16]
+    stem = re.sub(r'\W', '_', os.path.basename(source))[:40]
+    return os.path.join(stub_dir, REPAIR_DIR, f'{stem}_{digest}.h')
+
+
+def _records_path(header):
+    return os.path.splitext(header)[0] + '.json'
+
+
+def ensure_repair_header(path, source):
+    """Create an empty repair header, so that it can be force-included."""
+    if not os.path.isfile(path):
+        write_atomically(path, render({}, source))
+
+
+def read_records(path):
+    """{(kind, name): rule id} of the repairs of a unit's repair header."""
+    try:
+        with open(_records_path(path), encoding='utf-8') as h:
+            data = json.load(h)
+        return {(r['kind'], r['name']): r['rule'] for r in data['repairs']}
+    except (OSError, ValueError, KeyError, TypeError):
+        return {}
+
+
+def read_repairs(path):
+    """{(kind, qualified name)} already declared in a repair header."""
+    return set(read_records(path))
+
+
+def add_repairs(path, source, repairs, rule=None):
+    """Add repairs to a unit's; return whether they grew.
+
+    :param repairs: {(kind, name): rule id}, or a set of (kind, name)
+      made by `rule`
+    """
+    if not isinstance(repairs, dict):
+        repairs = {repair: rule or SEEDED for repair in repairs}
+    known = read_records(path)
+    # a member declared as a value and then used as `obj.name<T>()`, a
+    # name as `name<T>(x)` after `using ns::name;`
+    uses = {name for kind, name in repairs if kind == TEMPLATE_USE}
+    templates = {MEMBER: MEMBER_TEMPLATE, OBJECT: FUNCTION}
+    rules = {}
+    for (kind, name), made_by in list(known.items()) + list(repairs.items()):
+        if kind == TEMPLATE_USE:
+            continue
+        if kind in templates and name.rsplit('::', 1)[-1] in uses:
+            kind = templates[kind]
+        rules.setdefault((kind, name), made_by)
+    merged = one_kind_each(set(rules))
+    if merged == set(known):
+        return False
+    write_records(path, source, {r: rules.get(r) or repairs.get(r) or SEEDED
+                                 for r in merged})
+    return True
+
+
+def write_records(path, source, records):
+    """Replace a unit's repairs with these, and render its header."""
+    write_atomically(_records_path(path), json.dumps({
+        'schema': REPAIRS_SCHEMA, 'source': source,
+        'repairs': [{'kind': kind, 'name': name, 'rule': rule}
+                    for (kind, name), rule in sorted(records.items())]},
+        indent=1) + '\n')
+    write_atomically(path, render(set(records), source))
+
+
+# what one unit needed that any unit of the package may need: qualified
+# names, macros and standard headers (shared through this file, so that the
+# units parsed later start with them and need fewer parses)
+SHARED_REPAIRS = 'package.repairs.json'
+_shared_lock = threading.Lock()
+
+
+def _shareable(repair):
+    kind, name = repair
+    if is_edit(kind):
+        return False  # a place in one file, which other units may not include
+    # (a member of a qualified class: with its class, which is shared too)
+    return kind in INCLUDES or kind.startswith('macro-') or (
+        '::' in name and (kind not in MEMBER_KINDS or
+                          '::' in name.rsplit('::', 1)[0]))
+
+
+def share_repairs(header, repairs):
+    """Offer a unit's repairs to the units of its package parsed later."""
+    path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
+    with _shared_lock:
+        known = _read_shared(path)
+        offered = {r for r in repairs if _shareable(r)}
+        if not offered <= known:
+            write_atomically(path, json.dumps(sorted(
+                [kind, name] for kind, name in known | offered)) + '\n')
+
+
+def seed_repairs(header, source, declared):
+    """Start a unit's (empty) repairs with its package's."""
+    path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
+    with _shared_lock:
+        shared = _read_shared(path)
+    # a unit may include the model header or the package header that
+    # another unit lacked: only names declared in neither are seeded
+    declared = set(declared) | model_declarations()
+    seeds = {r for r in shared
+             if r[0] in INCLUDES or not is_declared(r[1], declared)}
+    return bool(seeds) and add_repairs(header, source, seeds, SEEDED)
+
+
+def _read_shared(path):
+    try:
+        with open(path, encoding='utf-8') as h:
+            return {(kind, name) for kind, name in json.load(h)}
+    except (OSError, ValueError, TypeError):
+        return set()
