@@ -20,7 +20,13 @@ Ends with one line:
 RESULT ws=<name> packages=<n> failed=<n> internal_errors=<n> units=<n>
 units_with_errors=<n> (<pct>%) pub_recall=<pct> (<hit>/<sites>)
 sub_recall=<pct> (<hit>/<sites>) pub_in_nodes=<pct> sub_in_nodes=<pct>
-s_per_unit=<s> peak_mb=<mb>
+from_tokens=<n> rejected_summaries=<n> parses_per_unit=<n> s_per_unit=<s>
+peak_mb=<mb>
+
+``from_tokens`` counts the recorded call sites whose fact was read from
+tokens (the parse had lost the call); ``rejected_summaries`` the summaries
+the query side would not read (it must be 0); ``parses_per_unit`` the
+libclang parses per unit, its repairs included.
 
 The recall counts a call site with a fact anywhere in the package's units;
 ``*_in_nodes`` only those a node of the summary runs (a plugin's are in no
@@ -50,6 +56,8 @@ from colcon_rsia.package.call_sites import PUBLISHER  # noqa: E402,I100,I202
 from colcon_rsia.package.call_sites import scan_package  # noqa: E402
 from colcon_rsia.package.call_sites import SUBSCRIBER  # noqa: E402
 from colcon_rsia.package.coverage import match_sites  # noqa: E402
+from colcon_rsia.package.store import read_summary  # noqa: E402
+from colcon_rsia.package.store import SummaryError  # noqa: E402
 
 CXX_SOURCES = ('.cpp', '.cc', '.cxx', '.c++', '.C')
 
@@ -137,6 +145,31 @@ def _node_lines(summary):
     return lines
 
 
+def _parses(summary):
+    """(parses, units with coverage): each unit's first and repairs."""
+    units = ((summary or {}).get('coverage') or {}).get('units', [])
+    return sum(1 + u.get('repair_rounds', 0) for u in units), len(units)
+
+
+def _from_tokens(summary):
+    """The call sites recorded from tokens where the parse lost them."""
+    sites = ((summary or {}).get('coverage') or {}).get('call_sites', [])
+    return sum(1 for c in sites if c.get('origin') == 'tokens')
+
+
+def _accepted(build_base, package):
+    """Whether the query side accepts the summary the analysis wrote."""
+    path = build_base / package / 'rsia' / 'summary.json'
+    if not path.is_file():
+        return True  # nothing written (a failure, said apart)
+    try:
+        read_summary(str(path))
+    except SummaryError as e:
+        print(f'rejected: {e}')
+        return False
+    return True
+
+
 def _units(summary, path):
     """(units, units with errors in package code) of one package.
 
@@ -202,6 +235,11 @@ def main():
     for package, path in _packages(ws, output):
         summary = _summary(build_base, package)
         units, with_errors = _units(summary, path)
+        parses, parsed = _parses(summary)
+        totals['parses'] += parses
+        totals['parsed_units'] += parsed
+        totals['from_tokens'] += _from_tokens(summary)
+        totals['rejected'] += not _accepted(build_base, package)
         totals['units'] += units
         totals['units_with_errors'] += with_errors
         sites = scan_package(path)
@@ -221,6 +259,8 @@ def main():
             print(f'missed {site.role}: {package}/{site.file}:{site.line} '
                   f'({site.api})')
     units = totals['units']
+    parses_per_unit = totals['parses'] / totals['parsed_units'] \
+        if totals['parsed_units'] else 0
     pub = (totals[PUBLISHER + '_hits'], totals[PUBLISHER + '_sites'])
     sub = (totals[SUBSCRIBER + '_hits'], totals[SUBSCRIBER + '_sites'])
     print(f'RESULT ws={ws.name} '
@@ -232,6 +272,9 @@ def main():
           f'sub_recall={_percent(*sub)} ({sub[0]}/{sub[1]}) '
           f'pub_in_nodes={_percent(totals[PUBLISHER + "_nodes"], pub[1])} '
           f'sub_in_nodes={_percent(totals[SUBSCRIBER + "_nodes"], sub[1])} '
+          f'from_tokens={totals["from_tokens"]} '
+          f'rejected_summaries={totals["rejected"]} '
+          f'parses_per_unit={parses_per_unit:.2f} '
           f's_per_unit={elapsed / units if units else 0:.2f} '
           f'peak_mb={peak_mb:.0f}')
 

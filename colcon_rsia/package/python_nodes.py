@@ -100,6 +100,10 @@ def find_python_nodes(package_path):
     if layout.build_type == 'ament_python':
         _entry_points(package_path, layout)
     else:
+        # ament_cmake_python: a Python package of the CMake package, with
+        # the entry points of its own setup.cfg
+        for setup_cfg in _cmake_python_setup_cfgs(package_path):
+            _entry_points(package_path, layout, setup_cfg)
         for name, path in _installed_programs(package_path):
             if is_python_script(path):
                 scripts[path] = name
@@ -282,12 +286,16 @@ def _expand(word, variables):
 
 # --- setup.py / setup.cfg ---------------------------------------------------
 
-def _entry_points(package_path, layout):
-    layout.problems += safe_files.unreadable_files(
-        package_path, ['setup.py', 'setup.cfg'])
-    specs = _setup_py_console_scripts(package_path)
-    if specs is None:
-        specs = _setup_cfg_console_scripts(package_path)
+def _entry_points(package_path, layout, setup_cfg=None):
+    """The nodes of console_scripts: setup.py's, else setup.cfg's."""
+    if setup_cfg is None:
+        layout.problems += safe_files.unreadable_files(
+            package_path, ['setup.py', 'setup.cfg'])
+        specs = _setup_py_console_scripts(package_path)
+        if specs is None:
+            specs = _setup_cfg_console_scripts(package_path)
+    else:
+        specs = _setup_cfg_console_scripts(package_path, setup_cfg)
     for spec in specs or []:
         name, _, target = spec.partition('=')
         name = name.strip()
@@ -380,11 +388,38 @@ def _static(node, constants):
     return None
 
 
-def _setup_cfg_console_scripts(package_path):
+_INSTALL_PYTHON_PACKAGE = re.compile(
+    r'\bament_python_install_package\s*\(([^)]*)\)', re.IGNORECASE)
+
+
+def _cmake_python_setup_cfgs(package_path):
+    """The setup.cfg files ament_python_install_package() names.
+
+    ``ament_python_install_package(pkg SETUP_CFG pkg/setup.cfg ...)``
+    installs the package's Python package with that file's entry points
+    as executables (``${PROJECT_NAME}``: the name `project()` gives).
+    """
+    try:
+        text = safe_files.read_text(
+            os.path.join(package_path, 'CMakeLists.txt'),
+            roots=[package_path], errors='replace')
+    except OSError:
+        return []
+    project = re.search(r'\bproject\s*\(\s*([\w-]+)', text, re.IGNORECASE)
+    found = []
+    for call in _INSTALL_PYTHON_PACKAGE.finditer(text):
+        words = call.group(1).split()
+        if 'SETUP_CFG' in words[:-1] and project:
+            name = words[words.index('SETUP_CFG') + 1]
+            found.append(name.replace('${PROJECT_NAME}', project.group(1)))
+    return found
+
+
+def _setup_cfg_console_scripts(package_path, setup_cfg='setup.cfg'):
     parser = configparser.ConfigParser(interpolation=None)
     try:
         parser.read_string(safe_files.read_bytes(
-            os.path.join(package_path, 'setup.cfg'),
+            os.path.join(package_path, setup_cfg),
             roots=[package_path]).decode('utf-8'))
         value = parser.get('options.entry_points', 'console_scripts',
                            fallback='')
