@@ -98,3 +98,36 @@ def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
         ('~/input/odom', 'autoware_utils::InterProcessPollingSubscriber'),
         ('~/input/odometry', 'autoware_utils::InterProcessPollingSubscriber'),
     ]
+
+
+# the package that implements an API: its own declaration is the API's
+OWN_API = r"""
+#include <ros/ros.h>
+namespace image_transport
+{
+class Publisher {};
+class ImageTransport
+{
+public:
+  explicit ImageTransport(const ros::NodeHandle & nh);
+  Publisher advertise(const std::string & base_topic, uint32_t queue_size);
+};
+}  // namespace image_transport
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "republish");
+  ros::NodeHandle nh;
+  image_transport::ImageTransport it(nh);
+  image_transport::Publisher pub = it.advertise("out", 1);
+  ros::spin();
+}
+"""
+
+
+def test_an_api_declared_by_the_package_that_implements_it(tmp_path):
+    summary = analyse_source(tmp_path, 'image_transport', OWN_API)
+    [node] = summary.nodes
+    assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
+        ('out', 'image_transport::ImageTransport::advertise',
+         'sensor_msgs::Image')]

@@ -509,10 +509,13 @@ class _Walker:
                 self._store_callable(target, children[-1])
             elif target is not None and len(children) > 1:
                 self.string_variables.assignment(target, children[-1])
-        if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+        name = qualified_name(ref)
+        if ref.kind in FUNCTION_KINDS and self.in_package(ref) and \
+                ros_api.lookup_call(name) is None:
+            # (an API is the API wherever it is declared: in the package
+            # that implements it, image_transport's own advertise() is one)
             self._package_call(ctx, ref, cursor, list(cursor.get_arguments()))
             return
-        name = qualified_name(ref)
         if name.startswith(REPAIRED_PREFIX) or \
                 ref.spelling == REPAIRED_CONSTRUCTOR:
             name = repaired_call_name(cursor, ref) or name
