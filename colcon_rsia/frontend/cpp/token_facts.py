@@ -87,10 +87,16 @@ class _Loop:
 
 
 def _tokens(tu, extent):
-    return [_Token(t.kind.name, t.spelling, t.location.line,
-                   t.location.column, t.location.offset)
-            for t in tu.get_tokens(extent=extent)
-            if t.kind != ci.TokenKind.COMMENT]
+    tokens = []
+    for token in tu.get_tokens(extent=extent):
+        kind = token.kind
+        if kind == ci.TokenKind.COMMENT:
+            continue
+        # (one location: each access of token.location asks libclang again)
+        location = token.location
+        tokens.append(_Token(kind.name, token.spelling, location.line,
+                             location.column, location.offset))
+    return tokens
 
 
 def _brackets(tokens):
@@ -237,6 +243,12 @@ def _arithmetic(texts):
 def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
     """Add the facts the tokens of the unit's function bodies show.
 
+    Only bodies the parse may have lost something of are read: those with
+    an error inside, or whose body the AST has empty while the source is
+    not (a declaration clang rejected drops its body); after a fatal error
+    (a missing include) clang reports nothing more, and every body is
+    read. A clean unit costs nothing here.
+
     :param tu: the parsed unit
     :param facts: the unit's model.TuFacts, from the AST walk
     :param definitions: {function id: definition cursor} of the package's
@@ -246,15 +258,40 @@ def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
     :param resolved_calls: {file: {end offset: start offset}}: the calls
       the AST resolved, by their extents
     """
+    errors = {}
+    fatal = False
+    for diagnostic in tu.diagnostics:
+        location = diagnostic.location
+        fatal = fatal or diagnostic.severity >= ci.Diagnostic.Fatal
+        if diagnostic.severity >= ci.Diagnostic.Error and location.file:
+            errors.setdefault(location.file.name, []).append(location.offset)
     reader = _Reader(tu, facts, relpath=relpath, ros2=ros2,
                      resolved_calls=resolved_calls, definitions=definitions)
     for function_id, cursor in list(definitions.items()):
-        reader.function(function_id, cursor)
+        if fatal or _may_have_lost(cursor, errors):
+            reader.function(function_id, cursor)
     # a function registered as a callback is a root of its own, not
     # something the function naming it calls (the AST may have seen the
     # name alone, in a call it could not resolve)
     facts.calls = [c for c in facts.calls if not (
         c.kind == 'ref' and c.callee in reader.registered)]
+
+
+def _may_have_lost(cursor, errors):
+    """Whether the AST may lack calls of a function definition."""
+    extent = cursor.extent
+    if extent.start.file is None:
+        return False
+    start, end = extent.start.offset, extent.end.offset
+    if any(start <= offset <= end
+           for offset in errors.get(extent.start.file.name, ())):
+        return True
+    body = next((c for c in cursor.get_children()
+                 if c.kind == CK.COMPOUND_STMT), None)
+    # a body left empty although its braces hold more than blanks
+    return body is not None and next(body.get_children(), None) is None and \
+        body.extent.end.offset - body.extent.start.offset > 2 and \
+        len(list(body.get_tokens())) > 2
 
 
 class _Reader:
