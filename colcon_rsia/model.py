@@ -47,6 +47,8 @@ ROOT_TIMER = 'timer'
 ROOT_SERVICE = 'service'
 ROOT_ACTION = 'action'
 ROOT_ENTRY = 'entry'  # a function nobody calls: entered from outside
+# a publisher's callback run when a subscriber connects or disconnects
+ROOT_CONNECT = 'connect'
 # a plugin's methods its host calls (colcon_rsia.package.plugin_hosts)
 ROOT_HOST_PERIODIC = 'host_periodic'
 ROOT_HOST_REQUEST = 'host_request'
@@ -115,6 +117,9 @@ class PublisherFact:
     # 'ast', or 'tokens' where the AST had lost the call
     # (colcon_rsia.frontend.cpp.token_facts)
     origin: str = ORIGIN_AST
+    # function ids of the callbacks run when a subscriber connects or
+    # disconnects (roots of the node: a lazy node subscribes there)
+    status_callbacks: List[str] = field(default_factory=list)
 
 
 @dataclass

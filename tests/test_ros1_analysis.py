@@ -101,6 +101,7 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         'rsia_perception/scan_relay': 'scan_relay',
         'rsia_perception/image_processor': 'image_processor',
         'rsia_perception/stereo_sync': 'stereo_sync',
+        'rsia_perception/lazy_relay': 'lazy_relay',
     }
     names = {}
     for path in EXPECTED:

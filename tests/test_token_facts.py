@@ -226,3 +226,34 @@ def test_periods_from_tokens(written, seconds):
         assert value is None
     else:
         assert value == pytest.approx(seconds)
+
+
+SERIAL_PROTOCOL = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+template <class Packet>
+class Channel
+{
+public:
+  void configure(double frequency) { Packet::subscribe(frequency); }
+};
+void onCommand(const std_msgs::String::ConstPtr & msg) {}
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "base");
+  ros::NodeHandle nh;
+  ros::Subscriber command = nh.subscribe("command", 1, onCommand);
+  ros::spin();
+}
+"""
+
+
+def test_a_method_named_as_an_api_with_fewer_arguments_is_no_endpoint(
+        tmp_path):
+    # `Packet::subscribe(rate)`: a serial protocol's, on a template
+    # parameter (the AST reads it by name) and from tokens alike
+    summary = analyse_source(tmp_path / 'ast', 'base', SERIAL_PROTOCOL)
+    [node] = summary.nodes
+    assert [s.topic for s in node.subscribers] == ['command']
+    facts = _facts(tmp_path, SERIAL_PROTOCOL)
+    assert [s.topic for s in facts.subscribers] == ['command']

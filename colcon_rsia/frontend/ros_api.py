@@ -109,6 +109,9 @@ class Api:
     # the argument whose type is the message (rclcpp::wait_for_message's
     # output message)
     msg_type_arg: Optional[int] = None
+    # PUBLISHER: the arguments holding callbacks run when a subscriber
+    # connects or disconnects (a lazy node subscribes to its inputs there)
+    status_callback_args: tuple = ()
 
 
 NH = 'ros::NodeHandle::'
@@ -177,7 +180,7 @@ IT = 'image_transport::ImageTransport::'
 
 CALLS = {
     # roscpp
-    NH + 'advertise': Api(PUBLISHER, name_arg=0),
+    NH + 'advertise': Api(PUBLISHER, name_arg=0, status_callback_args=(2, 3)),
     NH + 'subscribe': Api(SUBSCRIBER, name_arg=0, callback_arg=2),
     NH + 'createTimer': Api(TIMER, callback_arg=1, period_arg=0),
     NH + 'createWallTimer': Api(TIMER, callback_arg=1, period_arg=0),
@@ -201,9 +204,11 @@ CALLS = {
     'ros::WallRate::sleep': Api(RATE_SLEEP),
     # image_transport
     IT + 'ImageTransport': Api(NODE_HANDLE),
-    IT + 'advertise': Api(PUBLISHER, name_arg=0, msg_type=IMAGE_MSG),
+    IT + 'advertise': Api(PUBLISHER, name_arg=0, msg_type=IMAGE_MSG,
+                          status_callback_args=(2, 3)),
     IT + 'advertiseCamera': Api(
-        PUBLISHER, name_arg=0, msg_type=IMAGE_MSG, camera=True),
+        PUBLISHER, name_arg=0, msg_type=IMAGE_MSG, camera=True,
+        status_callback_args=(2, 3, 4, 5)),
     IT + 'subscribe': Api(
         SUBSCRIBER, name_arg=0, callback_arg=2, msg_type=IMAGE_MSG),
     IT + 'subscribeCamera': Api(
@@ -422,36 +427,44 @@ NODELET_INIT_METHOD = 'onInit'
 # methods whose name alone says what a call does where the AST cannot tell:
 # on an object of a template parameter's type, or in code the parse lost
 # (frontend/cpp/token_facts.py). Only the endpoint-creating ones, which no
-# other library of the ROS world names so: name -> (ROS 1 API, ROS 2 API)
+# other library of the ROS world names so, and only with at least as many
+# arguments as the ROS API takes (a serial protocol's `subscribe(rate)` is
+# no subscription): name -> (ROS 1 API, ROS 2 API, fewest arguments)
 METHODS_BY_NAME = {
-    'advertise': ('ros::NodeHandle::advertise', None),
-    'subscribe': ('ros::NodeHandle::subscribe', None),
-    'createTimer': ('ros::NodeHandle::createTimer', None),
-    'createWallTimer': ('ros::NodeHandle::createWallTimer', None),
-    'createSteadyTimer': ('ros::NodeHandle::createSteadyTimer', None),
-    'advertiseService': ('ros::NodeHandle::advertiseService', None),
-    'create_publisher': (None, 'rclcpp::Node::create_publisher'),
-    'create_subscription': (None, 'rclcpp::Node::create_subscription'),
+    'advertise': ('ros::NodeHandle::advertise', None, 2),
+    'subscribe': ('ros::NodeHandle::subscribe', None, 3),
+    'createTimer': ('ros::NodeHandle::createTimer', None, 2),
+    'createWallTimer': ('ros::NodeHandle::createWallTimer', None, 2),
+    'createSteadyTimer': ('ros::NodeHandle::createSteadyTimer', None, 2),
+    'advertiseService': ('ros::NodeHandle::advertiseService', None, 2),
+    'create_publisher': (None, 'rclcpp::Node::create_publisher', 2),
+    'create_subscription': (None, 'rclcpp::Node::create_subscription', 3),
     'create_generic_publisher': (
-        None, 'rclcpp::Node::create_generic_publisher'),
+        None, 'rclcpp::Node::create_generic_publisher', 3),
     'create_generic_subscription': (
-        None, 'rclcpp::Node::create_generic_subscription'),
-    'create_wall_timer': (None, 'rclcpp::Node::create_wall_timer'),
-    'create_timer': (None, 'rclcpp::Node::create_timer'),
-    'create_service': (None, 'rclcpp::Node::create_service'),
+        None, 'rclcpp::Node::create_generic_subscription', 4),
+    'create_wall_timer': (None, 'rclcpp::Node::create_wall_timer', 2),
+    'create_timer': (None, 'rclcpp::Node::create_timer', 2),
+    'create_service': (None, 'rclcpp::Node::create_service', 2),
     # a publisher of a template's message type (a wrapper's)
-    'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish'),
+    'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish', 1),
 }
 # `rate.sleep()` on an object known to be a rate
 RATE_SLEEP_BY_NAME = ('ros::Rate::sleep', 'rclcpp::Rate::sleep')
 
 
-def dependent_method(method, *, ros2):
-    """The API a call of `method` stands for, by its name alone, or None."""
+def dependent_method(method, *, ros2, arguments=None):
+    """The API a call of `method` stands for, by its name alone, or None.
+
+    :param arguments: how many arguments the call writes (None: not known)
+    """
     names = METHODS_BY_NAME.get(method)
     if names is None:
         return None
-    name = names[1] if ros2 else names[0]
+    ros1_name, ros2_name, fewest = names
+    if arguments is not None and arguments < fewest:
+        return None
+    name = ros2_name if ros2 else ros1_name
     return name if name in CALLS else None
 
 

@@ -51,6 +51,9 @@ def find_roots(facts):
         add(timer.callback, model.ROOT_TIMER, timer.location)
     for subscriber in facts.subscribers:
         add(subscriber.callback, model.ROOT_SUBSCRIBER, subscriber.location)
+    for publisher in facts.publishers:
+        for callback in publisher.status_callbacks:
+            add(callback, model.ROOT_CONNECT, publisher.location)
     for service in facts.services:
         add(service.callback, model.ROOT_SERVICE, service.location)
     for action in facts.actions:

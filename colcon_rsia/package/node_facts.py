@@ -109,6 +109,8 @@ def _callbacks_registered_by(facts):
                 registered.setdefault(function, []).append(callback)
     for fact in facts.subscribers:
         add(fact.function, [fact.callback])
+    for fact in facts.publishers:
+        add(fact.function, fact.status_callbacks)
     for fact in facts.timers + facts.services:
         add(fact.function, [fact.callback])
     for fact in facts.actions:

@@ -129,11 +129,15 @@ class RosRoles:
             self._type_name(arguments, api) or \
             self._template_msg_type(typed, name)
         target = self.walker.target(cursor, stack)
+        status_callbacks = [
+            callback for position in api.status_callback_args
+            for callback in [self.walker.resolve_callback(
+                self.walker.argument(arguments, position))[0]] if callback]
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
             self.facts.publishers.append(model.PublisherFact(
                 handle_name=target.spelling if target is not None else None,
-                **common))
+                status_callbacks=status_callbacks, **common))
         self.walker.string_variables.concatenation(
             self.facts.publishers[-1:], literal,
             self.walker.argument(arguments, api.name_arg))

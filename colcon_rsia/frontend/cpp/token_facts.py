@@ -652,7 +652,7 @@ class _Reader:
             for constructor in self._constructors(made):
                 self._call_edge(ctx, constructor, start)
             return
-        api_name = self._api(name, qualifier, object_range, i)
+        api_name = self._api(name, qualifier, object_range, len(arguments))
         if api_name is None:
             if i > 0 and tokens[i - 1].text == 'new':
                 for constructor in self._constructors(
@@ -680,7 +680,7 @@ class _Reader:
         handler(i, arguments, ctx) if api.role == ros_api.RATE else \
             handler(arguments, ctx)
 
-    def _api(self, name, qualifier, object_range, i):
+    def _api(self, name, qualifier, object_range, arguments):
         """The qualified API a token call stands for, or None."""
         if qualifier:
             for candidate in (f'{qualifier}::{name}',
@@ -689,7 +689,7 @@ class _Reader:
                     return candidate
             if qualifier not in ('this', 'std', 'boost'):
                 # a base class's method (`Node::create_publisher`)
-                return self._api_by_name(name)
+                return self._api_by_name(name, arguments)
             return None
         if name == 'sleep':
             handle = self._object_handle(object_range)
@@ -697,12 +697,14 @@ class _Reader:
                     ros_api.RATE_SLEEP_BY_NAME[0]) \
                 if handle in self.rate_handles else None
         return self._api_of_object_type(name, object_range) or \
-            self._api_by_name(name)
+            self._api_by_name(name, arguments)
 
-    def _api_by_name(self, name):
+    def _api_by_name(self, name, arguments):
         """The API of a method name, of the unit's ROS version first."""
-        return ros_api.dependent_method(name, ros2=self.ros2) or \
-            ros_api.dependent_method(name, ros2=not self.ros2)
+        return ros_api.dependent_method(
+            name, ros2=self.ros2, arguments=arguments) or \
+            ros_api.dependent_method(
+                name, ros2=not self.ros2, arguments=arguments)
 
     def _api_of_object_type(self, name, object_range):
         """The API of the class the object's declaration names."""
@@ -992,8 +994,13 @@ class _Reader:
         common, handle_name = self._endpoint(arguments, ctx)
         if common['topic'] is None:
             return  # a constructor without a name: init() gives it later
+        status_callbacks = [
+            callback for position in self._current['api'].status_callback_args
+            for callback in [self._callback(
+                self._argument(arguments, position), ctx)[0]] if callback]
         self.facts.publishers.append(model.PublisherFact(
-            handle_name=handle_name, **common))
+            handle_name=handle_name, status_callbacks=status_callbacks,
+            **common))
 
     def _subscriber(self, arguments, ctx):
         if self._is_recorded('subscriber'):

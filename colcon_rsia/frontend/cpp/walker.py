@@ -64,6 +64,7 @@ from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
 from colcon_rsia.frontend.cpp.cursors import top_level_scopes
 from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.every_nth import every_nth
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
@@ -244,6 +245,9 @@ class _Walker:
             fact.callback = resolve(fact.callback)
         for fact in self.facts.actions:
             fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
+        for fact in self.facts.publishers:
+            fact.status_callbacks = [
+                c for c in map(resolve, fact.status_callbacks) if c]
 
     def _declaration(self, cursor):
         try:
@@ -576,7 +580,9 @@ class _Walker:
         rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
         if not rest:
             return None
-        return ros_api.dependent_method(rest[0], ros2=self.ros2)
+        return ros_api.dependent_method(
+            rest[0], ros2=self.ros2, arguments=len(written_arguments(
+                list(cursor.get_arguments()))))
 
     def publish_site(self, ctx, stack, cursor, api, handle):
         self.facts.publish_sites.append(model.PublishSite(
