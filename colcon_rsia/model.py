@@ -95,6 +95,9 @@ class Call:
     location: str
     loops: List[str] = field(default_factory=list)
     kind: str = 'call'
+    # a call of a virtual method: its qualified name (`ns::Base::run`),
+    # which every override of a derived class of the package answers
+    virtual: Optional[str] = None
 
 
 @dataclass

@@ -92,11 +92,45 @@ def unique(items):
 
 
 def merge_facts(units):
-    """Merge the facts of several translation units into one."""
+    """Merge the facts of several translation units into one.
+
+    A call of a virtual method also calls every override of it in the
+    package's classes derived from the method's class (which one runs is
+    the object's dynamic type).
+    """
     merged = model.TuFacts(source='')
     for unit in units:
         merged.extend(unit)
+    merged.calls += _override_calls(merged)
     return merged
+
+
+def _override_calls(facts):
+    """Calls of the overrides of the virtual methods the calls name."""
+    virtual = [c for c in facts.calls if c.virtual]
+    if not virtual:
+        return []
+    derived = {}
+    for name, base in facts.class_bases:
+        derived.setdefault(base, set()).add(name)
+    by_name = {}
+    for function in facts.functions:
+        by_name.setdefault(function.name, []).append(function.id)
+    calls = []
+    for call in virtual:
+        owner, _, method = call.virtual.rpartition('::')
+        # the classes derived from the method's class, at any depth
+        found, todo = set(), list(derived.get(owner, ()))
+        while todo:
+            current = todo.pop()
+            if current not in found:
+                found.add(current)
+                todo.extend(derived.get(current, ()))
+        for name in sorted(found):
+            calls += [replace(call, callee=override, virtual=None)
+                      for override in by_name.get(f'{name}::{method}', ())
+                      if override != call.callee]
+    return calls
 
 
 def _callbacks_registered_by(facts):

@@ -472,10 +472,11 @@ class _Walker:
             if child.kind == CK.COMPOUND_STMT:
                 self._visit(child, inner, [])
 
-    def _add_call(self, ctx, callee, cursor, kind='call'):
+    def _add_call(self, ctx, callee, cursor, kind='call', virtual=None):
         self.facts.calls.append(model.Call(
             caller=ctx.function, callee=callee,
-            location=self.location(cursor), loops=ctx.loop_ids(), kind=kind))
+            location=self.location(cursor), loops=ctx.loop_ids(), kind=kind,
+            virtual=virtual))
 
     def _reference(self, cursor, ctx, stack):
         """A function named but not called here: it may be called later."""
@@ -618,7 +619,9 @@ class _Walker:
 
     def _package_call(self, ctx, callee, cursor, arguments):
         """A call of the package's function (or constructor) `callee`."""
-        self._add_call(ctx, callee.get_usr(), cursor)
+        virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
+        self._add_call(ctx, callee.get_usr(), cursor,
+                       virtual=qualified_name(callee) if virtual else None)
         self._bind_arguments(callee.get_usr(), arguments,
                              caller=ctx.function)
         self._bind_parameters(callee, arguments)
