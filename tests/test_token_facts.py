@@ -257,3 +257,29 @@ def test_a_method_named_as_an_api_with_fewer_arguments_is_no_endpoint(
     assert [s.topic for s in node.subscribers] == ['command']
     facts = _facts(tmp_path, SERIAL_PROTOCOL)
     assert [s.topic for s in facts.subscribers] == ['command']
+
+
+CONSTRUCTED = """\
+#include <ros/ros.h>
+class Node
+{
+public:
+  Node(const Options & options, int queue);
+  void start();
+};
+void run()
+{
+  Node node(load_options("config"), 3);
+  node.start();
+}
+"""
+
+
+def test_a_variable_made_by_its_constructor_runs_it(tmp_path):
+    # the declaration fails (Options and load_options unknown): the
+    # constructor, defined in another unit, is still what `run` calls
+    facts = _facts(tmp_path, CONSTRUCTED)
+    [run] = [f for f in facts.functions if f.name == 'run']
+    callees = {c.callee for c in facts.calls if c.caller == run.id}
+    # (clang's id of a constructor of class Node)
+    assert [c for c in callees if '@S@Node@F@Node#' in c], callees

@@ -240,7 +240,8 @@ def _arithmetic(texts):
     return value if position == len(texts) else None
 
 
-def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
+def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls,
+                  classes=None):
     """Add the facts the tokens of the unit's function bodies show.
 
     Only bodies the parse may have lost something of are read: those with
@@ -257,6 +258,8 @@ def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
     :param ros2: whether the unit uses rclcpp (a method name's API)
     :param resolved_calls: {file: {end offset: start offset}}: the calls
       the AST resolved, by their extents
+    :param classes: {class name: [definition cursor]} of the package's
+      classes, whose constructors a declaration may run
     """
     errors = {}
     fatal = False
@@ -266,7 +269,8 @@ def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls):
         if diagnostic.severity >= ci.Diagnostic.Error and location.file:
             errors.setdefault(location.file.name, []).append(location.offset)
     reader = _Reader(tu, facts, relpath=relpath, ros2=ros2,
-                     resolved_calls=resolved_calls, definitions=definitions)
+                     resolved_calls=resolved_calls, definitions=definitions,
+                     classes=classes or {})
     for function_id, cursor in list(definitions.items()):
         if fatal or _may_have_lost(cursor, errors):
             reader.function(function_id, cursor)
@@ -298,9 +302,11 @@ class _Reader:
     """Reads function bodies as tokens; see :func:`recover_facts`."""
 
     def __init__(  # noqa: D107
-            self, tu, facts, *, relpath, ros2, resolved_calls, definitions):
+            self, tu, facts, *, relpath, ros2, resolved_calls, definitions,
+            classes):
         self.tu = tu
         self.definitions = definitions
+        self.classes = classes
         self.facts = facts
         self.relpath = relpath
         self.ros2 = ros2
@@ -642,9 +648,14 @@ class _Reader:
             i - 2 * len(qualifier.split('::')) if qualifier else i
         arguments = self._arguments(opening, closing)
         if self._declares(i):
-            # `ros::Rate r(10);`: a variable made, not a call by its name
+            # `ros::Rate r(10);`: a variable made, not a call by its name;
+            # `Node node(options);` runs a constructor of the package
             if self._rate_type(i):
                 self._rate(i, arguments, ctx)
+            else:
+                for constructor in self._constructors(self._type_before(
+                        self._type_end(i))):
+                    self._call_edge(ctx, constructor, self._type_end(i))
             return
         if name in ros_api.FORWARDING_FACTORY_NAMES and template is not None:
             # make_shared<C>(...): C's constructor
@@ -875,10 +886,25 @@ class _Reader:
         return None, None
 
     def _constructors(self, class_name):
-        """The ids of the unit's constructors of a class."""
+        """The ids of the package's constructors of a class.
+
+        Those the unit defines, and those the class declares (defined in
+        another unit: the same ids).
+        """
         short = class_name.rsplit('::', 1)[-1]
-        return [f.id for f in self.by_short_name.get(short, ())
-                if f.name.endswith(f'{class_name}::{short}')]
+        found = [f.id for f in self.by_short_name.get(short, ())
+                 if f.name.endswith(f'{class_name}::{short}')]
+        for definition in self.classes.get(short, ()):
+            found += [child.get_usr() for child in definition.get_children()
+                      if child.kind == CK.CONSTRUCTOR]
+        return list(dict.fromkeys(found))
+
+    def _type_end(self, i):
+        """The last token of the type a declaration at `i` declares."""
+        j = i - 1
+        while j > 0 and self.tokens[j].text in ('*', '&', '&&'):
+            j -= 1
+        return j
 
     def _declaration_of(self, function_id, short):
         if function_id in self.definitions:

@@ -127,6 +127,8 @@ class _Walker:
         self._wrappers = wrappers.Summaries(self, external_wrappers)
         # {function id: definition} of the package's functions walked
         self._definitions = {}
+        # {class name: [definition]} of the package's classes
+        self._classes = {}
         # {file: {end offset: start offset}}: the calls the AST resolved,
         # which the tokens of their place then leave alone (a call is known
         # by where its `)` ends: its callee's spelling may be an operator's)
@@ -209,8 +211,8 @@ class _Walker:
         # what the AST lost of the bodies walked, from their tokens
         token_facts.recover_facts(
             tu, self.facts, definitions=self._definitions,
-            relpath=self.relative_path, ros2=self.ros2,
-            resolved_calls=self._resolved_calls)
+            classes=self._classes, relpath=self.relative_path,
+            ros2=self.ros2, resolved_calls=self._resolved_calls)
         if len(self.problems) > MAX_DIAGNOSTICS_PER_TU:
             lost = len(self.problems) - MAX_DIAGNOSTICS_PER_TU
             del self.problems[MAX_DIAGNOSTICS_PER_TU:]
@@ -227,6 +229,7 @@ class _Walker:
         self.facts.wrappers = self._wrappers.exported(self._definitions)
         # cursors keep their unit's AST alive: not past the walk
         self._definitions.clear()
+        self._classes.clear()
 
     def _resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
@@ -256,6 +259,10 @@ class _Walker:
             return  # a cursor kind this libclang binding does not know
         if kind in SCOPE_KINDS:
             if kind in CLASS_KINDS:
+                if cursor.is_definition():
+                    # (for the constructors the tokens name by class)
+                    self._classes.setdefault(cursor.spelling, []).append(
+                        cursor)
                 # what a plugin class inherits its methods from
                 name = qualified_name(cursor)
                 self.facts.class_bases.extend(

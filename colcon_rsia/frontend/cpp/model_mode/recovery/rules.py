@@ -287,6 +287,29 @@ def _reserved_attribute_applies(seen):
         seen.subject in (None, 'void', match.group(1))
 
 
+# what clang says where a declarator goes on with an unknown macro's call
+_DECLARATOR_ENDS = re.compile(
+    r"^expected ';' (?:at end of declaration list|after top level "
+    r'declarator|at end of declaration)$|^expected function body after '
+    r'function declarator$')
+_MACRO_AT = re.compile(r'\s*([A-Z][A-Z0-9]*_[A-Z0-9_]*)\s*(\()?')
+
+
+def _attribute_macro_applies(seen):
+    return _DECLARATOR_ENDS.match(seen.message) is not None and \
+        _MACRO_AT.match(seen.text, max(0, seen.column - 1)) is not None
+
+
+def _attribute_macro(seen):
+    """An unknown ALL_CAPS macro after a declarator: an attribute's.
+
+    `Data get() LOCKED_BY(mutex_);`, `void f() NO_THROW;`: the declaration
+    ends where the macro is, so it expands to nothing.
+    """
+    match = _MACRO_AT.match(seen.text, max(0, seen.column - 1))
+    return {(MACRO_VOID if match.group(2) else MACRO_EMPTY, match.group(1))}
+
+
 def _undeclared(seen):
     """An undeclared name: a kind from how the code uses it."""
     written = _UNDECLARED.match(seen.message).group(1)
@@ -591,6 +614,12 @@ RULES = (
              ('void __kernel__ scale(float * x);',
               "variable has incomplete type 'void'", 6,
               {(MACRO_EMPTY, '__kernel__')}))),
+    Rule('attribute-macro', 'an unknown macro after a declarator',
+         (MACRO_VOID, MACRO_EMPTY), _attribute_macro_applies,
+         _attribute_macro, _examples(
+             ('  Data get() const GUARDED_BY(mutex_);',
+              "expected ';' at end of declaration list", 20,
+              {(MACRO_VOID, 'GUARDED_BY')}))),
     Rule('undeclared-name', 'use of undeclared identifier',
          (NAMESPACE, TYPE, FUNCTION, OBJECT, CONSTANT, MACRO_VALUE),
          _message(_UNDECLARED), _undeclared, _examples(
