@@ -93,6 +93,7 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         'rsia_control/heartbeat_relay': 'heartbeat_relay',
         'rsia_drivers/laser_driver': 'laser_driver',
         'rsia_drivers/camera_driver': 'camera_driver',
+        'rsia_drivers/base_controller': 'base_controller',
         'rsia_localization/odom_tf_broadcaster': 'odom_tf_broadcaster',
         'rsia_localization/tf_monitor': 'tf_monitor',
         'rsia_localization/pose_options_relay': 'pose_options_relay',

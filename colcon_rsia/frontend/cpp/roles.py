@@ -26,6 +26,7 @@ from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
+from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
@@ -417,8 +418,16 @@ class RosRoles:
             location=self.walker.location(cursor)))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
+        made = self._timer_options(arguments)
+        if made is not None:
+            # createTimer(ops): the period and the callback of the
+            # TimerOptions(period, callback, queue, ...) it was made with
+            api = dataclasses.replace(api, period_arg=0, callback_arg=1)
+            arguments = made
         callback, _ = self.walker.resolve_callback(
             self.walker.argument(arguments, api.callback_arg))
+        if made is not None and callback:
+            self.walker.stored_then_registered.add(callback)
         period = self.walker.argument(arguments, api.period_arg)
         self.facts.timers.append(model.TimerFact(
             function=ctx.function, api=ros_api.api_label(name),
@@ -426,6 +435,22 @@ class RosRoles:
             period=expression_text(period) if period is not None else '',
             rate_hz=_period_rate_hz(period),
             location=self.walker.location(cursor)))
+
+    def _timer_options(self, arguments):
+        """The arguments a timer's options object was constructed with."""
+        written = written_arguments(arguments)
+        if len(written) != 1 or not re.search(
+                r'\bros::(?:Wall|Steady)?TimerOptions\b',
+                written[0].type.get_canonical().spelling):
+            return None
+        handle = first_handle(written[0])
+        made = initializer(handle) if handle is not None and \
+            handle.kind == CK.VAR_DECL else None
+        for current in ([made] + list(walk_preorder(made))) if made else ():
+            if current.kind == CK.CALL_EXPR and \
+                    len(list(current.get_arguments())) >= 2:
+                return list(current.get_arguments())
+        return None
 
     def _on_service(self, cursor, ctx, stack, api, name, arguments):
         argument = self.walker.argument(arguments, api.name_arg)

@@ -114,6 +114,9 @@ class _Walker:
         # that they do not also count as a plain function reference
         self._consumed = set()
         self._lambdas_in_variables = set()
+        # callbacks an options object held before it was registered
+        # (`createTimer(ops)`): named, not called, where the object was made
+        self.stored_then_registered = set()
         self._registered = set()
         self.ros2 = False
         # callables stored in std::function variables/fields:
@@ -222,7 +225,8 @@ class _Walker:
         self.facts.calls = [
             c for c in self.facts.calls
             if not (c.kind == 'ref' and c.callee in self._registered and
-                    c.callee in self._lambdas_in_variables)]
+                    (c.callee in self._lambdas_in_variables or
+                     c.callee in self.stored_then_registered))]
         self._clocks.finish()
         self._resolve_stored_callbacks()
         self.string_variables.resolve()
