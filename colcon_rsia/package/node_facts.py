@@ -209,6 +209,8 @@ def node_facts(facts, function_ids):
                 argument.index < len(callee.params):
             result.string_arguments.setdefault(
                 callee.params[argument.index], set()).add(argument.value)
+    result.publishers = _named_by_callers(result.publishers, result)
+    result.subscribers = _named_by_callers(result.subscribers, result)
     result.clients = unique(c for c in facts.clients if owned(c))
     result.rates = {r.handle: r for r in facts.rates}
     result.syncs = unique(facts.syncs)
@@ -223,6 +225,26 @@ def node_facts(facts, function_ids):
         r.name: r.default for r in reads if r.default is not None}
     _attach_filter_callbacks(result)
     return result
+
+
+def _named_by_callers(endpoints, facts):
+    """Endpoints whose topic is a parameter the node's callers give.
+
+    ``BatteryState(node, const std::string & topic)`` creating a publisher
+    of `topic`, constructed in another unit as ``BatteryState(node,
+    "battery_state")``: when every call the node makes passes one literal,
+    that is the name (a copy of the fact: another node may pass another).
+    """
+    named = []
+    for endpoint in endpoints:
+        values = facts.string_arguments.get(endpoint.topic_handle) \
+            if not endpoint.topic_is_literal and endpoint.topic_handle and \
+            not endpoint.topic_affixes else None
+        if values is not None and len(values) == 1:
+            endpoint = replace(endpoint, topic=next(iter(values)),
+                               topic_is_literal=True, topic_handle=None)
+        named.append(endpoint)
+    return named
 
 
 def _parameter_aliases(functions, bindings):
