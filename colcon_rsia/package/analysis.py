@@ -553,7 +553,10 @@ def build_summary(*, name, path, build_base, units):
                     f"{unknown_executables}: node '{stem}' named after the "
                     'file')
     library = [u for f, u in units.items() if f not in executable_sources]
-    exported = merge_facts(units.values()).plugin_exports
+    # every unit: a nodelet's or plugin's class may call code its library
+    # shares with an executable (one source built into both targets)
+    merged_all = merge_facts(units.values())
+    exported = merged_all.plugin_exports
     components = find_components(package_path=path, exported_classes=exported,
                                  build_base=build_base)
     # component classes an executable of the package instantiates: the
@@ -585,7 +588,6 @@ def build_summary(*, name, path, build_base, units):
             nodes[0].plugin_class = wraps
             wrapped.add(wraps)
         summary.nodes.extend(nodes)
-    merged_library = merge_facts(library)
     plugins = [
         (plugin, class_name, 'nodelet') for plugin, class_name in sorted(
             find_nodelets(package_path=path,
@@ -594,17 +596,18 @@ def build_summary(*, name, path, build_base, units):
         (executable, class_name, 'component')
         for executable, class_name in sorted(components.items())
         if class_name not in wrapped]
-    # a nodelet or component runs its class's methods and what they call
+    # a nodelet or component runs its class's methods and what they call,
+    # in any unit (never another executable's main: no method calls it)
     for plugin, class_name, kind in plugins:
-        seeds = {f.id for f in merged_library.functions
+        seeds = {f.id for f in merged_all.functions
                  if f.name.startswith(class_name + '::')}
         node = build_node(
             name, plugin.split('/')[-1], kind,
-            _sources_of(path, merged_library, seeds), path, merged_library,
+            _sources_of(path, merged_all, seeds), path, merged_all,
             seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}')
         node.plugin_class = class_name
         summary.nodes.append(node)
-    summary.nodes.extend(_plugin_nodes(name, path, merged_library, exported))
+    summary.nodes.extend(_plugin_nodes(name, path, merged_all, exported))
     return summary
 
 
