@@ -77,7 +77,7 @@ int main(int argc, char ** argv)
 """
 
 
-def test_a_program_no_executable_names_is_its_own_node(tmp_path):
+def test_a_program_no_executable_builds_is_no_node(tmp_path):
     package = tmp_path / 'src' / 'looped'
     (package / 'src').mkdir(parents=True)
     (package / 'package.xml').write_text(
@@ -99,12 +99,12 @@ def test_a_program_no_executable_names_is_its_own_node(tmp_path):
                cwd=tmp_path, check=True)
     summary = json.loads(
         (tmp_path / 'build' / 'looped' / 'rsia' / 'summary.json').read_text())
-    # each main is its own node with only its own publisher, and says why
+    # each built main is its own node with only its own publisher; the
+    # one no target builds is in no running system: a note, no node
     nodes = {n['id']: [p['topic'] for p in n['publishers']]
              for n in summary['nodes']}
     assert nodes == {'looped/alpha_node': ['alpha_out'],
-                     'looped/beta_node': ['beta_out'],
-                     'looped/gamma': ['gamma_out']}
+                     'looped/beta_node': ['beta_out']}
     assert summary['diagnostics'] == [
-        'src/gamma.cpp defines main() but no executable of CMakeLists.txt '
-        "builds it: node 'gamma' named after the file"]
+        'src/gamma.cpp: note: defines main() but no executable of '
+        'CMakeLists.txt builds it: not a node']

@@ -537,21 +537,33 @@ def build_summary(*, name, path, build_base, units):
                           for s in sources}
     unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
     summary.diagnostics += unreadable
-    unknown_executables = 'CMakeLists.txt cannot be read' if unreadable \
-        else 'no executable of CMakeLists.txt builds it'
+    # what the CMake code says is known only when there is CMake code read
+    targets_known = not unreadable and os.path.isfile(
+        os.path.join(path, 'CMakeLists.txt'))
     # a unit with its own main() is a program, never library code that
-    # every executable would take in; one no executable builds (CMake we
-    # could not read) is a node named after its file
+    # every executable would take in. One no target builds is no node of
+    # the running system (an example, a tool the build leaves out): it
+    # gets a note. Without CMake code to read it is a node named after its
+    # file (a guess, said so)
     for file, unit in sorted(units.items()):
-        if file not in executable_sources and _defines_main(unit):
-            stem = os.path.splitext(os.path.basename(file))[0]
-            if stem not in executables:
-                executables[stem] = [file]
-                executable_sources.add(file)
-                summary.diagnostics.append(
-                    f'{os.path.relpath(file, path)} defines main() but '
-                    f"{unknown_executables}: node '{stem}' named after the "
-                    'file')
+        if file in executable_sources or not _defines_main(unit):
+            continue
+        relative = os.path.relpath(file, path)
+        if targets_known:
+            executable_sources.add(file)
+            summary.diagnostics.append(
+                f'{relative}: note: defines main() but no executable of '
+                'CMakeLists.txt builds it: not a node')
+            continue
+        stem = os.path.splitext(os.path.basename(file))[0]
+        if stem not in executables:
+            executables[stem] = [file]
+            executable_sources.add(file)
+            why = 'CMakeLists.txt cannot be read' if unreadable \
+                else 'the package has no CMakeLists.txt'
+            summary.diagnostics.append(
+                f"{relative}: note: defines main() but {why}: node '{stem}' "
+                'named after the file')
     library = [u for f, u in units.items() if f not in executable_sources]
     # every unit: a nodelet's or plugin's class may call code its library
     # shares with an executable (one source built into both targets)
