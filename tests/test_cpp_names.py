@@ -215,3 +215,56 @@ def test_helpers_of_the_package_take_what_their_callers_pass(tmp_path):
     # echo is published from the subscription's callback
     echo = next(p for p in node.publishers if p.topic == 'echo')
     assert echo.label == 'dependent'
+
+
+HANDLES_MADE_FOR_EACH_CALL = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <memory>
+#include <string>
+#include <vector>
+
+class Entity
+{
+public:
+  explicit Entity(ros::NodeHandle nh)
+  {
+    pose_ = nh.advertise<std_msgs::String>("pose", 1);
+  }
+
+private:
+  ros::Publisher pose_;
+};
+
+void announce(ros::NodeHandle& nh)
+{
+  static ros::Publisher status = nh.advertise<std_msgs::String>("status", 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "sim");
+  ros::NodeHandle nh("fleet");
+  std::vector<std::unique_ptr<Entity>> entities;
+  for (int i = 0; i < 3; ++i) {
+    entities.emplace_back(
+        new Entity(ros::NodeHandle("entity" + std::to_string(i))));
+  }
+  announce(nh);
+  ros::spin();
+}
+"""
+
+
+def test_a_nodehandle_parameter_takes_the_namespace_its_callers_pass(
+        tmp_path):
+    summary = analyse_source(tmp_path, 'sim', HANDLES_MADE_FOR_EACH_CALL)
+    [node] = summary.nodes
+    by_topic = {p.topic: p for p in node.publishers}
+    # announce(nh): the only caller passes the "fleet" handle
+    assert by_topic['status'].namespace == 'fleet'
+    # Entity(ros::NodeHandle("entity" + i)): a namespace the analysis cannot
+    # compute; before, the parameter was taken for the root namespace
+    assert by_topic['pose'].namespace.startswith('?')
+    assert any("'pose'" in note and 'not know' in note
+               for note in summary.diagnostics)

@@ -340,13 +340,13 @@ def resolve_namespace(facts, marker, depth=0):
         if base.startswith(model.UNKNOWN_NAMESPACE):
             return base
         return f'{base}/{sub}'
-    if marker in facts.namespaces:
-        return resolve_namespace(facts, facts.namespaces[marker], depth + 1)
     # a NodeHandle parameter: the handles the callers pass, when they agree
     passed = {resolve_namespace(facts, handle, depth + 1)
               for handle in facts.aliases.get(marker, ())}
     if len(passed) == 1:
         return passed.pop()
+    if marker in facts.namespaces:
+        return resolve_namespace(facts, facts.namespaces[marker], depth + 1)
     if marker.startswith('c:'):
         return ''  # a handle whose construction we did not see
     return marker

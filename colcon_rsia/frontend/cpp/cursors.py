@@ -135,6 +135,26 @@ def first_handle(cursor):
     return None
 
 
+def plain_handle(cursor):
+    """The variable an expression is, when it is one and no more.
+
+    ``nh``, ``*nh``, ``this->nh_``, ``ptr.get()``: the handle; a value made
+    of it (``ros::NodeHandle(nh, "sub")``, ``f(i)``) is another object.
+    """
+    if cursor is None:
+        return None
+    tokens = [t.spelling for t in source_tokens(cursor)]
+    while tokens and tokens[0] in ('*', '&'):
+        tokens = tokens[1:]
+    if tokens[:2] == ['this', '->']:
+        tokens = tokens[2:]
+    if tokens[-4:] in (['.', 'get', '(', ')'], ['->', 'get', '(', ')']):
+        tokens = tokens[:-4]
+    if len(tokens) != 1:
+        return None
+    return first_handle(cursor)
+
+
 def first_function(cursor):
     """The function a callable expression names (``&C::f``, ``f``)."""
     for current in [cursor] + list(walk_preorder(cursor)):

@@ -53,6 +53,7 @@ from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
 from colcon_rsia.frontend.cpp.cursors import made_class
 from colcon_rsia.frontend.cpp.cursors import overload_candidate
+from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import repaired_call_name
@@ -342,12 +343,20 @@ class _Walker:
     def _function(self, cursor):
         fid = cursor.get_usr()
         self._definitions[fid] = cursor
+        params = [c for c in cursor.get_children() if c.kind == CK.PARM_DECL]
         self.facts.functions.append(model.Function(
             id=fid, name=qualified_name(cursor),
             location=self.location(cursor),
             class_id=self._class_id(cursor),
-            params=[c.get_usr() for c in cursor.get_children()
-                    if c.kind == CK.PARM_DECL]))
+            params=[c.get_usr() for c in params]))
+        for param in params:
+            if _NODE_HANDLE_TYPE.search(param.type.get_canonical().spelling):
+                # a NodeHandle its callers give: their handle's namespace
+                # when the node's calls show it (node_facts), else one the
+                # analysis does not know, never the root's
+                self.facts.node_handles.append(model.NodeHandleFact(
+                    handle=param.get_usr(),
+                    namespace=f'{model.UNKNOWN_NAMESPACE}{param.spelling}'))
         parent = cursor.semantic_parent
         owner = parent if parent is not None and \
             parent.kind in CLASS_KINDS else None
@@ -729,7 +738,7 @@ class _Walker:
                         caller=caller, callee=callee, index=index,
                         value=value))
                     continue
-            handle = first_handle(argument)
+            handle = plain_handle(argument)
             if handle is not None and self.in_package(handle):
                 self.facts.bindings.append(model.ParamBinding(
                     callee=callee, index=index, handle=handle.get_usr()))
@@ -849,6 +858,9 @@ class _Walker:
             loop_location=self.location(loop),
             sleep_location=self.location(sleep))
 
+
+# a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace
+_NODE_HANDLE_TYPE = re.compile(r'^(?:const )?ros::NodeHandle(?: ?[&*]+)?$')
 
 CALLABLE_PREFIX = 'callable:'
 _CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
