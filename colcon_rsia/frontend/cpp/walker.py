@@ -552,7 +552,8 @@ class _Walker:
             self._dependent_call(cursor, ctx, stack)
             return
         arguments = None
-        if api is None and name in ros_api.FORWARDING_FACTORIES:
+        if api is None and (name in ros_api.FORWARDING_FACTORIES or
+                            _is_static_factory(ref)):
             self._forwarded_package_constructor(cursor, ctx)
             name, api = self._forwarded_constructor(cursor)
         if api is None:
@@ -857,6 +858,16 @@ class _Walker:
             self.facts, ctx, loop_id=loop_id, clock=clock.get_usr(),
             loop_location=self.location(loop),
             sleep_location=self.location(sleep))
+
+
+def _is_static_factory(function):
+    """``C::make_shared(args)``: a static member forwarding to C's constructor.
+
+    (The smart-pointer definitions ROS 2 classes declare, and any class's
+    own factory of that name.)
+    """
+    return function.kind == CK.CXX_METHOD and function.is_static_method() \
+        and function.spelling in ros_api.FORWARDING_FACTORY_NAMES
 
 
 # a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace
