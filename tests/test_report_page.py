@@ -201,7 +201,7 @@ def test_usage_errors_exit_1(generated):
     root, changed = generated
     base = ['--base-paths', str(root / 'src')]
     cases = [
-        ['rsia', 'report', *base],                              # no --output
+        ['rsia', 'impact', *base, '--since'],                   # no value
         ['rsia', 'report', *base, '--output', 'x', '--bogus'],  # unknown
         ['rsia', 'impact', *base, '--changed', changed, '--format', 'xml'],
         ['rsia', 'impact', *base, '--changed', changed, '--all'],

@@ -163,7 +163,7 @@ def test_impact_text_explains_the_difference(triggers_workspace):
     result = triggers_workspace.colcon(
         'rsia', 'impact', '--base-paths', str(triggers_workspace.src),
         '--changed', node('tf_pub'), '--model', 'trigger', check=True)
-    assert 'rate impact: 1 nodes; traditional: 3 (trigger model; ' \
+    assert 'rate impact: 1 node; traditional: 3 (trigger model; ' \
         'paper 3, trigger 1)' in result.stdout
     assert 'paper model only: trig_nodes/fusion, trig_nodes/monitor' in \
         result.stdout

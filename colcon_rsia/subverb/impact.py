@@ -61,7 +61,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def main(self, *, context):  # noqa: D102
         args = context.args
-        if not (args.changed or args.since or args.all):
+        if not (args.changed or args.since is not None or args.all):
             return 'one of the arguments --changed --since --all is required'
         system, error = load_system_from_args(args, logger)
         if error:

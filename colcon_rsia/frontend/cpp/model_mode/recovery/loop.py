@@ -21,6 +21,12 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import is_edit
 from colcon_rsia.frontend.cpp.model_mode.recovery.rules import found_repairs
 from colcon_rsia.frontend.cpp.model_mode.recovery.rules import needs_notes
+# (the parse's diagnostics and the declarations they point at; never the walk)
+from colcon_rsia.frontend.cpp.parse import call_arguments
+from colcon_rsia.frontend.cpp.parse import error_diagnostics
+from colcon_rsia.frontend.cpp.parse import errors_with_notes
+from colcon_rsia.frontend.cpp.parse import parameter_type
+from colcon_rsia.frontend.cpp.parse import parameter_types
 
 # parses of a unit after the first: each round fixes what the previous one
 # revealed (a namespace, then the names used in it, then an edit of a call
@@ -165,9 +171,8 @@ class _Repairing:
 
     def own_errors(self, tu):
         """Errors in the workspace's code, their columns as on disk."""
-        from colcon_rsia.frontend import cpp
         return [(message, file, line, self.disk_column(file, line, column))
-                for message, file, line, column in cpp.error_diagnostics(tu)
+                for message, file, line, column in error_diagnostics(tu)
                 if file and self.user_file(file)]
 
     def run(self):
@@ -207,10 +212,6 @@ class _Repairing:
 
     def repairs(self, tu, errors):
         """{(kind, name): rule id} of the declarations and edits to add."""
-        from colcon_rsia.frontend.cpp.parse import call_arguments
-        from colcon_rsia.frontend.cpp.parse import errors_with_notes
-        from colcon_rsia.frontend.cpp.parse import parameter_type
-        from colcon_rsia.frontend.cpp.parse import parameter_types
         own_files = {self.entry.file} | {
             i.include.name for i in tu.get_includes()
             if i.include is not None and self.user_file(i.include.name)}
