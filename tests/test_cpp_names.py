@@ -268,3 +268,61 @@ def test_a_nodehandle_parameter_takes_the_namespace_its_callers_pass(
     assert by_topic['pose'].namespace.startswith('?')
     assert any("'pose'" in note and 'not know' in note
                for note in summary.diagnostics)
+
+
+DEFAULT_HELD_BY_THE_VARIABLE = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+#include <string>
+
+class Mapper : public rclcpp::Node
+{
+public:
+  Mapper() : Node("mapper")
+  {
+    map_name_ = std::string("/map");
+    map_name_ = this->declare_parameter("map_name", map_name_);
+    scan_topic_ = "scan";
+    scan_topic_ = this->declare_parameter("scan_topic", scan_topic_);
+    frame_ = "odom";
+    frame_ = this->get_parameter("frame").as_string();
+    map_pub_ = create_publisher<std_msgs::msg::String>(map_name_, 1);
+    scan_sub_ = create_subscription<std_msgs::msg::String>(
+        scan_topic_, 1,
+        [this](std_msgs::msg::String::ConstSharedPtr msg) { map_pub_->publish(*msg); });
+    frame_pub_ = create_publisher<std_msgs::msg::String>(frame_, 1);
+  }
+
+private:
+  std::string map_name_;
+  std::string scan_topic_;
+  std::string frame_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr map_pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr frame_pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr scan_sub_;
+};
+
+int main(int argc, char** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Mapper>());
+}
+"""
+
+
+def test_a_parameter_default_held_by_the_variable_it_sets(tmp_path):
+    summary = analyse_source(tmp_path, 'mapper', DEFAULT_HELD_BY_THE_VARIABLE)
+    [node] = summary.nodes
+    params = {e.topic: e.topic_param and (e.topic_param.name,
+                                          e.topic_param.default)
+              for e in node.publishers + node.subscribers}
+    # `x = "/map"; x = declare_parameter("map_name", x)`: the default is
+    # the literal x held before the read
+    assert params['map_name_'] == ('map_name', '/map')
+    assert params['scan_topic_'] == ('scan_topic', 'scan')
+    # overwritten by a value that is no parameter read with a default:
+    # neither "odom" nor a guess
+    assert params['frame_'] is None or params['frame_'][1] is None
+    frame = next(p for p in node.publishers if p.topic == 'frame_')
+    assert not frame.topic_is_literal

@@ -98,6 +98,8 @@ def test_node_names_come_from_ros_init(ros1_workspace):
         'rsia_localization/tf_monitor': 'tf_monitor',
         'rsia_localization/pose_options_relay': 'pose_options_relay',
         'rsia_localization/named_handles': 'named_handles',
+        'rsia_localization/ekf_node': 'ekf_se',
+        'rsia_localization/ukf_node': 'ukf_se',
         'rsia_nodelets/ScanThrottle': None,
         'rsia_perception/scan_relay': 'scan_relay',
         'rsia_perception/image_processor': 'image_processor',
@@ -127,3 +129,26 @@ def test_namespaces_from_values_resolve_or_stay_unknown(ros1_workspace):
     notes = [d for d in summary['diagnostics'] if 'named_handles.cpp' in d]
     assert len(notes) == 2 and all(
         'note:' in n and "'name'" in n for n in notes), notes
+
+
+def test_a_class_template_node_takes_the_handles_its_main_passes(
+        ros1_workspace):
+    # written from src/rsia_localization/src/{filter_node,ekf_node}.cpp:
+    # FilterNode<Ekf>(nh, nh_priv) keeps the root handle and the private
+    # one in members; the calls of main reach the template's members
+    system = graph_to_json(load_system([read_summary(str(
+        ros1_workspace.build_base / 'rsia_localization' / 'rsia' /
+        'summary.json'))]))
+    resolved = {}
+    for node in system['nodes']:
+        if node['id'] in ('rsia_localization/ekf_node',
+                          'rsia_localization/ukf_node'):
+            resolved[node['id']] = sorted(
+                e['resolved'] for e in node['publishers'] +
+                node['subscribers'])
+    assert resolved == {
+        'rsia_localization/ekf_node': [
+            '/ekf_se/set_pose', '/pose/filtered', '/twist'],
+        'rsia_localization/ukf_node': [
+            '/pose/filtered', '/twist', '/ukf_se/set_pose'],
+    }

@@ -112,9 +112,16 @@ class Api:
     # PUBLISHER: the arguments holding callbacks run when a subscriber
     # connects or disconnects (a lazy node subscribes to its inputs there)
     status_callback_args: tuple = ()
+    # ACTION_SERVER: the topics, under the action's name, that the server
+    # subscribes to (ROS 1 actionlib's goal and cancel)
+    action_inputs: tuple = ()
 
 
 NH = 'ros::NodeHandle::'
+# what a ROS 1 actionlib server subscribes to under its action's name (its
+# status, feedback and result publishers are the library's, see
+# docs/limitations.md)
+ACTIONLIB_SERVER_INPUTS = ('goal', 'cancel')
 
 
 def _ros2_node_methods(prefix):
@@ -281,10 +288,12 @@ CALLS = {
     # actionlib: recorded as actions, their callbacks are roots
     'actionlib::SimpleActionServer::SimpleActionServer': Api(
         ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLBACK,
-        label='actionlib::SimpleActionServer'),
+        label='actionlib::SimpleActionServer',
+        action_inputs=ACTIONLIB_SERVER_INPUTS),
     'actionlib::ActionServer::ActionServer': Api(
         ACTION_SERVER, name_arg=FIRST_STRING, callback_arg=FIRST_CALLBACK,
-        label='actionlib::ActionServer'),
+        label='actionlib::ActionServer',
+        action_inputs=ACTIONLIB_SERVER_INPUTS),
     'actionlib::SimpleActionServer::registerGoalCallback': Api(
         ACTION_SERVER, callback_arg=0, label='actionlib::SimpleActionServer'),
     'actionlib::SimpleActionServer::registerPreemptCallback': Api(

@@ -135,15 +135,33 @@ def first_handle(cursor):
     return None
 
 
+# a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace
+_NODE_HANDLE_TYPE = re.compile(r'^(?:const )?ros::NodeHandle(?: ?[&*]+)?$')
+
+
+def is_node_handle(cursor):
+    """Whether an expression or declaration is a ROS 1 NodeHandle."""
+    return bool(_NODE_HANDLE_TYPE.match(cursor.type.get_canonical().spelling))
+
+
+# std::/boost:: functions whose result is their argument, by reference
+_PASS_THROUGH = frozenset({'ref', 'cref', 'move', 'forward'})
+
+
 def plain_handle(cursor):
     """The variable an expression is, when it is one and no more.
 
-    ``nh``, ``*nh``, ``this->nh_``, ``ptr.get()``: the handle; a value made
-    of it (``ros::NodeHandle(nh, "sub")``, ``f(i)``) is another object.
+    ``nh``, ``*nh``, ``this->nh_``, ``ptr.get()``, and what passes the
+    object itself on (``boost::ref(nh)``, ``std::move(nh)``): the handle; a
+    value made of it (``ros::NodeHandle(nh, "sub")``, ``f(i)``) is another
+    object.
     """
     if cursor is None:
         return None
     tokens = [t.spelling for t in source_tokens(cursor)]
+    while len(tokens) > 5 and tokens[1] == '::' and \
+            tokens[2] in _PASS_THROUGH and tokens[-1] == ')':
+        tokens = tokens[tokens.index('(') + 1:-1]
     while tokens and tokens[0] in ('*', '&'):
         tokens = tokens[1:]
     if tokens[:2] == ['this', '->']:
@@ -153,6 +171,25 @@ def plain_handle(cursor):
     if len(tokens) != 1:
         return None
     return first_handle(cursor)
+
+
+def template_member(function):
+    """The function as the package's source defines it.
+
+    ``Filter<Ekf> f(nh); f.run();`` references ``Filter<Ekf>::run`` and
+    ``helper(3)`` references ``helper<int>``: instantiations, whose USRs
+    are not those of the ``Filter<T>::run`` and ``helper<T>`` the walk
+    defines. Calls and bindings go to the template, where the facts are
+    (a member template of a class template takes two steps). Any other
+    function is itself.
+    """
+    for _ in range(3):
+        template = ci.conf.lib.clang_getSpecializedCursorTemplate(function)
+        if template is None or template.kind not in FUNCTION_KINDS or \
+                template == function:
+            break
+        function = template
+    return function
 
 
 def first_function(cursor):

@@ -28,6 +28,7 @@ from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
 from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
+from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
@@ -354,11 +355,16 @@ class RosRoles:
         if default_argument is not None:
             default, is_literal = self.walker.topic(default_argument)
             default = default if is_literal else None
-        self.facts.param_reads.append(model.ParamRead(
+        read = model.ParamRead(
             function=ctx.function, name=param, default=default,
             handle=target.get_usr() if target is not None else None,
             nh='~' if api.node_private else self._namespace_of(cursor),
-            location=self.walker.location(cursor)))
+            location=self.walker.location(cursor))
+        self.facts.param_reads.append(read)
+        parts = string_parts(default_argument) \
+            if default_argument is not None and default is None else None
+        if parts and len(parts) == 1 and parts[0][0] == 'variable':
+            self.walker.string_variables.default_from(read, parts[0][1])
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
         node_name, literal = self.walker.topic(
@@ -472,7 +478,8 @@ class RosRoles:
         self._action(cursor, ctx, stack, api, name, arguments, 'client')
 
     def _action(self, cursor, ctx, stack, api, name, arguments, role):
-        action, _ = self.walker.topic(self.walker.argument(arguments, api.name_arg)) \
+        action, literal = self.walker.topic(
+            self.walker.argument(arguments, api.name_arg)) \
             if api.name_arg is not None else (None, False)
         callbacks = self._callbacks(arguments, api.callback_arg) \
             if api.callback_arg is not None else []
@@ -485,6 +492,39 @@ class RosRoles:
             handle=target.get_usr() if target is not None else None,
             location=self.walker.location(cursor) if not is_registration
             else 'registration:' + self.walker.location(cursor)))
+        if action is not None and api.action_inputs:
+            self._action_inputs(cursor, ctx, api, name, arguments, action,
+                                literal, callbacks, target)
+
+    def _action_inputs(self, cursor, ctx, api, name, arguments, action,
+                       literal, callbacks, target):
+        """The topics a ROS 1 action server subscribes to: `<name>/goal`.
+
+        Relative to the NodeHandle given first, else to the node's
+        namespace; the goal message is `<Action>Goal` of the server's
+        action type. The callback given runs per goal: a publish there
+        follows the goal topic.
+        """
+        first = arguments[0] if arguments else None
+        handle_given = first is not None and is_node_handle(first)
+        nh = self._namespace_of(cursor, dataclasses.replace(api, nh_arg=0),
+                                arguments) if handle_given else ''
+        action_type = first_template_argument(self._object_type(
+            cursor, name)) or ''
+        action_type = re.sub(r'_<.*', '', action_type)
+        for suffix in api.action_inputs:
+            msg_type = f'{action_type}{suffix.capitalize()}' \
+                if action_type.endswith('Action') and suffix == 'goal' \
+                else 'actionlib_msgs::GoalID' if suffix == 'cancel' else None
+            self.facts.subscribers.append(model.SubscriberFact(
+                function=ctx.function, api=ros_api.api_label(name),
+                topic=f'{action}/{suffix}', topic_is_literal=literal,
+                msg_type=msg_type,
+                handle=target.get_usr() if target is not None else None,
+                # (cancel runs the preempt callback, registered apart)
+                callback=callbacks[0] if callbacks and suffix == 'goal'
+                else None,
+                location=self.walker.location(cursor), nh=nh))
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))

@@ -13,6 +13,7 @@ one literal a variable is only ever set to in the facts that named it.
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
 from colcon_rsia.frontend.cpp.cursors import is_string
@@ -37,10 +38,21 @@ class StringVariables:
         self._namespaced_by_variable = []
         # endpoint facts whose topic is built by `+`: (fact, parts)
         self._concatenated = []
+        # parameter reads whose default is a string variable: (read, USR)
+        self._defaults_from = []
 
     def name_from(self, fact, variable):
         """A service fact whose name is the value of `variable` (a USR)."""
         self._named_by_variable.append((fact, variable))
+
+    def default_from(self, read, variable):
+        """A parameter read whose default is the value of `variable`.
+
+        ``scan_topic_ = "/scan"; scan_topic_ = declare_parameter(
+        "scan_topic", scan_topic_);``: the variable's one literal, though
+        the read itself writes the variable.
+        """
+        self._defaults_from.append((read, variable))
 
     def namespace_from(self, fact, variable):
         """A NodeHandle fact whose namespace is the value of `variable`."""
@@ -54,7 +66,8 @@ class StringVariables:
         if literal:
             self._values.setdefault(
                 variable.get_usr(), set()).add(value)
-        else:
+        elif not _reads_parameter(expression):
+            # (a parameter read is a fact of its own: see resolve)
             self._written.add(variable.get_usr())
 
     def resolve(self):
@@ -86,6 +99,11 @@ class StringVariables:
             fact.name = value(handle) or fact.name
         for fact, handle in self._namespaced_by_variable:
             fact.namespace = value(handle) or fact.namespace
+        bound = {b.handle for b in self.walker.facts.bindings}
+        for read, handle in self._defaults_from:
+            values = self._values.get(handle, ())
+            if handle not in self._written | bound and len(values) == 1:
+                read.default = next(iter(values))
         for fact, parts in self._concatenated:
             values = [text if kind == 'literal' else value(text)
                       for kind, text in parts]
@@ -106,6 +124,15 @@ class StringVariables:
         parts = string_parts(argument)
         if parts and any(kind == 'variable' for kind, _ in parts):
             self._concatenated.append((facts[0], parts))
+
+
+def _reads_parameter(expression):
+    """Whether an expression is a call reading a parameter's value."""
+    for current in [expression] + list(expression.walk_preorder()):
+        if current.kind == CK.CALL_EXPR and current.referenced is not None:
+            api = ros_api.lookup_call(qualified_name(current.referenced))
+            return api is not None and api.role == ros_api.PARAM_READ
+    return False
 
 
 # what a string expression may pass through on its way to a literal or a

@@ -48,6 +48,7 @@ from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
 from colcon_rsia.frontend.cpp.cursors import is_duration
 from colcon_rsia.frontend.cpp.cursors import is_logical
+from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
@@ -62,6 +63,7 @@ from colcon_rsia.frontend.cpp.cursors import REPAIRED_PREFIX
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
 from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
+from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import top_level_scopes
 from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
@@ -350,7 +352,7 @@ class _Walker:
             class_id=self._class_id(cursor),
             params=[c.get_usr() for c in params]))
         for param in params:
-            if _NODE_HANDLE_TYPE.search(param.type.get_canonical().spelling):
+            if is_node_handle(param):
                 # a NodeHandle its callers give: their handle's namespace
                 # when the node's calls show it (node_facts), else one the
                 # analysis does not know, never the root's
@@ -510,7 +512,8 @@ class _Walker:
             if getattr(parent, 'kind', None) == CK.CALL_EXPR and \
                     same_cursor(parent.referenced, ref):
                 return  # the callee of a call, counted by _call
-        self._add_call(ctx, ref.get_usr(), cursor, kind='ref')
+        self._add_call(ctx, template_member(ref).get_usr(), cursor,
+                       kind='ref')
 
     def _store_callable(self, variable, expression, consume=True):
         """Remember what a std::function variable/field is set to."""
@@ -640,6 +643,7 @@ class _Walker:
 
     def _package_call(self, ctx, callee, cursor, arguments):
         """A call of the package's function (or constructor) `callee`."""
+        callee = template_member(callee)
         virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
         self._add_call(ctx, callee.get_usr(), cursor,
                        virtual=qualified_name(callee) if virtual else None)
@@ -761,7 +765,7 @@ class _Walker:
             # a bound method's first argument is the object, not a parameter
             if target.kind == CK.CXX_METHOD and not target.is_static_method():
                 rest = rest[1:]
-            self._bind_arguments(target.get_usr(), rest)
+            self._bind_arguments(template_member(target).get_usr(), rest)
             return
 
     def resolve_callback(self, argument, consume=True):
@@ -787,6 +791,7 @@ class _Walker:
             if ref is None:
                 continue
             if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+                ref = template_member(ref)
                 if consume:
                     self._consumed.add(self.key(current))
                     self._registered.add(ref.get_usr())
@@ -869,9 +874,6 @@ def _is_static_factory(function):
     return function.kind == CK.CXX_METHOD and function.is_static_method() \
         and function.spelling in ros_api.FORWARDING_FACTORY_NAMES
 
-
-# a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace
-_NODE_HANDLE_TYPE = re.compile(r'^(?:const )?ros::NodeHandle(?: ?[&*]+)?$')
 
 CALLABLE_PREFIX = 'callable:'
 _CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
