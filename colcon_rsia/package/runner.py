@@ -200,6 +200,8 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         return Outcome(
             name, warning=f"package type '{package_type}' is not analysed "
                           'by this version; skipped', skipped=True)
+    # the package's time includes CMake's configure of an unbuilt package
+    started = time.monotonic()
     has_python = package_type in MIXED_PACKAGE_TYPES and \
         bool(find_python_nodes(path).nodes)
     has_database = os.path.isfile(
@@ -224,14 +226,12 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
         repair=repair)
     if has_python:
-        started = time.monotonic()
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,
                                key=lambda n: n.id)
         summary.diagnostics += python.diagnostics
         summary.coverage.call_sites += python.coverage.call_sites
-        summary.seconds = round(
-            summary.seconds + time.monotonic() - started, 3)
-        check_stop()
-        store.write_summary(build_base, summary)
+    summary.seconds = round(time.monotonic() - started, 3)
+    check_stop()
+    store.write_summary(build_base, summary)
     return Outcome(name, summary=summary)
