@@ -341,15 +341,19 @@ def _unsafe_characters(text):
     ['graph'], ['rates'], ['impact', '--all'],
     ['impact', '--changed', 'evil/n0\x1b[2J\x1b[H', '--traditional'],
     ['rates', '--changed', 'evil/n0\x1b[2J\x1b[H'],
-    ['coverage'], ['coverage', '--missed'],
+    ['coverage'], ['coverage', '--missed'], ['problems'],
     ['report', '--output', 'out']])
 def test_names_reach_the_console_escaped(tmp_path, words):
-    (tmp_path / 'src').mkdir()
+    # the package is found in the workspace: every query shows it
+    _python_package(tmp_path, 'evil', {'talker': PYTHON_NODE})
     _hostile_summary(tmp_path / 'build')
-    result = _colcon(['rsia', *words, '--build-base',
-                      str(tmp_path / 'build')], cwd=tmp_path)
+    result = _colcon(['rsia', *words, '--base-paths', str(tmp_path / 'src'),
+                      '--build-base', str(tmp_path / 'build')], cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     _no_traceback(result)
+    if words[0] not in ('coverage', 'report'):
+        # the names are shown, escaped (coverage and report show none)
+        assert '\\x1b[2J' in result.stdout + result.stderr
     assert _unsafe_characters(result.stdout + result.stderr) == []
     # no line of ours begins with a name's text
     for line in result.stdout.splitlines():
