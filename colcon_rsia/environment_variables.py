@@ -37,5 +37,11 @@ ALLOWED_ROOTS_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'Directories (separated by :) outside a package that its files may '
     'link into for rsia to read them')
 
+"""Environment variable: run a package's CMake code without a sandbox"""
+CMAKE_WITHOUT_SANDBOX_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_CMAKE_WITHOUT_SANDBOX',
+    'Set to 1 to let rsia configure an unbuilt package with CMake where no '
+    'bubblewrap sandbox can be made (only for code you trust)')
+
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'

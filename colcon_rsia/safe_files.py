@@ -11,6 +11,7 @@ opened without blocking and checked again on the open descriptor, so a
 file swapped after the check is caught too.
 """
 
+import math
 import os
 import re
 import stat
@@ -41,16 +42,36 @@ class UnsafeFileError(OSError):
         return self.strerror
 
 
+def _max_file_mb():
+    """The size limit in MB, or None when the variable holds no limit."""
+    value = os.environ.get(MAX_FILE_MB_ENVIRONMENT_VARIABLE.name)
+    if not value:
+        return DEFAULT_MAX_FILE_MB
+    try:
+        megabytes = float(value)
+    except ValueError:
+        return None
+    return megabytes if math.isfinite(megabytes) and megabytes > 0 \
+        else None
+
+
+def max_file_mb_problem():
+    """What is wrong with the size limit's variable, or None.
+
+    Checked up front by every command (see
+    :mod:`colcon_rsia.package.environment`).
+    """
+    if _max_file_mb() is not None:
+        return None
+    return (f'{MAX_FILE_MB_ENVIRONMENT_VARIABLE.name}='
+            f"'{os.environ[MAX_FILE_MB_ENVIRONMENT_VARIABLE.name]}': "
+            'expected a number of megabytes above 0')
+
+
 def max_file_bytes():
     """The size limit of a file read from a package, in bytes."""
-    value = os.environ.get(MAX_FILE_MB_ENVIRONMENT_VARIABLE.name)
-    try:
-        megabytes = float(value) if value else DEFAULT_MAX_FILE_MB
-    except ValueError:
-        megabytes = DEFAULT_MAX_FILE_MB
-    if not megabytes > 0:
-        megabytes = DEFAULT_MAX_FILE_MB
-    return int(megabytes * 1024 * 1024)
+    # a bad value was reported up front: the default, never a traceback
+    return int((_max_file_mb() or DEFAULT_MAX_FILE_MB) * 1024 * 1024)
 
 
 def allowed_roots(roots):
@@ -259,6 +280,30 @@ def display(text):
     except UnicodeEncodeError:  # a lone surrogate that escapes no byte
         data = text.encode('utf-8', errors='backslashreplace')
     return data.decode('utf-8', errors='backslashreplace')
+
+
+def printable(text):
+    r"""Text from the analysed code as the console may show it.
+
+    THE function every text output (console lines, listings, messages)
+    passes each line or value through: control characters (``\x1b``
+    escape sequences, ``\r``, a newline inside a name, C1 controls),
+    bidirectional overrides and isolates (``\u202e``) and other characters
+    that are not printable are shown escaped, so a name cannot clear the
+    screen, set the window title, overwrite or forge a line or reorder
+    what is shown. Undecodable bytes are shown as ``\xe9``
+    (:func:`display`).
+    """
+    text = display(str(text))
+    if text.isprintable():
+        return text
+    return ''.join(c if c.isprintable() else
+                   c.encode('unicode_escape').decode('ascii') for c in text)
+
+
+def printable_lines(lines):
+    """Lines of text output joined, each :func:`printable`."""
+    return ''.join(printable(line) + '\n' for line in lines)
 
 
 # directories whose files a pull request cannot change: the include walk

@@ -7,8 +7,12 @@ built test workspaces check that our configure finds what the build's own
 codemodel says.
 """
 
+import json
 import os
 from pathlib import Path
+import subprocess
+import sys
+import time
 
 from colcon_rsia.package import cmake_configure
 from colcon_rsia.package.nodes import find_components
@@ -319,3 +323,129 @@ add_executable(eager_node src/eager_node.cpp)
     assert diagnostics == []
     assert executables == {
         'eager_node': [str(package / 'src' / 'eager_node.cpp')]}
+
+
+# --- issue 40, item 3: configures at once, results that may not repeat -------
+
+SLOW = """cmake_minimum_required(VERSION 3.8)
+project(slow)
+add_executable(slow_node src/slow.cpp)
+# a second or two of CMake's time
+foreach(i RANGE {count})
+  math(EXPR twice "${{i}} * 2")
+endforeach()
+"""
+CONFIGURE_ONE = """
+import json, sys
+from colcon_rsia.package.nodes import find_executables
+diagnostics = []
+executables = find_executables(package_path=sys.argv[1],
+                               build_base=sys.argv[2], diagnostics=diagnostics)
+print(json.dumps([executables, diagnostics]))
+"""
+
+
+def test_two_analyses_configuring_one_package_at_once(tmp_path):
+    package = write_package(tmp_path / 'slow', SLOW.format(count=300000),
+                            sources=['src/slow.cpp'])
+    build = str(tmp_path / 'build')
+    command = [sys.executable, '-c', CONFIGURE_ONE, str(package), build]
+    first = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
+    # the second starts while the first configures
+    time.sleep(0.5)
+    second = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
+    expected = [{'slow_node': [str(package / 'src' / 'slow.cpp')]}, []]
+    assert json.loads(first.communicate(timeout=300)[0]) == expected
+    assert json.loads(second.communicate(timeout=300)[0]) == expected
+    # and what they kept is right
+    assert json.loads(subprocess.run(
+        command, stdout=subprocess.PIPE, text=True, timeout=300,
+        check=True).stdout) == expected
+
+
+def test_a_configure_that_timed_out_is_tried_again_next_run(
+        tmp_path, monkeypatch):
+    # a configure that ran out of time under load is not the package's
+    # answer: the next run (here: a fresh memory of this one) asks again
+    package = write_package(tmp_path / 'slow', SLOW.format(count=300000),
+                            sources=['src/slow.cpp'])
+    monkeypatch.setattr(cmake_configure, 'CONFIGURE_TIMEOUT_S', 0.2)
+    diagnostics = []
+    find_executables(package_path=str(package),
+                     build_base=str(tmp_path / 'build'),
+                     diagnostics=diagnostics)
+    assert diagnostics == [
+        'CMake configure took longer than 0.2 s and was stopped; '
+        'CMakeLists.txt read by the fallback reader']
+    monkeypatch.setattr(cmake_configure, 'CONFIGURE_TIMEOUT_S', 60)
+    monkeypatch.setattr(cmake_configure, '_NOT_KEPT', {}, raising=False)
+    diagnostics = []
+    assert find_executables(
+        package_path=str(package), build_base=str(tmp_path / 'build'),
+        diagnostics=diagnostics) == {
+            'slow_node': [str(package / 'src' / 'slow.cpp')]}
+    assert diagnostics == []
+
+
+def test_hanging_packages_share_one_time_budget(tmp_path, monkeypatch):
+    # every package of a pull request looping forever costs the budget of
+    # one run, not a time-out each
+    monkeypatch.setattr(cmake_configure, 'CONFIGURE_TIMEOUT_S', 2)
+    monkeypatch.setattr(cmake_configure, 'CONFIGURE_BUDGET_S', 3,
+                        raising=False)
+    said = []
+    started = time.monotonic()
+    for name in ('one', 'two', 'three', 'four'):
+        package = write_package(tmp_path / 'src' / name, f"""
+cmake_minimum_required(VERSION 3.8)
+project({name})
+while(TRUE)
+endwhile()
+""", sources=[])
+        diagnostics = []
+        find_executables(package_path=str(package),
+                         build_base=str(tmp_path / 'build' / name),
+                         diagnostics=diagnostics)
+        said += diagnostics
+    # two time-outs, not four
+    assert time.monotonic() - started < 7
+    assert said[0] == ('CMake configure took longer than 2 s and was '
+                       'stopped; CMakeLists.txt read by the fallback reader')
+    assert said[-1] == (
+        'the CMake configures of this run took 3 s together, all the time '
+        'they have; CMakeLists.txt read by the fallback reader')
+
+
+def test_the_package_time_includes_its_configure(tmp_path, monkeypatch):
+    # issue 40, item 15: a configure that took long showed "in 0.5s"
+    from colcon_rsia.package import nodes
+    from colcon_rsia.package import runner
+    from test_faults import GOOD_NODE
+    package = write_package(tmp_path / 'timed', """
+cmake_minimum_required(VERSION 3.8)
+project(timed)
+add_executable(timed_node src/timed.cpp)
+""", sources=[])
+    (package / 'src').mkdir()
+    (package / 'src' / 'timed.cpp').write_text(GOOD_NODE)
+    real_configure = nodes.configure_package
+    calls = []
+
+    def slow_first_configure(*args):
+        if not calls:
+            time.sleep(3)  # as a slow CMake would
+        calls.append(args)
+        return real_configure(*args)
+    monkeypatch.setattr(nodes, 'configure_package', slow_first_configure)
+    started = time.monotonic()
+    outcome = runner.analyze(
+        name='timed', package_type='ros.ament_cmake', path=str(package),
+        build_base=str(tmp_path / 'build'), jobs=1, header_mode='model',
+        workspace_package_dirs=[str(package)], without_build=True)
+    took = time.monotonic() - started
+    assert [n.id for n in outcome.summary.nodes] == ['timed/timed_node']
+    # the whole of it (some of a second goes to calls and writes)
+    assert outcome.summary.seconds > took - 1
+    written = json.loads(
+        (tmp_path / 'build' / 'rsia' / 'summary.json').read_text())
+    assert written['seconds'] == outcome.summary.seconds

@@ -50,6 +50,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._started = None
         self._package_dirs = None
         self._interrupted = False
+        # a bad environment variable: said once, nothing analysed
+        self._refused = False
 
     def __call__(self, event):  # noqa: D102
         data = event[0]
@@ -70,10 +72,22 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
 
     def _submit(self, job):
         # imported here: the analysis (and libclang) loads only when used
+        from colcon_rsia.package.environment import environment_problems
         from colcon_rsia.package.runner import analyze
         pkg = job.task_context.pkg
         args = job.task_context.args
+        if self._refused:
+            return
         if self._pool is None:
+            problems = environment_problems()
+            if problems:
+                # the build goes on; the analysis would use wrong settings
+                self._refused = True
+                from colcon_rsia.safe_files import printable
+                for problem in problems:
+                    print(printable(f'rsia: {problem}; no package is '
+                                    'analysed'), flush=True)
+                return
             _stop_before_exit()
             self._pool = ThreadPoolExecutor(
                 max_workers=self.PACKAGE_WORKERS,

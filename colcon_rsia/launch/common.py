@@ -33,6 +33,10 @@ MAX_INCLUDES = 2000
 # parameters one YAML value may expand to: YAML aliases can nest a
 # billion, the largest real parameter files hold a few thousand
 MAX_PARAMETERS = 20000
+# values one YAML file may hold, as written (MAX_PARAMETERS * 10, the
+# budget of check_value): counted before the file is loaded, which takes
+# PyYAML some 40 s and 700 MB for a quarter million
+MAX_YAML_VALUES = MAX_PARAMETERS * 10
 # THE nesting limit of launch elements, for every reader (ROS 1 XML,
 # ROS 2 XML and YAML) and the ROS 2 executor (groups and the includes
 # they contain), and of YAML values: all are handled recursively. Real
@@ -269,6 +273,7 @@ def load_yaml(text, path):
       ROS 1's ``!degrees``)
     """
     try:
+        _count_values(text, path)
         return yaml.safe_load(text)
     except yaml.constructor.ConstructorError as e:
         raise Unresolved(f'{path}: YAML uses a tag that is not read '
@@ -277,6 +282,48 @@ def load_yaml(text, path):
         raise LaunchError(f'{path}: malformed YAML ({_first_line(e)}).')
     except (RecursionError, MemoryError):
         raise LaunchError(f'{path}: the YAML is nested too deeply.')
+
+
+# libyaml's parser when PyYAML has it: counting is then some seconds
+_EVENT_LOADER = getattr(yaml, 'CSafeLoader', yaml.SafeLoader)
+_NODE_EVENTS = (yaml.ScalarEvent, yaml.AliasEvent, yaml.MappingStartEvent,
+                yaml.SequenceStartEvent)
+
+
+def _count_values(text, path):
+    """Raise LaunchError as soon as the text holds too many values.
+
+    A value is what :func:`check_value` counts: a scalar, a list or a
+    mapping, not a mapping's key. Malformed YAML is left to the loader,
+    which says what is wrong.
+    """
+    try:
+        _count_events(yaml.parse(text, Loader=_EVENT_LOADER), path)
+    except yaml.YAMLError:
+        pass
+
+
+def _count_events(events, path):
+    values = 0
+    # for each open mapping or list: whether its next node is a key
+    keys = []
+    for event in events:
+        if isinstance(event, _NODE_EVENTS):
+            is_key = bool(keys) and keys[-1]
+            if keys and keys[-1] is not None:
+                keys[-1] = not keys[-1]
+            if not is_key:
+                values += 1
+                if values > MAX_YAML_VALUES:
+                    raise LaunchError(
+                        f'{path}: holds more than {MAX_YAML_VALUES:,} values '
+                        '(a parameter file holds some thousands); not read.')
+            if isinstance(event, yaml.MappingStartEvent):
+                keys.append(True)
+            elif isinstance(event, yaml.SequenceStartEvent):
+                keys.append(None)
+        elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+            keys.pop()
 
 
 def _first_line(error):

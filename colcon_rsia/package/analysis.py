@@ -40,6 +40,7 @@ from colcon_rsia.package.nodes import find_components
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
 from colcon_rsia.package.nodes import find_plugins
+from colcon_rsia.package.nodes import skipped_executable
 
 
 class AnalysisError(RuntimeError):
@@ -164,7 +165,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         wrappers=store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
-        name=name, path=path, build_base=build_base, units=units)
+        name=name, path=path, build_base=build_base, units=units,
+        parsed={e.file for e in entries})
     summary.coverage = _coverage(path, units, summary.nodes)
     summary.header_mode = header_mode
     summary.diagnostics = diagnostics + summary.diagnostics + \
@@ -521,7 +523,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     return facts, list(facts.diagnostics)
 
 
-def build_summary(*, name, path, build_base, units):
+def build_summary(*, name, path, build_base, units, parsed=None):
     """Turn the facts of a package's TUs into its labelled nodes.
 
     Every executable has its own ``main`` (and may reuse free function
@@ -577,12 +579,10 @@ def build_summary(*, name, path, build_base, units):
     for executable, sources in sorted(executables.items()):
         own = [units[s] for s in sources if s in units]
         if not own:
-            summary.diagnostics.append(
-                f"executable '{executable}': none of its sources could be "
-                'analysed (see above); skipped' if any(
-                    os.path.lexists(s) for s in sources) else
-                f"executable '{executable}': none of its sources is in the "
-                'compile database; skipped')
+            summary.diagnostics.append(skipped_executable(
+                executable, sources, package_path=path, build_base=build_base,
+                parsed=set(sources) if parsed is None else parsed,
+                skipped_directories=SKIPPED_DIRECTORIES))
             continue
         seeds = {f.id for unit in own for f in unit.functions}
         merged = merge_facts(own + library)

@@ -18,6 +18,8 @@ from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
 from colcon_rsia.package.call_sites import PUBLISHER
 from colcon_rsia.package.call_sites import scan_package
 from colcon_rsia.package.call_sites import SUBSCRIBER
+from colcon_rsia.safe_files import printable
+from colcon_rsia.safe_files import printable_lines
 
 # a call written over several lines is recorded at the line of its callee
 # name or of its object: both lie within this many lines of each other
@@ -319,7 +321,7 @@ def total_line(report):
     sub = total['call_sites'][SUBSCRIBER]
     outside = pub['in_units_only'] + sub['in_units_only']
     tokens = pub.get('from_tokens', 0) + sub.get('from_tokens', 0)
-    return (
+    return printable(
         f"rsia: coverage {total['percent']:.1f}% of "
         f"{pub['sites'] + sub['sites']} publisher/subscription call sites "
         f'in a node ({_fraction(pub)} publishers, {_fraction(sub)} '
@@ -367,4 +369,4 @@ def report_to_text(report, *, missed=False, repairs=False):
         lines.append('repairs by rule: ' + (', '.join(
             f'{rule} {count}' for rule, count in counts.items()) or 'none'))
     lines.append(total_line(report))
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)

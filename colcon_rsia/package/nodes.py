@@ -14,6 +14,7 @@ import os
 import re
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.package.cmake_configure import configure_package
 from colcon_rsia.package.cmake_configure import executables_from_codemodel
 from colcon_rsia.package.cmake_configure import is_cxx_source
@@ -42,6 +43,35 @@ def find_executables(*, package_path, build_base, diagnostics=None):
     if configured.problem and diagnostics is not None:
         diagnostics.append(configured.problem)
     return _executables_from_cmakelists(package_path)
+
+
+def skipped_executable(executable, sources, *, package_path, build_base,
+                       parsed, skipped_directories):
+    """Why an executable none of whose sources was analysed is skipped.
+
+    :param parsed: the files the analysis parsed (a failed parse said why
+      in a diagnostic of its own)
+    :param skipped_directories: the directories whose sources an unbuilt
+      package's analysis leaves out
+    """
+    if any(s in parsed for s in sources):
+        return (f"executable '{executable}': none of its sources could be "
+                'analysed (see above); skipped')
+    existing = [os.path.relpath(s, package_path) for s in sources
+                if os.path.lexists(s)]
+    if not existing:
+        return (f"executable '{executable}': none of its sources is in the "
+                'compile database; skipped')
+    shown = ', '.join(existing[:3]) + (', …' if len(existing) > 3 else '')
+    if os.path.isfile(os.path.join(build_base, COMPILE_DB_FILENAME)):
+        why = 'not in the compile database'
+    else:
+        directory = next((d for d in existing[0].split(os.sep)[:-1]
+                          if d in skipped_directories), None)
+        why = f'under {directory}/, whose sources are not analysed' \
+            if directory else 'not among the sources analysed'
+    return (f"executable '{executable}': not analysed: its sources "
+            f'({shown}) are {why}; skipped')
 
 
 def _configured_registrations(package_path, build_base):

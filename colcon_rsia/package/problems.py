@@ -14,6 +14,8 @@ This module splits those lines into file, line and reason for the
 import os
 import re
 
+from colcon_rsia.safe_files import printable_lines
+
 PROBLEMS_SCHEMA = 'colcon-rsia/problems@1'
 
 ANALYSED = 'analysed'
@@ -121,4 +123,4 @@ def problems_to_text(report):
     total = report['total']
     lines.append(f"{total} problem{'s' if total != 1 else ''} in "
                  f"{analysed} analysed package{'s' if analysed != 1 else ''}")
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)

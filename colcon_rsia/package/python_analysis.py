@@ -86,6 +86,9 @@ def build_python_summary(*, name, path):
                           path, merged, seeds)
         _entry_roots(node, unit, entries)
         summary.nodes.append(node)
+    # what an analysed module lost (a statement nested too deeply)
+    for module in sorted(units):
+        summary.diagnostics += units[module].diagnostics
     for module in sorted(failures, key=lambda m: failures[m]):
         line = failures[module]
         executables = not_analysed.get(module)

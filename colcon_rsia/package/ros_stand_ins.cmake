@@ -13,48 +13,74 @@
 
 # -- no program of the package runs -----------------------------------------
 
-# A configure only asks which targets the package makes. The package's own
-# execute_process() and try_run() would run programs on the machine that
-# analyses it (one of autoware's pip-installs at configure time): they do
-# nothing and report success with empty output. CMake's own modules
-# (compiler checks, FindPython) keep the real commands. Macros, so that
-# the output variables are set in the caller's scope and
-# CMAKE_CURRENT_LIST_FILE names the calling file.
-macro(execute_process)
-  string(FIND "${CMAKE_CURRENT_LIST_FILE}" "${CMAKE_ROOT}/" rsia_at)
-  if(rsia_at EQUAL 0)
-    _execute_process(${ARGV})
-  else()
-    rsia_skip_process(${ARGV})
-  endif()
-endmacro()
+# A configure only asks which targets the package makes. No program runs for
+# that: the sandbox colcon-rsia configures in lets CMake start none (every
+# execve fails, see colcon_rsia/package/no_exec.py), and the compilers are
+# taken as given (CMAKE_<LANG>_COMPILER_FORCED). The commands that would start
+# one start nothing here and report success with empty output, so that a
+# package that checks their result still configures (one of autoware's
+# pip-installs at configure time). Each is defined twice: CMake keeps a
+# replaced command as `_<name>`, which then names the first replacement,
+# never CMake's own command; CMake's own modules get the replacements too.
+foreach(rsia_round 1 2)
+  function(execute_process)
+    rsia_nothing_run("OUTPUT_VARIABLE;ERROR_VARIABLE"
+      "RESULT_VARIABLE;RESULTS_VARIABLE" ${ARGV})
+  endfunction()
+  function(exec_program rsia_program)
+    rsia_nothing_run("OUTPUT_VARIABLE" "RETURN_VALUE" ${ARGN})
+  endfunction()
+  function(try_run rsia_run_result rsia_compile_result)
+    set(${rsia_run_result} 0 PARENT_SCOPE)
+    set(${rsia_compile_result} TRUE PARENT_SCOPE)
+    rsia_nothing_run("COMPILE_OUTPUT_VARIABLE;RUN_OUTPUT_VARIABLE;OUTPUT_VARIABLE;RUN_OUTPUT_STDOUT_VARIABLE;RUN_OUTPUT_STDERR_VARIABLE"
+      "" ${ARGN})
+  endfunction()
+  # nothing compiles (a check of a flag or a header finds it missing)
+  function(try_compile rsia_result)
+    set(${rsia_result} FALSE PARENT_SCOPE)
+    rsia_nothing_run("OUTPUT_VARIABLE" "" ${ARGN})
+  endfunction()
+  # site_name() runs `hostname`
+  function(site_name rsia_variable)
+    set(${rsia_variable} "localhost" PARENT_SCOPE)
+  endfunction()
+  # loads a library into CMake (a policy of CMake 2 allows it)
+  function(load_command)
+    message(STATUS "colcon-rsia: load_command() of the package not run")
+  endfunction()
+endforeach()
 
-function(rsia_skip_process)
+# rsia_nothing_run(<output keywords> <result keywords> <arguments>), in a
+# replacement's scope: the variables the arguments name after the output
+# keywords are set empty, after the result keywords 0, in its caller's scope
+macro(rsia_nothing_run rsia_outputs rsia_results)
+  set(rsia_output_keywords "${rsia_outputs}")
+  set(rsia_result_keywords "${rsia_results}")
   cmake_parse_arguments(rsia ""
-    "OUTPUT_VARIABLE;ERROR_VARIABLE;RESULT_VARIABLE;RESULTS_VARIABLE" ""
-    ${ARGN})
-  foreach(rsia_stream OUTPUT ERROR)
-    if(rsia_${rsia_stream}_VARIABLE)
-      set(${rsia_${rsia_stream}_VARIABLE} "" PARENT_SCOPE)
+    "${rsia_output_keywords};${rsia_result_keywords}" "" ${ARGN})
+  foreach(rsia_keyword IN LISTS rsia_output_keywords rsia_result_keywords)
+    if(NOT rsia_${rsia_keyword})
+      continue()
+    endif()
+    if(rsia_keyword IN_LIST rsia_result_keywords)
+      set(${rsia_${rsia_keyword}} 0 PARENT_SCOPE)
+    else()
+      set(${rsia_${rsia_keyword}} "" PARENT_SCOPE)
     endif()
   endforeach()
-  foreach(rsia_result RESULT RESULTS)
-    if(rsia_${rsia_result}_VARIABLE)
-      set(${rsia_${rsia_result}_VARIABLE} 0 PARENT_SCOPE)
-    endif()
-  endforeach()
-  message(STATUS "colcon-rsia: execute_process() of the package not run")
-endfunction()
-
-macro(try_run rsia_run_result rsia_compile_result)
-  string(FIND "${CMAKE_CURRENT_LIST_FILE}" "${CMAKE_ROOT}/" rsia_at)
-  if(rsia_at EQUAL 0)
-    _try_run(${rsia_run_result} ${rsia_compile_result} ${ARGN})
-  else()
-    set(${rsia_run_result} 0)
-    set(${rsia_compile_result} TRUE)
-  endif()
+  message(STATUS "colcon-rsia: a program of the package not run")
 endmacro()
+
+# -- the compilers, taken as given ------------------------------------------
+
+# No compiler was asked what it supports: it has every feature CMake knows
+# (target_compile_features(node PUBLIC cxx_std_17) fails otherwise)
+foreach(rsia_language C CXX)
+  get_property(rsia_features GLOBAL PROPERTY
+    CMAKE_${rsia_language}_KNOWN_FEATURES)
+  set(CMAKE_${rsia_language}_COMPILE_FEATURES ${rsia_features})
+endforeach()
 
 # -- find_package: every package is found, with nothing in it --------------
 

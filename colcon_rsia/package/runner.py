@@ -8,8 +8,10 @@ analyse, report and fail the same way.
 
 import ast
 from dataclasses import dataclass
+import errno
 import os
 import re
+import tempfile
 import time
 import traceback
 from typing import Optional
@@ -28,6 +30,7 @@ from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.problems import problem_to_text
 from colcon_rsia.package.problems import split_problem
 from colcon_rsia.safe_files import display
+from colcon_rsia.safe_files import printable
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
@@ -61,10 +64,11 @@ class Outcome:
     def line(self):
         """One line for the console (undecodable names escaped)."""
         if self.summary is not None:
-            return display(summary_line(self.summary))
+            return printable(summary_line(self.summary))
         if self.warning is not None:
-            return display(f'rsia: {self.package}: {self.warning}')
-        return display(f'rsia: {self.package}: analysis failed: {self.error}')
+            return printable(f'rsia: {self.package}: {self.warning}')
+        return printable(
+            f'rsia: {self.package}: analysis failed: {self.error}')
 
 
 def summary_line(summary):
@@ -174,6 +178,9 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
         return Outcome(display(name), skipped=True)
     except AnalysisError as e:
         outcome = Outcome(name, error=str(e))
+    except OSError as e:
+        # a full disk, a read-only build base: the user's situation
+        outcome = Outcome(name, error=os_error_message(e))
     except Exception as e:  # noqa: B902
         # a bug of ours must never fail the user's build: say it and go on
         detail = traceback.format_exc().strip().splitlines()[-1]
@@ -185,6 +192,35 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
     except OSError:
         pass
     return outcome
+
+
+# what a write meets on a disk that is full, read-only or not ours
+_WRITE_ERRORS = frozenset({
+    errno.EROFS, errno.ENOSPC, errno.EDQUOT, errno.EACCES, errno.EPERM,
+    errno.ENOTDIR, errno.EEXIST, errno.EISDIR})
+
+
+def os_error_message(error):
+    """An OSError as what is wrong, naming the file."""
+    where = f"'{display(error.filename)}'" if error.filename else 'a file'
+    what = error.strerror or str(error)
+    if error.errno in _WRITE_ERRORS:
+        return f'cannot write {where}: {what}'
+    return f'{what}: {where}'
+
+
+def build_base_problem(build_base):
+    """Why the build base cannot hold the summaries, or None."""
+    if os.path.lexists(build_base) and not os.path.isdir(build_base):
+        return f"--build-base '{display(build_base)}' is not a directory"
+    try:
+        os.makedirs(build_base, exist_ok=True)
+        with tempfile.TemporaryFile(dir=build_base):
+            pass
+    except OSError as e:
+        return (f"cannot write into --build-base '{display(build_base)}': "
+                f'{e.strerror or e}')
+    return None
 
 
 def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
@@ -200,6 +236,8 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         return Outcome(
             name, warning=f"package type '{package_type}' is not analysed "
                           'by this version; skipped', skipped=True)
+    # the package's time includes CMake's configure of an unbuilt package
+    started = time.monotonic()
     has_python = package_type in MIXED_PACKAGE_TYPES and \
         bool(find_python_nodes(path).nodes)
     has_database = os.path.isfile(
@@ -224,14 +262,12 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
         repair=repair)
     if has_python:
-        started = time.monotonic()
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,
                                key=lambda n: n.id)
         summary.diagnostics += python.diagnostics
         summary.coverage.call_sites += python.coverage.call_sites
-        summary.seconds = round(
-            summary.seconds + time.monotonic() - started, 3)
-        check_stop()
-        store.write_summary(build_base, summary)
+    summary.seconds = round(time.monotonic() - started, 3)
+    check_stop()
+    store.write_summary(build_base, summary)
     return Outcome(name, summary=summary)

@@ -396,7 +396,14 @@
   input.addEventListener('input', filter);
   // '#filter=words' in the address fills the box
   var preset = /^#filter=(.*)$/.exec(window.location.hash);
-  if (preset) { input.value = decodeURIComponent(preset[1]); }
+  if (preset) {
+    try {
+      input.value = decodeURIComponent(preset[1]);
+    } catch (e) {
+      // a '%' that escapes nothing ('#filter=100%'): the text as written
+      input.value = preset[1];
+    }
+  }
 
   function sortKey(cell) {
     var value = cell.hasAttribute('data-sort') ?

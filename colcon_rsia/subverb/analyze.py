@@ -3,6 +3,7 @@
 
 import argparse
 import os
+import sys
 import time
 
 from colcon_core.logging import colcon_logger
@@ -14,6 +15,10 @@ from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 logger = colcon_logger.getChild(__name__)
+
+# a package failed: `colcon rsia analyze && colcon rsia impact ...` stops
+# (the build handler never fails a build)
+ANALYSIS_FAILED_EXIT_CODE = 1
 
 
 def positive_int(text):
@@ -62,8 +67,17 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
         # `colcon rsia analyze` needs the analysis
         from colcon_rsia.package.coverage import total_line
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.package.environment import environment_problems
         from colcon_rsia.package.runner import analyze
+        from colcon_rsia.package.runner import build_base_problem
+        from colcon_rsia.safe_files import printable
         args = context.args
+        problems = environment_problems()
+        if problems:
+            return '\n'.join(printable(p) for p in problems)
+        problem = build_base_problem(os.path.abspath(args.build_base))
+        if problem:
+            return problem
         packages = get_packages(args)
         decorators = [d for d in packages if d.selected]
         package_dirs = sorted({
@@ -75,8 +89,9 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
         failures = {}
         for number, decorator in enumerate(decorators, start=1):
             pkg = decorator.descriptor
-            print(f'[{number}/{len(decorators)}] analysing {pkg.name} ...',
-                  flush=True)
+            print(printable(
+                f'[{number}/{len(decorators)}] analysing {pkg.name} ...'),
+                flush=True)
             outcome = analyze(
                 name=pkg.name, package_type=pkg.type, path=str(pkg.path),
                 build_base=os.path.join(build_base, pkg.name),
@@ -91,5 +106,15 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                 failures[pkg.name] = outcome.error
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
               f'{time.monotonic() - started:.1f}s', flush=True)
-        print(total_line(workspace_report(summaries, failures)), flush=True)
+        if summaries or not failures:
+            print(total_line(workspace_report(summaries, failures)),
+                  flush=True)
+        else:
+            print(f'rsia: no package was analysed ({len(failures)} failed)',
+                  flush=True)
+        if failures:
+            print(printable(
+                f'rsia: {len(failures)} of {len(decorators)} packages '
+                f"failed: {', '.join(sorted(failures))}"), file=sys.stderr)
+            return ANALYSIS_FAILED_EXIT_CODE
         return 0

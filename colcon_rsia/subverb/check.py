@@ -6,12 +6,14 @@ import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.safe_files import printable
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_since_argument
 from colcon_rsia.subverb.arguments import add_system_arguments
 from colcon_rsia.system.workspace import load_system_from_args
 from colcon_rsia.system.workspace import select_changed
+from colcon_rsia.system.workspace import stale_gate_message
 
 logger = colcon_logger.getChild(__name__)
 
@@ -79,7 +81,7 @@ class CheckRsiaSubverb(RsiaSubverbExtensionPoint):
             measured = [measure_bag(path, progress=_progress)
                         for path in args.bag]
         except BagError as e:
-            return str(e)
+            return printable(e)
         if two:
             changed, _, error = select_changed(system, args)
             if error:
@@ -94,13 +96,19 @@ class CheckRsiaSubverb(RsiaSubverbExtensionPoint):
             print(check_to_text(result), end='')
         if args.fail_on_unexpected and result['unexpected_changes']:
             sys.stdout.flush()
-            print('rsia: topics changed that the model did not predict: '
-                  + ', '.join(m['topic']
-                              for m in result['unexpected_changes']),
-                  file=sys.stderr)
+            print(printable(
+                'rsia: topics changed that the model did not predict: ' +
+                ', '.join(m['topic'] for m in result['unexpected_changes'])),
+                file=sys.stderr)
+            return UNEXPECTED_EXIT_CODE
+        stale = stale_gate_message(system, '--fail-on-unexpected') \
+            if args.fail_on_unexpected else None
+        if stale:
+            sys.stdout.flush()
+            print(stale, file=sys.stderr)
             return UNEXPECTED_EXIT_CODE
         return 0
 
 
 def _progress(line):
-    print(f'rsia: {line}', file=sys.stderr)
+    print(printable(f'rsia: {line}'), file=sys.stderr)

@@ -1,7 +1,9 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
+import argparse
 import json
+import math
 import os
 
 from colcon_core.logging import colcon_logger
@@ -14,6 +16,18 @@ logger = colcon_logger.getChild(__name__)
 
 # the exit code when --fail-under is not met (as --fail-on's)
 CHECK_FAILED = 2
+
+
+def percentage(text):
+    """An argparse type: a number from 0 to 100."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not 0 <= value <= 100:  # nan too
+        raise argparse.ArgumentTypeError(
+            f"'{text}' is not a percentage from 0 to 100")
+    return value
 
 
 class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
@@ -37,7 +51,7 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
             help='List the repairs of the model mode, each with the rule '
                  'that made it, and their count by rule (text format)')
         parser.add_argument(
-            '--fail-under', type=float, metavar='PERCENT', default=None,
+            '--fail-under', type=percentage, metavar='PERCENT', default=None,
             help='Exit with 2 when fewer than PERCENT %% of the publisher '
                  'and subscription call sites have a fact, or a package '
                  'failed (for CI)')
@@ -47,7 +61,10 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
         from colcon_rsia.package.coverage import FAILED
         from colcon_rsia.package.coverage import report_to_text
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.safe_files import max_file_mb_problem
         args = context.args
+        if max_file_mb_problem():
+            return max_file_mb_problem()
         build_base = os.path.abspath(args.build_base)
         selected = [d.descriptor.name for d in get_packages(args)
                     if d.selected]

@@ -6,6 +6,8 @@ import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.safe_files import printable
+from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_since_argument
@@ -16,6 +18,7 @@ from colcon_rsia.system.impact import impact_to_json
 from colcon_rsia.system.impact import UnknownNodeError
 from colcon_rsia.system.workspace import load_system_from_args
 from colcon_rsia.system.workspace import select_changed
+from colcon_rsia.system.workspace import stale_gate_message
 
 logger = colcon_logger.getChild(__name__)
 
@@ -78,7 +81,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         try:
             fail_on = expand_changed(system, args.fail_on or [])
         except UnknownNodeError as e:
-            return f'--fail-on: {e}'
+            return printable(f'--fail-on: {e}')
         changed, _, error = select_changed(system, args)
         if error:
             return error
@@ -90,9 +93,17 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         hit = sorted(set(fail_on) & set(result['rate_impact']))
         if hit:
             sys.stdout.flush()
-            print('rsia: the rate-aware impact set contains --fail-on '
-                  f"node{'s' if len(hit) > 1 else ''} {', '.join(hit)}",
-                  file=sys.stderr)
+            print(printable(
+                'rsia: the rate-aware impact set contains --fail-on '
+                f"node{'s' if len(hit) > 1 else ''} {', '.join(hit)}"),
+                file=sys.stderr)
+            return FAIL_ON_EXIT_CODE
+        stale = stale_gate_message(system, '--fail-on') if args.fail_on \
+            else None
+        if stale:
+            # a gate never passes on results older than the code
+            sys.stdout.flush()
+            print(stale, file=sys.stderr)
             return FAIL_ON_EXIT_CODE
         return 0
 
@@ -115,7 +126,7 @@ def _impact_text(result, traditional):
     if paper_only:
         lines.append(f"paper model only: {', '.join(paper_only)}")
     lines += not_triggered_text(result['not_triggered'])
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)
 
 
 def not_triggered_text(edges):
@@ -154,4 +165,4 @@ def _all_text(result):
                          f"paper {row['paper_impact']}:")
             lines += ['  ' + line for line in
                       not_triggered_text(row['not_triggered'])[1:]]
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)

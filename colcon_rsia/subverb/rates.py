@@ -2,6 +2,7 @@
 # Licensed under the Apache License, Version 2.0
 
 import json
+import math
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
@@ -73,8 +74,10 @@ def parse_set_rates(values):
             number = float(hz)
         except ValueError:
             number = None
-        if not topic.startswith('/') or number is None or number < 0:
+        # nan, inf and 1e400 (inf) are no rate, and no JSON number
+        if not topic.startswith('/') or number is None or \
+                not math.isfinite(number) or number < 0:
             return None, f'--set-rate {value!r}: expected /TOPIC=HZ ' \
-                '(a global topic name and a rate >= 0)'
+                '(a global topic name and a finite rate >= 0)'
         rates[topic] = number
     return rates, None

@@ -5,6 +5,7 @@ import os
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.safe_files import printable
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_since_argument
@@ -64,7 +65,7 @@ class ReportRsiaSubverb(RsiaSubverbExtensionPoint):
             return f"cannot write the report into '{output}': " \
                 f'{e.strerror or e}'
         for note in notes:
-            print(f'rsia: {note}')
-        print(f'rsia: report written to {os.path.abspath(output)}: '
-              f"{', '.join(written)}")
+            print(printable(f'rsia: {note}'))
+        print(printable(f'rsia: report written to {os.path.abspath(output)}: '
+                        f"{', '.join(written)}"))
         return 0

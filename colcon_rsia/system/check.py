@@ -10,6 +10,7 @@ a soundness miss of the model; it is listed with the edges that were
 supposed to keep its rate.
 """
 
+from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.system.impact import PAPER
 from colcon_rsia.system.rates import predict_rates
 from colcon_rsia.system.rates import what_if
@@ -162,7 +163,7 @@ def check_to_text(result):
         for topic in result['predicted_but_unchanged']:
             lines.append(f'  predicted to change, unchanged: '
                          f"{topic['topic']} ({_hz(topic['after_hz'])})")
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)
 
 
 def _hz(hz):

@@ -18,6 +18,8 @@ from typing import Optional
 from typing import Tuple
 
 from colcon_rsia import model
+from colcon_rsia.safe_files import printable
+from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.system.names import join
 from colcon_rsia.system.names import node_fqn
 from colcon_rsia.system.names import resolve
@@ -65,6 +67,9 @@ class SystemGraph:
     instances: Dict[str, Instance] = field(default_factory=dict)
     graph: Any = field(default_factory=_new_digraph)  # a networkx.DiGraph
     notes: List[str] = field(default_factory=list)
+    # {package: why its last analysis failed} of the summaries used that
+    # are older than that analysis (stale: the package may have changed)
+    stale: Dict[str, str] = field(default_factory=dict)
 
     def topics(self):
         """The global names of all topics, sorted."""
@@ -336,9 +341,11 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
       label shows its predicted rate and where it comes from
     """
     def quote(text):
-        # a line break stays DOT's own \n escape
-        return '"' + text.replace('\\', '\\\\').replace('"', '\\"').replace(
-            '\n', '\\n') + '"'
+        # a line break stays DOT's own \n escape; the rest of a name is
+        # printable (the DOT text goes to the console too)
+        return '"' + '\\n'.join(
+            printable(line).replace('\\', '\\\\').replace('"', '\\"')
+            for line in text.split('\n')) + '"'
     lines = ['digraph rsia {', '  rankdir=LR;',
              '  node [fontname="Helvetica", fontsize=10];']
     for instance in sorted(system.instances.values(), key=lambda i: i.id):
@@ -405,4 +412,4 @@ def graph_to_text(system):
             lines.append(
                 f'  subscribes {s["resolved"] or _unresolved(subscriber)}'
                 f' -> {callback} {subscriber.location}')
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)

@@ -16,6 +16,7 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import model
+from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.system.graph import ALL_INPUTS
 from colcon_rsia.system.impact import crosses
 from colcon_rsia.system.impact import PAPER
@@ -58,11 +59,44 @@ class _Predictor:
             return self.rates[name]
         if name in self.in_progress:
             return _unknown(f'{name} follows itself (a cycle)')
+        # the topics it follows first, the farthest first, without
+        # recursion: a chain of a thousand nodes is deeper than Python's
+        # stack. Each is then computed from rates already known (or in
+        # progress: a cycle), as if followed recursively.
         self.in_progress.add(name)
-        rate = self._topic(name)
-        self.in_progress.discard(name)
-        self.rates[name] = rate
-        return rate
+        stack = [(name, iter(self._inputs(name)))]
+        while stack:
+            current, inputs = stack[-1]
+            for following in inputs:
+                if following not in self.rates and \
+                        following not in self.in_progress:
+                    self.in_progress.add(following)
+                    stack.append((following, iter(self._inputs(following))))
+                    break
+            else:
+                stack.pop()
+                self.rates[current] = self._topic(current)
+                self.in_progress.discard(current)
+        return self.rates[name]
+
+    def _inputs(self, name):
+        """The topics the rate of topic `name` may follow."""
+        if name in self.set_rates:
+            return []
+        vertex = ('topic', name)
+        if vertex not in self.system.graph:
+            return []
+        inputs = []
+        for node in sorted(self.system.graph.predecessors(vertex)):
+            instance = self.system.instances[node[1]]
+            if node[1] in self.changed or instance.node is None:
+                continue
+            for entry in instance.publishers:
+                if entry['resolved'] == name and \
+                        entry['publisher'].label != model.INDEPENDENT:
+                    inputs += [trigger for trigger, _ in entry['triggers']
+                               if trigger != ALL_INPUTS and ':' not in trigger]
+        return inputs
 
     def _topic(self, name):
         if name in self.set_rates:
@@ -257,4 +291,4 @@ def rates_to_text(result):
         for keep in result['kept']:
             lines.append(f"  {keep['topic']} keeps {_fmt(keep['hz'])}: "
                          f"{keep['edge']} stops {keep['via']}")
-    return '\n'.join(lines) + '\n'
+    return printable_lines(lines)

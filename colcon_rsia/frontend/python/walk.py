@@ -142,7 +142,15 @@ class _Extractor(Roles):
         body = [scope.node.body] if scope.kind == 'lambda' \
             else scope.node.body
         for node in body:
-            self._visit(node, context)
+            try:
+                self._visit(node, context)
+            except RecursionError:
+                # an expression nested deeper than Python's stack (a sum
+                # of a thousand terms): that statement's facts are lost,
+                # not the module's
+                self.facts.diagnostics.append(
+                    f'{self.location(node)}: nested too deeply to analyse; '
+                    'this statement is skipped')
 
     def _stub(self, value):
         cls, name = value.ref
