@@ -64,12 +64,13 @@ class Roles:
         topics, argument = found
         handle, handle_name = self._target(node, context)
         for topic, literal in topics:
+            source, affixes = (None, None) if literal else \
+                self._topic_source(argument, context)
             self.facts.publishers.append(model.PublisherFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 handle_name=handle_name, location=self.location(node),
-                topic_handle=None if literal else self._topic_handle(
-                    argument, context)))
+                topic_handle=source, topic_affixes=affixes))
 
     def _on_subscriber(self, api, name, node, context):
         name_arg, type_arg = api.name, api.msg_type_arg
@@ -90,12 +91,13 @@ class Roles:
             self._bind_one(scope, 1, callback_args, context)
         handle, _ = self._target(node, context)
         for topic, literal in topics:
+            source, affixes = (None, None) if literal else \
+                self._topic_source(argument, context)
             self.facts.subscribers.append(model.SubscriberFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 callback=callback, location=self.location(node),
-                topic_handle=None if literal else self._topic_handle(
-                    argument, context)))
+                topic_handle=source, topic_affixes=affixes))
 
     def _on_timer(self, api, name, node, context):
         callback, _, _ = self._callback(

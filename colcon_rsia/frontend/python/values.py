@@ -6,6 +6,7 @@ Part of the Python front end (see :mod:`colcon_rsia.frontend.python`).
 """
 
 import ast
+import contextlib
 import re
 import string
 
@@ -58,6 +59,9 @@ class Project:
         self._numbers_active = set()
         self._strings_active = set()
         self._mro = {}
+        # (expression, scope) -> text or None: the values that stand in
+        # for some expressions while strings are computed (substituting)
+        self._substitute = None
 
     def load(self, name):
         """The module `name`; raise SourceError when it cannot be parsed."""
@@ -497,7 +501,24 @@ class Project:
             self._strings_active.discard(key)
         return text if text is None or len(text) <= MAX_STRING else None
 
+    @contextlib.contextmanager
+    def substituting(self, substitute):
+        """Compute strings with some expressions standing for a value.
+
+        :param substitute: (expression, scope) -> the text it stands for,
+          or None to evaluate it as usual
+        """
+        previous, self._substitute = self._substitute, substitute
+        try:
+            yield
+        finally:
+            self._substitute = previous
+
     def _string(self, expr, scope, depth):
+        if self._substitute is not None:
+            text = self._substitute(expr, scope)
+            if text is not None:
+                return text
         if isinstance(expr, ast.Constant):
             return expr.value if isinstance(expr.value, str) else None
         if isinstance(expr, (ast.Name, ast.Attribute)):

@@ -12,6 +12,7 @@ from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.python.params import Params
 from colcon_rsia.frontend.python.roles import Roles
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import MODULE_FUNCTION
@@ -23,7 +24,6 @@ from colcon_rsia.frontend.python.values import CLASS
 from colcon_rsia.frontend.python.values import EXT
 from colcon_rsia.frontend.python.values import EXTBOUND
 from colcon_rsia.frontend.python.values import FUNC
-from colcon_rsia.frontend.python.values import MAX_DEPTH
 from colcon_rsia.frontend.python.values import PARTIAL
 from colcon_rsia.frontend.python.values import Project
 from colcon_rsia.frontend.python.values import STUB
@@ -80,7 +80,7 @@ def extract_python_facts(path, *, package_path, module_name,
     return facts
 
 
-class _Extractor(Roles):
+class _Extractor(Roles, Params):
     """Collects the facts of one module; see :func:`extract_python_facts`."""
 
     def __init__(self, project, module, facts):
@@ -495,67 +495,6 @@ class _Extractor(Roles):
         if name is not None:
             return name, True
         return self.text(expr), False
-
-    def _topic_handle(self, expr, context):
-        """The parameter read a name that is not known comes from."""
-        read = self._param_read_of(expr, context.scope, 0)
-        return self._param_handle(*read) if read is not None else None
-
-    def _param_read_of(self, expr, scope, depth):
-        """(call, scope) of the parameter read `expr` takes its value from.
-
-        ``rospy.get_param('~topic', 'chatter')``,
-        ``self.declare_parameter('topic', 'scan').value``,
-        ``self.get_parameter('topic').get_parameter_value().string_value``,
-        or a name assigned once from one of them.
-        """
-        if expr is None or depth > MAX_DEPTH:
-            return None
-        if isinstance(expr, ast.Call):
-            return (expr, scope) if self._param_api(expr, scope) else None
-        if isinstance(expr, ast.Attribute) and \
-                expr.attr in ('value', 'string_value'):
-            inner = expr.value
-            if expr.attr == 'string_value' and \
-                    isinstance(inner, ast.Call) and not inner.args and \
-                    isinstance(inner.func, ast.Attribute) and \
-                    inner.func.attr == 'get_parameter_value':
-                inner = inner.func.value
-            read = self._param_read_of(inner, scope, depth + 1)
-            if read is not None:
-                return read
-        source = self.project.sole_source(expr, scope, depth)
-        return self._param_read_of(source[0], source[1], depth + 1) \
-            if source is not None else None
-
-    def _param_api(self, call, scope):
-        called = self.project.value(call.func, scope)
-        if called is None or called.kind not in (EXT, EXTBOUND):
-            return None
-        api = python_api.lookup(called.ref)
-        return api if api is not None and \
-            api.role == ros_api.PARAM_READ else None
-
-    def _param_handle(self, call, scope):
-        # the same for the read and for the topics taking its value
-        return f'param@{scope.module.relpath}:{call.lineno}:' \
-            f'{call.col_offset}'
-
-    def _on_param_read(self, api, name, node, context):
-        param = self.project.string(
-            call_argument(node, api.name), context.scope)
-        if param is None:
-            return
-        namespace = '~' if api.node_private else ''
-        if param.startswith('~'):
-            # rospy: a private parameter
-            param, namespace = param[1:], '~'
-        default = self.project.string(
-            call_argument(node, api.default), context.scope)
-        self.facts.param_reads.append(model.ParamRead(
-            function=context.function, name=param, default=default,
-            handle=self._param_handle(node, context.scope), nh=namespace,
-            location=self.location(node)))
 
     def _msg_type(self, expr, context):
         if expr is None:
