@@ -27,10 +27,19 @@ publishers                                ``rospy.Publisher``,
                                           ``tf2_ros.TransformBroadcaster`` and
                                           ``tf.TransformBroadcaster`` (/tf),
                                           ``tf2_ros.StaticTransformBroadcaster``
-                                          (/tf_static)
+                                          (/tf_static),
+                                          ``diagnostic_updater.Updater``
+                                          (/diagnostics; with a node
+                                          argument (ROS 2) it publishes
+                                          from a timer of its own)
 publish sites                             ``rospy.Publisher.publish``,
                                           ``rclpy.publisher.Publisher.publish``,
-                                          ``<broadcaster>.sendTransform``;
+                                          ``<broadcaster>.sendTransform``,
+                                          ``Updater.update`` /
+                                          ``force_update`` / ``broadcast`` /
+                                          ``publish``,
+                                          ``DiagnosedPublisher.publish`` (the
+                                          publisher it wraps);
                                           ``publish`` / ``sendTransform`` on an
                                           object of unknown type
 subscribers                               ``rospy.Subscriber``,
@@ -101,6 +110,7 @@ DURATION = 'duration'   # a Duration object (a bare number: seconds)
 HZ = 'hz'               # a frequency
 
 NODE_CLASS = 'rclpy.node.Node'
+DIAGNOSTICS_MSG = 'diagnostic_msgs::DiagnosticArray'
 
 
 @dataclass(frozen=True)
@@ -137,6 +147,16 @@ class PyApi:
     default: Optional[tuple] = None
     # PARAM_READ: ROS 2 parameters always belong to the node itself
     node_private: bool = False
+    # PUBLISHER: (position, keyword) of an argument that, when given and
+    # not a string, makes the object publish from a timer of its own
+    # (ROS 2 diagnostic_updater.Updater(node, period)); `period` gives the
+    # timer's period, else `default_period` seconds
+    own_timer: Optional[tuple] = None
+    default_period: Optional[float] = None
+    # PUBLISHER: (position, keyword) of a publisher the object wraps: it
+    # makes no publisher of its own, its publish sites are the wrapped
+    # one's (diagnostic_updater.DiagnosedPublisher(pub, ...))
+    wraps: Optional[tuple] = None
 
 
 NODE = NODE_CLASS + '.'
@@ -260,6 +280,20 @@ CALLS = {
     'tf.TransformBroadcaster.sendTransformMessage': PyApi(PUBLISH),
     'tf.TransformListener': PyApi(
         SUBSCRIBER, msg_type=TF_MSG, implicit_topics=('/tf', '/tf_static')),
+    # --- diagnostic_updater: the updater publishes /diagnostics ---
+    # ROS 1 Updater() publishes when update()/force_update() is called;
+    # ROS 2 Updater(node, period=1.0) also from a timer of its own
+    'diagnostic_updater.Updater': PyApi(
+        PUBLISHER, msg_type=DIAGNOSTICS_MSG,
+        implicit_topics=('/diagnostics',), own_timer=(0, 'node'),
+        period=(1, 'period'), period_unit=SECONDS, default_period=1.0),
+    'diagnostic_updater.Updater.update': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.force_update': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.broadcast': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.publish': PyApi(PUBLISH),
+    'diagnostic_updater.DiagnosedPublisher': PyApi(
+        PUBLISHER, wraps=(0, 'pub')),
+    'diagnostic_updater.DiagnosedPublisher.publish': PyApi(PUBLISH),
     # --- plain sleeps and callback binding ---
     'time.sleep': PyApi(SLEEP),
     'functools.partial': PyApi(PARTIAL),
@@ -319,6 +353,10 @@ ALIASES = {
     'tf2_ros.transform_listener.TransformListener':
         'tf2_ros.TransformListener',
     'tf.broadcaster.TransformBroadcaster': 'tf.TransformBroadcaster',
+    'diagnostic_updater._diagnostic_updater.Updater':
+        'diagnostic_updater.Updater',
+    'diagnostic_updater._publisher.DiagnosedPublisher':
+        'diagnostic_updater.DiagnosedPublisher',
     'tf.listener.TransformListener': 'tf.TransformListener',
 }
 

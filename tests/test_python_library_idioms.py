@@ -1,0 +1,192 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Python endpoints made by library classes and the package's helpers.
+
+Each script is a node; the expectations are written from reading the
+scripts and the libraries' documented behaviour.
+"""
+
+from colcon_rsia.package.python_analysis import analyze_python_package
+from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.system.load import load_system
+import pytest
+
+PACKAGE_XML = """<?xml version="1.0"?>
+<package format="2">
+  <name>idioms</name>
+  <version>0.0.1</version>
+  <description>test</description>
+  <maintainer email="a@b.c">a</maintainer>
+  <license>BSD</license>
+  <buildtool_depend>catkin</buildtool_depend>
+</package>
+"""
+
+# ROS 1: the updater publishes where update() is called, here in a loop
+# paced by a Rate; a DiagnosedPublisher publishes through the publisher it
+# wraps
+DIAG_LOOP = """#!/usr/bin/env python3
+import rospy
+import diagnostic_updater
+from std_msgs.msg import String
+
+
+def check(stat):
+    return stat
+
+
+if __name__ == '__main__':
+    rospy.init_node('diag_loop')
+    rospy.Subscriber('input', String, lambda msg: None)
+    updater = diagnostic_updater.Updater()
+    updater.add('check', check)
+    pub = rospy.Publisher('chatter', String, queue_size=1)
+    freq = diagnostic_updater.FrequencyStatusParam({'min': 5, 'max': 15})
+    diagnosed = diagnostic_updater.DiagnosedPublisher(
+        pub, updater, freq, diagnostic_updater.TimeStampStatusParam())
+    rate = rospy.Rate(10)
+    while not rospy.is_shutdown():
+        diagnosed.publish(String())
+        updater.update()
+        rate.sleep()
+"""
+
+# ROS 1: the updater forced from a subscription callback
+DIAG_CALLBACK = """#!/usr/bin/env python3
+import rospy
+from diagnostic_updater import Updater
+from std_msgs.msg import String
+
+
+class Watcher(object):
+    def __init__(self):
+        self.updater = Updater()
+        rospy.Subscriber('events', String, self.on_event)
+
+    def on_event(self, msg):
+        self.updater.force_update()
+
+
+if __name__ == '__main__':
+    rospy.init_node('diag_callback')
+    Watcher()
+    rospy.spin()
+"""
+
+# ROS 2: Updater(node, period) publishes from a timer of its own (every
+# `period` seconds, 1 s by default); update() called from a subscription
+# callback publishes there too
+DIAG_ROS2 = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+import diagnostic_updater
+from std_msgs.msg import String
+
+PERIOD = 0.25
+
+
+class Monitor(Node):
+    def __init__(self):
+        super().__init__('monitor')
+        self.updater = diagnostic_updater.Updater(self, PERIOD)
+        self.updater.add('check', lambda stat: stat)
+        self.create_subscription(String, 'events', self.on_event, 10)
+        self.manual = diagnostic_updater.Updater(node=self)
+
+    def on_event(self, msg):
+        self.manual.update()
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Monitor())
+
+
+if __name__ == '__main__':
+    main()
+"""
+
+
+@pytest.fixture(scope='module')
+def package(tmp_path_factory):
+    root = tmp_path_factory.mktemp('idioms') / 'idioms'
+    files = {
+        'package.xml': PACKAGE_XML,
+        'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.10)\n'
+                          'project(idioms)\nfind_package(catkin REQUIRED)\n'
+                          'catkin_package()\n',
+        'scripts/diag_loop': DIAG_LOOP,
+        'scripts/diag_callback': DIAG_CALLBACK,
+        'scripts/diag_ros2': DIAG_ROS2,
+    }
+    for relative, text in files.items():
+        path = root / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+        if relative.startswith('scripts/'):
+            path.chmod(0o755)
+    return root
+
+
+@pytest.fixture(scope='module')
+def summary(package, tmp_path_factory):
+    return analyze_python_package(
+        name='idioms', path=str(package),
+        build_base=str(tmp_path_factory.mktemp('build')))
+
+
+def _node(summary, executable):
+    return next(n for n in summary.nodes if n.executable == executable)
+
+
+def _publishers(summary, executable):
+    return sorted(
+        (p.topic, p.msg_type, p.api, p.label, p.pattern, p.location,
+         sorted(e.location for e in p.evidence if e.kind == 'publish_site'))
+        for p in _node(summary, executable).publishers)
+
+
+def test_ros1_updater_publishes_where_update_is_called(summary):
+    assert _publishers(summary, 'diag_loop') == [
+        ('/diagnostics', 'diagnostic_msgs::DiagnosticArray',
+         'diagnostic_updater.Updater', 'independent', 'rate_loop',
+         'scripts/diag_loop:14', ['scripts/diag_loop:23']),
+        # published through the DiagnosedPublisher wrapping it
+        ('chatter', 'std_msgs::String', 'rospy.Publisher', 'independent',
+         'rate_loop', 'scripts/diag_loop:16', ['scripts/diag_loop:22']),
+    ]
+    # the ROS 1 updater has no timer of its own
+    assert _node(summary, 'diag_loop').timers == []
+
+
+def test_ros1_updater_forced_from_a_callback_is_dependent(summary):
+    assert _publishers(summary, 'diag_callback') == [
+        ('/diagnostics', 'diagnostic_msgs::DiagnosticArray',
+         'diagnostic_updater.Updater', 'dependent', 'none',
+         'scripts/diag_callback:9', ['scripts/diag_callback:13'])]
+
+
+def test_ros2_updater_publishes_from_its_own_timer(summary):
+    node = _node(summary, 'diag_ros2')
+    assert sorted((t.api, t.callback, t.period, t.rate_hz, t.location)
+                  for t in node.timers) == [
+        ('diagnostic_updater.Updater', 'diagnostic_updater.Updater.update',
+         '1.0', 1.0, 'scripts/diag_ros2:16'),
+        ('diagnostic_updater.Updater', 'diagnostic_updater.Updater.update',
+         'PERIOD', 4.0, 'scripts/diag_ros2:13')]
+    assert _publishers(summary, 'diag_ros2') == [
+        ('/diagnostics', 'diagnostic_msgs::DiagnosticArray',
+         'diagnostic_updater.Updater', 'dependent', 'none',
+         'scripts/diag_ros2:16',
+         ['scripts/diag_ros2:16', 'scripts/diag_ros2:19']),
+        ('/diagnostics', 'diagnostic_msgs::DiagnosticArray',
+         'diagnostic_updater.Updater', 'independent', 'timer',
+         'scripts/diag_ros2:13', ['scripts/diag_ros2:13']),
+    ]
+
+
+def test_diagnostics_connect_in_the_graph(summary):
+    graph = graph_to_json(load_system([summary]))
+    topic = next(t for t in graph['topics'] if t['name'] == '/diagnostics')
+    assert sorted(topic['publishers']) == [
+        'idioms/diag_callback', 'idioms/diag_loop', 'idioms/diag_ros2']
