@@ -106,6 +106,57 @@ if __name__ == '__main__':
     main()
 """
 
+# the package's library re-exports its modules' names with star imports;
+# `Relay` is both a submodule and the class it defines (the package's
+# __init__.py makes the name the class, as when run)
+LIB_INIT = """from .Relay import *
+from .names import *
+"""
+
+LIB_NAMES = """__all__ = ['INPUT']
+INPUT = 'relay_in'
+OUTPUT = 'not_exported'
+"""
+
+LIB_RELAY = """import rospy
+from std_msgs.msg import String
+
+
+class Relay(object):
+    def __init__(self):
+        self.pub = rospy.Publisher('relay_out', String, queue_size=1)
+
+    def forward(self, msg):
+        self.pub.publish(msg)
+"""
+
+STAR_PACKAGE = """#!/usr/bin/env python3
+import rospy
+from idioms_lib import Relay, INPUT
+from std_msgs.msg import String
+
+if __name__ == '__main__':
+    rospy.init_node('star_package')
+    relay = Relay()
+    rospy.Subscriber(INPUT, String, relay.forward)
+    rospy.spin()
+"""
+
+# rospy's names through a star import
+STAR_ROSPY = """#!/usr/bin/env python3
+from rospy import *
+from std_msgs.msg import String
+
+if __name__ == '__main__':
+    init_node('star_rospy')
+    Subscriber('ticks', String, lambda msg: None)
+    out = Publisher('paced', String, queue_size=1)
+    rate = Rate(5)
+    while not is_shutdown():
+        out.publish(String())
+        rate.sleep()
+"""
+
 
 @pytest.fixture(scope='module')
 def package(tmp_path_factory):
@@ -118,6 +169,11 @@ def package(tmp_path_factory):
         'scripts/diag_loop': DIAG_LOOP,
         'scripts/diag_callback': DIAG_CALLBACK,
         'scripts/diag_ros2': DIAG_ROS2,
+        'src/idioms_lib/__init__.py': LIB_INIT,
+        'src/idioms_lib/names.py': LIB_NAMES,
+        'src/idioms_lib/Relay.py': LIB_RELAY,
+        'scripts/star_package': STAR_PACKAGE,
+        'scripts/star_rospy': STAR_ROSPY,
     }
     for relative, text in files.items():
         path = root / relative
@@ -190,3 +246,23 @@ def test_diagnostics_connect_in_the_graph(summary):
     topic = next(t for t in graph['topics'] if t['name'] == '/diagnostics')
     assert sorted(topic['publishers']) == [
         'idioms/diag_callback', 'idioms/diag_loop', 'idioms/diag_ros2']
+
+
+def test_names_a_package_re_exports_with_star_imports(summary):
+    assert _publishers(summary, 'star_package') == [
+        ('relay_out', 'std_msgs::String', 'rospy.Publisher', 'dependent',
+         'none', 'src/idioms_lib/Relay.py:7', ['src/idioms_lib/Relay.py:10'])]
+    node = _node(summary, 'star_package')
+    assert [(s.topic, s.topic_is_literal, s.callback)
+            for s in node.subscribers] == [
+        ('relay_in', True, 'Relay.forward')]
+
+
+def test_an_api_through_a_star_import(summary):
+    assert _publishers(summary, 'star_rospy') == [
+        ('paced', 'std_msgs::String', 'rospy.Publisher', 'independent',
+         'rate_loop', 'scripts/star_rospy:8', ['scripts/star_rospy:11'])]
+    node = _node(summary, 'star_rospy')
+    assert [(s.topic, s.api) for s in node.subscribers] == [
+        ('ticks', 'rospy.Subscriber')]
+    assert node.name == 'star_rospy'

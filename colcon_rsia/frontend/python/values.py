@@ -138,7 +138,11 @@ class Project:
         """The value of a name read in a scope (where it is bound)."""
         owner = lookup(scope, name)
         if owner is None:
-            return None
+            owner, dotted = self.star_source(scope.module, name, depth)
+            if dotted is not None:
+                return _Value(EXT, dotted)
+            if owner is None:
+                return None
         for kind, payload, where in owner.bindings.get(name, ()):
             if kind == 'import':
                 result = self.resolve_dotted(payload, depth)
@@ -175,6 +179,14 @@ class Project:
         for cut in range(len(parts), 0, -1):
             head = '.'.join(parts[:cut])
             if head in self.package_modules:
+                if cut == len(parts) and cut > 1:
+                    # `from package import name`: the package's own name
+                    # for it first (`from .name import *` in its
+                    # __init__.py may bind a class of that name), then the
+                    # submodule
+                    bound = self._package_attribute(parts, depth)
+                    if bound is not None:
+                        return bound
                 value = _Value(MODULE, head)
                 for attr in parts[cut:]:
                     value = self.attr(value, attr, depth)
@@ -183,13 +195,31 @@ class Project:
                 return value
         return _Value(EXT, python_api.canonical(dotted))
 
+    def _package_attribute(self, parts, depth):
+        """The value a package module binds for its submodule's name."""
+        parent = self.module('.'.join(parts[:-1]))
+        if parent is None or depth > MAX_DEPTH:
+            return None
+        owner, dotted = self.module_owner(parent, parts[-1], depth)
+        if dotted is not None:
+            return _Value(EXT, dotted)
+        if owner is None or any(
+                kind == 'import' and payload == '.'.join(parts)
+                for kind, payload, _ in owner.bindings.get(parts[-1], ())):
+            return None  # the submodule itself
+        return self.name_value(owner, parts[-1], depth + 1)
+
     def attr(self, base, name, depth):
         """The value of ``base.name``."""
         kind = base.kind
         if kind == MODULE:
             module = self.module(base.ref)
-            if module is not None and name in module.scope.bindings:
-                return self.name_value(module.scope, name, depth)
+            owner, dotted = self.module_owner(module, name, depth) \
+                if module is not None else (None, None)
+            if dotted is not None:
+                return _Value(EXT, dotted)
+            if owner is not None:
+                return self.name_value(owner, name, depth)
             sub = f'{base.ref}.{name}'
             if sub in self.package_modules:
                 return _Value(MODULE, sub)
@@ -345,6 +375,55 @@ class Project:
             return None
         return _Value(SUPER, current.cls)
 
+    # star imports ----------------------------------------------------------
+
+    def owner(self, scope, name, depth=0):
+        """The scope that binds a name read in `scope`, or None.
+
+        Where the scope's own code binds it (:func:`lookup`), else the
+        package module a ``from X import *`` of its module takes it from.
+        """
+        owner = lookup(scope, name)
+        if owner is None:
+            owner, _ = self.star_source(scope.module, name, depth)
+        return owner
+
+    def module_owner(self, module, name, depth=0):
+        """(scope, None) of the module that binds ``module.name``.
+
+        The module itself, else what its star imports give (see
+        :meth:`star_source`); (None, None) when neither binds it.
+        """
+        if name in module.scope.bindings:
+            return module.scope, None
+        return self.star_source(module, name, depth)
+
+    def star_source(self, module, name, depth=0):
+        """Where ``from X import *`` of a module takes a name from.
+
+        (module scope, None): a package module that binds it (its
+        ``__all__``, else its public names); (None, dotted name): an API
+        of :mod:`python_api` an outside module X has; (None, None): none.
+        The last star import that has the name wins, as when run.
+        """
+        if depth > MAX_DEPTH:
+            return None, None
+        for base in reversed(module.star_imports):
+            if base not in self.package_modules:
+                dotted = python_api.canonical(f'{base}.{name}')
+                if python_api.lookup(dotted) is not None or \
+                        dotted in python_api.DURATIONS:
+                    return None, dotted
+                continue
+            other = self.module(base)
+            if other is None or other is module or \
+                    not _exports(other, name):
+                continue
+            found = self.module_owner(other, name, depth + 1)
+            if found != (None, None):
+                return found
+        return None, None
+
     # numbers (rates) -------------------------------------------------------
 
     def number(self, expr, scope, depth=0):
@@ -372,7 +451,7 @@ class Project:
                 expr.op, self.number(expr.left, scope, depth),
                 self.number(expr.right, scope, depth))
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id, depth)
             return self._name_number(owner, expr.id, depth) \
                 if owner is not None else None
         if isinstance(expr, ast.Attribute):
@@ -400,8 +479,10 @@ class Project:
                 module_name, _, attr = payload.rpartition('.')
                 module = self.module(module_name) \
                     if module_name in self.package_modules else None
-                if module is not None and attr in module.scope.bindings:
-                    return self._name_number(module.scope, attr, depth + 1)
+                owner = self.module_owner(module, attr, depth)[0] \
+                    if module is not None else None
+                if owner is not None:
+                    return self._name_number(owner, attr, depth + 1)
             return None
         finally:
             self._numbers_active.discard(key)
@@ -412,9 +493,10 @@ class Project:
             return None
         if base.kind == MODULE:
             module = self.module(base.ref)
-            if module is not None:
-                return self._name_number(module.scope, expr.attr, depth)
-            return None
+            owner = self.module_owner(module, expr.attr, depth)[0] \
+                if module is not None else None
+            return self._name_number(owner, expr.attr, depth) \
+                if owner is not None else None
         if base.kind not in (OBJ, CLASS):
             return None
         sites = []
@@ -443,7 +525,7 @@ class Project:
         a loop variable), or cannot be found: its value is not known.
         """
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id, depth)
             return self._sole_binding(owner, expr.id, depth) \
                 if owner is not None else None
         if not isinstance(expr, ast.Attribute):
@@ -453,8 +535,10 @@ class Project:
             return None
         if base.kind == MODULE:
             module = self.module(base.ref)
-            return self._sole_binding(module.scope, expr.attr, depth) \
+            owner = self.module_owner(module, expr.attr, depth)[0] \
                 if module is not None else None
+            return self._sole_binding(owner, expr.attr, depth) \
+                if owner is not None else None
         if base.kind not in (OBJ, CLASS):
             return None
         sites = []
@@ -478,8 +562,10 @@ class Project:
             module_name, _, attr = payload.rpartition('.')
             module = self.module(module_name) \
                 if module_name in self.package_modules else None
-            if module is not None:
-                return self._sole_binding(module.scope, attr, depth + 1)
+            owner = self.module_owner(module, attr, depth)[0] \
+                if module is not None else None
+            if owner is not None:
+                return self._sole_binding(owner, attr, depth + 1)
         return None
 
     def string(self, expr, scope, depth=0):
@@ -606,7 +692,7 @@ class Project:
     def handle(self, expr, scope):
         """The handle id of the variable/attribute an expression names."""
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id)
             return owner.handle(expr.id) if owner is not None else None
         if isinstance(expr, ast.Attribute):
             base = self.value(expr.value, scope)
@@ -638,6 +724,23 @@ def _arithmetic(op, left, right):
     except python_arithmetic.Refused:
         return None
     return value if isinstance(value, (int, float)) else None
+
+
+def _exports(module, name):
+    """Whether ``from module import *`` binds `name`.
+
+    The names of its ``__all__`` when that is a list of strings, else its
+    names that do not start with ``_``.
+    """
+    listed = set()
+    for kind, payload, _ in module.scope.bindings.get('__all__', ()):
+        if kind != 'assign' or not isinstance(payload, (ast.List, ast.Tuple)):
+            return not name.startswith('_')
+        listed.update(e.value for e in payload.elts
+                      if isinstance(e, ast.Constant))
+    if module.scope.bindings.get('__all__'):
+        return name in listed
+    return not name.startswith('_')
 
 
 def call_argument(call, spec):
