@@ -157,6 +157,79 @@ if __name__ == '__main__':
         rate.sleep()
 """
 
+# ROS 1: an interactive marker server subscribes <topic_ns>/feedback and
+# calls the marker's and the menu's callbacks from it: a publish in one is
+# input-driven
+MARKERS_ROS1 = """#!/usr/bin/env python3
+import rospy
+from geometry_msgs.msg import Twist
+from interactive_markers.interactive_marker_server import *
+from interactive_markers.menu_handler import MenuHandler
+from visualization_msgs.msg import InteractiveMarker
+
+
+def on_feedback(feedback):
+    pass
+
+
+def on_menu(feedback):
+    cmd_pub.publish(Twist())
+
+
+if __name__ == '__main__':
+    rospy.init_node('markers')
+    server = InteractiveMarkerServer('marker_server')
+    cmd_pub = rospy.Publisher('cmd_vel', Twist, queue_size=1)
+    menu = MenuHandler()
+    menu.insert('stop', callback=on_menu)
+    server.insert(InteractiveMarker(), on_feedback)
+    menu.apply(server, 'marker')
+    server.applyChanges()
+    rospy.spin()
+"""
+
+# ROS 2: InteractiveMarkerServer(node, topic_ns), callbacks by keyword; the
+# node publishes from a timer only: the feedback input does not drive it
+MARKERS_ROS2 = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from interactive_markers import InteractiveMarkerServer
+from visualization_msgs.msg import InteractiveMarker
+
+SERVER = 'goal_marker'
+
+
+class GoalMarker(Node):
+    def __init__(self):
+        super().__init__('goal_marker_node')
+        self.goal = None
+        self.pub = self.create_publisher(Twist, 'cmd_vel', 10)
+        self.server = InteractiveMarkerServer(self, SERVER)
+        self.server.insert(InteractiveMarker(),
+                           feedback_callback=self.on_feedback)
+        self.server.setCallback('other', feedback_callback=self.on_other)
+        self.create_timer(0.1, self.tick)
+
+    def on_feedback(self, feedback):
+        self.goal = feedback.pose
+
+    def on_other(self, feedback):
+        self.goal = None
+
+    def tick(self):
+        self.pub.publish(Twist())
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(GoalMarker())
+
+
+if __name__ == '__main__':
+    main()
+"""
+
 
 @pytest.fixture(scope='module')
 def package(tmp_path_factory):
@@ -174,6 +247,8 @@ def package(tmp_path_factory):
         'src/idioms_lib/Relay.py': LIB_RELAY,
         'scripts/star_package': STAR_PACKAGE,
         'scripts/star_rospy': STAR_ROSPY,
+        'scripts/markers_ros1': MARKERS_ROS1,
+        'scripts/markers_ros2': MARKERS_ROS2,
     }
     for relative, text in files.items():
         path = root / relative
@@ -266,3 +341,44 @@ def test_an_api_through_a_star_import(summary):
     assert [(s.topic, s.api) for s in node.subscribers] == [
         ('ticks', 'rospy.Subscriber')]
     assert node.name == 'star_rospy'
+
+
+def _subscribers(summary, executable):
+    return sorted((s.topic, s.msg_type, s.api, s.callback, s.location)
+                  for s in _node(summary, executable).subscribers)
+
+
+def _roots(summary, executable, kind):
+    return sorted(r.function for r in _node(summary, executable).roots
+                  if r.kind == kind)
+
+
+def test_ros1_interactive_marker_feedback_is_an_input(summary):
+    assert _subscribers(summary, 'markers_ros1') == [
+        ('marker_server/feedback',
+         'visualization_msgs::InteractiveMarkerFeedback',
+         'interactive_markers.InteractiveMarkerServer', 'on_feedback',
+         'scripts/markers_ros1:19')]
+    assert _roots(summary, 'markers_ros1', 'subscriber') == [
+        'on_feedback', 'on_menu']
+    assert _publishers(summary, 'markers_ros1') == [
+        ('cmd_vel', 'geometry_msgs::Twist', 'rospy.Publisher', 'dependent',
+         'none', 'scripts/markers_ros1:20', ['scripts/markers_ros1:14'])]
+
+
+def test_ros2_interactive_marker_server(summary):
+    assert _subscribers(summary, 'markers_ros2') == [
+        ('goal_marker/feedback',
+         'visualization_msgs::InteractiveMarkerFeedback',
+         'interactive_markers.InteractiveMarkerServer',
+         'GoalMarker.on_feedback', 'scripts/markers_ros2:16')]
+    assert _roots(summary, 'markers_ros2', 'subscriber') == [
+        'GoalMarker.on_feedback', 'GoalMarker.on_other']
+    assert _publishers(summary, 'markers_ros2') == [
+        ('cmd_vel', 'geometry_msgs::Twist',
+         'rclpy.node.Node.create_publisher', 'independent', 'timer',
+         'scripts/markers_ros2:15', ['scripts/markers_ros2:29'])]
+    graph = graph_to_json(load_system([summary]))
+    node = next(n for n in graph['nodes'] if n['name'] == '/goal_marker_node')
+    assert [t['resolved'] for t in node['subscribers']] == [
+        '/goal_marker/feedback']

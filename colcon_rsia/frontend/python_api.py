@@ -52,7 +52,10 @@ subscribers                               ``rospy.Subscriber``,
                                           (one-shot subscriptions: inputs),
                                           ``tf2_ros.TransformListener``,
                                           ``tf.TransformListener`` (/tf and
-                                          /tf_static)
+                                          /tf_static),
+                                          ``interactive_markers.``
+                                          ``InteractiveMarkerServer``
+                                          (<topic_ns>/feedback)
 timers                                    ``rospy.Timer`` (a ``rospy.Duration``),
                                           ``rclpy.node.Node.create_timer``
                                           (seconds)
@@ -70,6 +73,9 @@ actions                                   ``rclpy.action.ActionServer`` /
 message_filters synchronisers             ``message_filters.TimeSynchronizer``,
                                           ``ApproximateTimeSynchronizer``,
                                           ``Cache``; ``registerCallback``
+callbacks of a subscription               ``InteractiveMarkerServer.insert`` /
+                                          ``setCallback``,
+                                          ``MenuHandler.insert``
 sleeps that do not adapt (recognised so   ``rospy.sleep``, ``time.sleep``
 that they are never taken for a Rate)
 parameter reads (a topic name may come    ``rospy.get_param``,
@@ -111,6 +117,7 @@ HZ = 'hz'               # a frequency
 
 NODE_CLASS = 'rclpy.node.Node'
 DIAGNOSTICS_MSG = 'diagnostic_msgs::DiagnosticArray'
+MARKER_FEEDBACK_MSG = 'visualization_msgs::InteractiveMarkerFeedback'
 
 
 @dataclass(frozen=True)
@@ -139,10 +146,19 @@ class PyApi:
     # the canonical type of the object the call returns, when not the
     # called class itself
     returns: Optional[str] = None
-    # message_filters.Subscriber: (name, msg_type) of the ROS 1 form
-    # Subscriber(topic, Type), used when the first argument is a string or
-    # only two positional arguments are given
+    # APIs of both ROS 1 and ROS 2 whose arguments differ: (name,
+    # msg_type) of the ROS 1 form, used when a keyword only the ROS 1 form
+    # has is given (ros1_keywords), or none of the ROS 2 form's
+    # (ros2_keywords) and the first argument is a string or fewer than
+    # ros2_arity positional arguments are given (message_filters'
+    # Subscriber(topic, Type) and Subscriber(node, Type, topic))
     ros1_form: Optional[tuple] = None
+    ros1_keywords: tuple = ()
+    ros2_keywords: tuple = ()
+    ros2_arity: int = 0
+    # SUBSCRIBER/PUBLISHER: what the API joins to the name it is given
+    # (an interactive marker server subscribes <topic_ns>/feedback)
+    topic_suffix: str = ''
     # PARAM_READ: (position, keyword) of the default value
     default: Optional[tuple] = None
     # PARAM_READ: ROS 2 parameters always belong to the node itself
@@ -252,7 +268,9 @@ CALLS = {
     # --- message_filters (ROS 1 and ROS 2) ---
     'message_filters.Subscriber': PyApi(
         SUBSCRIBER, name=(2, 'topic'), msg_type_arg=(1, 'msg_type'),
-        ros1_form=((0, 'name'), (1, 'data_class'))),
+        ros1_form=((0, 'name'), (1, 'data_class')),
+        ros1_keywords=('name', 'data_class'),
+        ros2_keywords=('topic', 'msg_type'), ros2_arity=3),
     'message_filters.TimeSynchronizer': PyApi(SYNC, inputs=(0, 'fs')),
     'message_filters.ApproximateTimeSynchronizer': PyApi(
         SYNC, inputs=(0, 'fs')),
@@ -280,6 +298,24 @@ CALLS = {
     'tf.TransformBroadcaster.sendTransformMessage': PyApi(PUBLISH),
     'tf.TransformListener': PyApi(
         SUBSCRIBER, msg_type=TF_MSG, implicit_topics=('/tf', '/tf_static')),
+    # --- interactive_markers: the server subscribes <topic_ns>/feedback
+    # (ROS 1 (topic_ns, server_id), ROS 2 (node, topic_ns)) and calls the
+    # feedback callbacks given to insert/setCallback (ROS 1 feedback_cb,
+    # ROS 2 feedback_callback) and to a MenuHandler's entries from it; its
+    # own update publishers are the library's, as actionlib's are ---
+    'interactive_markers.InteractiveMarkerServer': PyApi(
+        SUBSCRIBER, name=(1, 'topic_ns'), msg_type=MARKER_FEEDBACK_MSG,
+        topic_suffix='/feedback', ros1_form=((0, 'topic_ns'), None),
+        ros1_keywords=('server_id',), ros2_keywords=('node',),
+        ros2_arity=2),
+    'interactive_markers.InteractiveMarkerServer.insert': PyApi(
+        REGISTER_CALLBACK, callback=(1, 'feedback_cb'),
+        extra_callbacks=((None, 'feedback_callback'),)),
+    'interactive_markers.InteractiveMarkerServer.setCallback': PyApi(
+        REGISTER_CALLBACK, callback=(1, 'feedback_cb'),
+        extra_callbacks=((None, 'feedback_callback'),)),
+    'interactive_markers.MenuHandler.insert': PyApi(
+        REGISTER_CALLBACK, callback=(4, 'callback')),
     # --- diagnostic_updater: the updater publishes /diagnostics ---
     # ROS 1 Updater() publishes when update()/force_update() is called;
     # ROS 2 Updater(node, period=1.0) also from a timer of its own
@@ -353,6 +389,10 @@ ALIASES = {
     'tf2_ros.transform_listener.TransformListener':
         'tf2_ros.TransformListener',
     'tf.broadcaster.TransformBroadcaster': 'tf.TransformBroadcaster',
+    'interactive_markers.interactive_marker_server.InteractiveMarkerServer':
+        'interactive_markers.InteractiveMarkerServer',
+    'interactive_markers.menu_handler.MenuHandler':
+        'interactive_markers.MenuHandler',
     'diagnostic_updater._diagnostic_updater.Updater':
         'diagnostic_updater.Updater',
     'diagnostic_updater._publisher.DiagnosedPublisher':

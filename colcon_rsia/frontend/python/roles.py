@@ -53,7 +53,18 @@ class Roles:
         topic, literal = self._topic(argument, context)
         if topic is None:
             return None
+        if api.topic_suffix:
+            topic = topic + api.topic_suffix if literal \
+                else f'{topic} + {api.topic_suffix!r}'
         return [(topic, literal)], argument
+
+    def _topic_source_of(self, api, argument, context):
+        """_topic_source of a name argument, with what the API joins."""
+        source, affixes = self._topic_source(argument, context)
+        if source is not None and api.topic_suffix:
+            prefix, suffix = affixes or ('', '')
+            affixes = [prefix, suffix + api.topic_suffix]
+        return source, affixes
 
     def _on_publisher(self, api, name, node, context):
         if self._wrapped_publisher(api, node, context):
@@ -71,7 +82,7 @@ class Roles:
             self._own_timer(api, name, node, context, handle)
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
-                self._topic_source(argument, context)
+                self._topic_source_of(api, argument, context)
             self.facts.publishers.append(model.PublisherFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
@@ -128,7 +139,7 @@ class Roles:
 
     def _on_subscriber(self, api, name, node, context):
         name_arg, type_arg = api.name, api.msg_type_arg
-        if api.ros1_form is not None and self._ros1_form(node):
+        if api.ros1_form is not None and self._ros1_form(api, node, context):
             name_arg, type_arg = api.ros1_form
         msg_type = api.msg_type or self._msg_type(
             call_argument(node, type_arg), context)
@@ -146,7 +157,7 @@ class Roles:
         handle, _ = self._target(node, context)
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
-                self._topic_source(argument, context)
+                self._topic_source_of(api, argument, context)
             self.facts.subscribers.append(model.SubscriberFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
@@ -268,11 +279,15 @@ class Roles:
             handle=handle, inputs=inputs, location=self.location(node)))
 
     def _on_register_callback(self, api, name, node, context):
-        callback, _, _ = self._callback(
-            call_argument(node, api.callback), context)
-        self.facts.registrations.append(model.Registration(
-            function=context.function, handle=self._receiver(node, context),
-            callback=callback, location=self.location(node)))
+        specs = (api.callback,) + api.extra_callbacks
+        for argument in (call_argument(node, spec) for spec in specs):
+            if argument is None:
+                continue
+            callback, _, _ = self._callback(argument, context)
+            self.facts.registrations.append(model.Registration(
+                function=context.function,
+                handle=self._receiver(node, context), callback=callback,
+                location=self.location(node)))
 
 
 def _continue_before(loop, sleep):

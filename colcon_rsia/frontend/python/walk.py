@@ -534,12 +534,17 @@ class _Extractor(Roles, Params):
         number = self.project.number(expr, context.scope)
         return number if number and number > 0 else None
 
-    def _ros1_form(self, node):
-        """message_filters.Subscriber(topic, Type) rather than (node, …)."""
+    def _ros1_form(self, api, node, context):
+        """Whether a call has the ROS 1 form of an API of both.
+
+        message_filters.Subscriber(topic, Type) rather than (node, Type,
+        topic); InteractiveMarkerServer(topic_ns) rather than (node,
+        topic_ns).
+        """
         keywords = {k.arg for k in node.keywords}
-        if keywords & {'topic', 'msg_type'}:
+        if keywords & set(api.ros2_keywords):
             return False
-        if keywords & {'name', 'data_class'}:
+        if keywords & set(api.ros1_keywords):
             return True
         positional = []
         for argument in node.args:
@@ -548,10 +553,10 @@ class _Extractor(Roles, Params):
             positional.append(argument)
         if positional and (
                 isinstance(positional[0], ast.JoinedStr) or
-                (isinstance(positional[0], ast.Constant) and
-                 isinstance(positional[0].value, str))):
+                self.project.string(positional[0], context.scope)
+                is not None):
             return True
-        return len(positional) == 2
+        return len(positional) < api.ros2_arity
 
     def _elements(self, expr, context):
         """The expressions of a list/tuple argument (or the one given)."""
