@@ -230,6 +230,100 @@ if __name__ == '__main__':
     main()
 """
 
+# helpers of the package that make endpoints from their parameters: each
+# call is an endpoint named by its arguments (or the defaults)
+LIB_ENDPOINTS = """import rospy
+from std_msgs.msg import String
+
+
+class StateWatch(object):
+    def __init__(self, name, topic, suffix='state'):
+        self.name = name
+        self.topic = f'{topic}/{suffix}'
+        self.latest = None
+
+    def start(self):
+        self.sub = rospy.Subscriber(self.topic, String, self.on_state)
+
+    def on_state(self, msg):
+        self.latest = msg
+
+
+def make_status_publisher(ns, queue=1):
+    return rospy.Publisher(ns + '/status', String, queue_size=queue)
+"""
+
+WATCH_A = """#!/usr/bin/env python3
+import rospy
+from idioms_lib.endpoints import StateWatch, make_status_publisher
+
+ARM = '/arm'
+
+if __name__ == '__main__':
+    rospy.init_node('watch_a')
+    arm = StateWatch('arm', ARM)
+    arm.start()
+    base = StateWatch('base', '/base', suffix='mode')
+    base.start()
+    status = make_status_publisher('watch_a')
+    rospy.spin()
+"""
+
+WATCH_B = """#!/usr/bin/env python3
+import rospy
+from idioms_lib.endpoints import StateWatch
+
+if __name__ == '__main__':
+    rospy.init_node('watch_b')
+    lift = StateWatch('lift', topic='/lift')
+    lift.start()
+    rospy.spin()
+"""
+
+# the argument is not known: the helper's endpoint stays, unnamed
+WATCH_C = """#!/usr/bin/env python3
+import sys
+import rospy
+from idioms_lib.endpoints import StateWatch
+
+if __name__ == '__main__':
+    rospy.init_node('watch_c')
+    other = StateWatch('other', sys.argv[1])
+    other.start()
+    rospy.spin()
+"""
+
+# ROS 2: a helper class given the node, each object kept in a list; the
+# message type is a parameter too
+MONITORS = """#!/usr/bin/env python3
+import rclpy
+import rclpy.node
+from std_msgs.msg import String
+from std_msgs.msg import Bool
+
+
+class TopicMonitor:
+    def __init__(self, node, topic_name, topic_type):
+        self.sub = node.create_subscription(
+            topic_type, topic_name, self.callback, 1)
+
+    def callback(self, msg):
+        pass
+
+
+class Monitors(rclpy.node.Node):
+    def __init__(self):
+        super().__init__('monitors')
+        self.monitors = []
+        self.monitors.append(TopicMonitor(self, '/api/state', String))
+        self.monitors.append(TopicMonitor(self, '/api/ready', Bool))
+
+
+if __name__ == '__main__':
+    rclpy.init()
+    rclpy.spin(Monitors())
+"""
+
 
 @pytest.fixture(scope='module')
 def package(tmp_path_factory):
@@ -249,6 +343,11 @@ def package(tmp_path_factory):
         'scripts/star_rospy': STAR_ROSPY,
         'scripts/markers_ros1': MARKERS_ROS1,
         'scripts/markers_ros2': MARKERS_ROS2,
+        'src/idioms_lib/endpoints.py': LIB_ENDPOINTS,
+        'scripts/watch_a': WATCH_A,
+        'scripts/watch_b': WATCH_B,
+        'scripts/watch_c': WATCH_C,
+        'scripts/monitors': MONITORS,
     }
     for relative, text in files.items():
         path = root / relative
@@ -382,3 +481,36 @@ def test_ros2_interactive_marker_server(summary):
     node = next(n for n in graph['nodes'] if n['name'] == '/goal_marker_node')
     assert [t['resolved'] for t in node['subscribers']] == [
         '/goal_marker/feedback']
+
+
+def test_helpers_make_one_endpoint_per_call_named_by_its_arguments(summary):
+    # a module constant, a keyword argument and a default name the topics
+    assert _subscribers(summary, 'watch_a') == [
+        ('/arm/state', 'std_msgs::String', 'rospy.Subscriber',
+         'StateWatch.on_state', 'src/idioms_lib/endpoints.py:12'),
+        ('/base/mode', 'std_msgs::String', 'rospy.Subscriber',
+         'StateWatch.on_state', 'src/idioms_lib/endpoints.py:12')]
+    assert [(p.topic, p.topic_is_literal, p.location)
+            for p in _node(summary, 'watch_a').publishers] == [
+        ('watch_a/status', True, 'src/idioms_lib/endpoints.py:19')]
+    # another node's calls are its own
+    assert _subscribers(summary, 'watch_b') == [
+        ('/lift/state', 'std_msgs::String', 'rospy.Subscriber',
+         'StateWatch.on_state', 'src/idioms_lib/endpoints.py:12')]
+    graph = graph_to_json(load_system([summary]))
+    node = next(n for n in graph['nodes'] if n['name'] == '/watch_a')
+    assert [t['resolved'] for t in node['publishers']] == ['/watch_a/status']
+    # a call whose argument is not known: the helper's endpoint stays,
+    # unnamed
+    assert [(s.topic, s.topic_is_literal)
+            for s in _node(summary, 'watch_c').subscribers] == [
+        ('self.topic', False)]
+
+
+def test_helper_objects_given_the_node(summary):
+    assert _subscribers(summary, 'monitors') == [
+        ('/api/ready', 'std_msgs::Bool', 'rclpy.node.Node.create_subscription',
+         'TopicMonitor.callback', 'scripts/monitors:10'),
+        ('/api/state', 'std_msgs::String',
+         'rclpy.node.Node.create_subscription', 'TopicMonitor.callback',
+         'scripts/monitors:10')]

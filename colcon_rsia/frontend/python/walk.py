@@ -12,6 +12,7 @@ from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.python.helpers import Helpers
 from colcon_rsia.frontend.python.params import Params
 from colcon_rsia.frontend.python.roles import Roles
 from colcon_rsia.frontend.python.scopes import lookup
@@ -80,7 +81,7 @@ def extract_python_facts(path, *, package_path, module_name,
     return facts
 
 
-class _Extractor(Roles, Params):
+class _Extractor(Roles, Params, Helpers):
     """Collects the facts of one module; see :func:`extract_python_facts`."""
 
     def __init__(self, project, module, facts):
@@ -93,6 +94,8 @@ class _Extractor(Roles, Params):
         self._registered = set()
         self._lambdas_in_variables = set()
         self._stubs = set()
+        # function id -> the endpoint calls a helper may make (helpers.py)
+        self._endpoint_site_cache = {}
 
     def run(self):
         for scope in self.module.functions:
@@ -317,6 +320,7 @@ class _Extractor(Roles, Params):
                 else 0
             self._add_call(context, called.ref.id, node)
             self._bind(called.ref, node.args, node.keywords, context, offset)
+            self._helper_endpoints(called.ref, node, context, offset)
             return
         if kind == STUB:
             self._add_call(context, self._stub(called), node)
@@ -326,7 +330,20 @@ class _Extractor(Roles, Params):
             if init is not None and init.kind in (FUNC, BOUND):
                 self._add_call(context, init.ref.id, node)
                 self._bind(init.ref, node.args, node.keywords, context, 0)
+                self._helper_endpoints(init.ref, node, context, 0)
             return
+        name, api = self._api_of(node, called)
+        if api is not None:
+            handler = _ROLES.get(api.role)
+            if handler is not None:
+                handler(self, api, name, node, context)
+
+    def _api_of(self, node, called):
+        """(name, PyApi) of an API call whose callee evaluates to `called`.
+
+        (None, None) when the call is of no recognised API.
+        """
+        kind = called.kind if called is not None else None
         name, api = None, None
         if kind in (EXT, EXTBOUND):
             name = called.ref
@@ -337,10 +354,7 @@ class _Extractor(Roles, Params):
             if name is not None:
                 api = python_api.lookup(name) or \
                     python_api.DUCK_CALLS.get(name)
-        if api is not None:
-            handler = _ROLES.get(api.role)
-            if handler is not None:
-                handler(self, api, name, node, context)
+        return (name, api) if api is not None else (None, None)
 
     def _bind(self, function, args, keywords, context, offset):
         """Record handles passed to a package function's parameters."""
