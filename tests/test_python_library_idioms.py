@@ -324,6 +324,19 @@ if __name__ == '__main__':
     rclpy.spin(Monitors())
 """
 
+# a lambda is a helper too: called with a topic, it names its publisher
+LAMBDA_HELPER = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+make = lambda topic: rospy.Publisher(topic, String, queue_size=1)
+
+if __name__ == '__main__':
+    rospy.init_node('lambda_helper')
+    out = make('made_by_lambda')
+    rospy.spin()
+"""
+
 
 @pytest.fixture(scope='module')
 def package(tmp_path_factory):
@@ -348,6 +361,7 @@ def package(tmp_path_factory):
         'scripts/watch_b': WATCH_B,
         'scripts/watch_c': WATCH_C,
         'scripts/monitors': MONITORS,
+        'scripts/lambda_helper': LAMBDA_HELPER,
     }
     for relative, text in files.items():
         path = root / relative
@@ -514,3 +528,11 @@ def test_helper_objects_given_the_node(summary):
         ('/api/state', 'std_msgs::String',
          'rclpy.node.Node.create_subscription', 'TopicMonitor.callback',
          'scripts/monitors:10')]
+
+
+def test_a_lambda_helper(summary):
+    # a lambda's body is an expression, not statements
+    assert summary.diagnostics == []
+    assert [(p.topic, p.topic_is_literal, p.location)
+            for p in _node(summary, 'lambda_helper').publishers] == [
+        ('made_by_lambda', True, 'scripts/lambda_helper:5')]

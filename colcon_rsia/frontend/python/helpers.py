@@ -100,7 +100,9 @@ class Helpers:
                            if m is not function]
         sites = []
         for scope in scopes:
-            for node in region(scope.node.body):
+            body = [scope.node.body] if scope.kind == 'lambda' \
+                else scope.node.body
+            for node in region(body):
                 if not isinstance(node, ast.Call):
                     continue
                 _, api = self._api_of(
