@@ -337,6 +337,38 @@ if __name__ == '__main__':
     rospy.spin()
 """
 
+# a module of a package imports a name from the package, whose
+# __init__.py star-imports that module's names: the name is the class
+CYCLE_INIT = """from .core import *
+from .tools import *
+"""
+
+CYCLE_CORE = """import rospy
+from std_msgs.msg import String
+
+
+class Core(object):
+    def __init__(self):
+        self.pub = rospy.Publisher('core_out', String, queue_size=1)
+"""
+
+CYCLE_TOOLS = """from cycle_lib import Core
+
+
+def make_core():
+    return Core()
+"""
+
+CYCLE = """#!/usr/bin/env python3
+import rospy
+from cycle_lib import Core
+
+if __name__ == '__main__':
+    rospy.init_node('cycle')
+    core = Core()
+    rospy.spin()
+"""
+
 
 @pytest.fixture(scope='module')
 def package(tmp_path_factory):
@@ -362,6 +394,10 @@ def package(tmp_path_factory):
         'scripts/watch_c': WATCH_C,
         'scripts/monitors': MONITORS,
         'scripts/lambda_helper': LAMBDA_HELPER,
+        'src/cycle_lib/__init__.py': CYCLE_INIT,
+        'src/cycle_lib/core.py': CYCLE_CORE,
+        'src/cycle_lib/tools.py': CYCLE_TOOLS,
+        'scripts/cycle': CYCLE,
     }
     for relative, text in files.items():
         path = root / relative
@@ -536,3 +572,10 @@ def test_a_lambda_helper(summary):
     assert [(p.topic, p.topic_is_literal, p.location)
             for p in _node(summary, 'lambda_helper').publishers] == [
         ('made_by_lambda', True, 'scripts/lambda_helper:5')]
+
+
+def test_a_name_star_imports_lead_back_to(summary):
+    assert not [d for d in summary.diagnostics if 'cycle' in d]
+    assert [(p.topic, p.location)
+            for p in _node(summary, 'cycle').publishers] == [
+        ('core_out', 'src/cycle_lib/core.py:7')]

@@ -15,9 +15,9 @@ from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend.python.scopes import load_module
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import SourceError
+from colcon_rsia.frontend.python.stars import MAX_DEPTH
+from colcon_rsia.frontend.python.stars import StarImports
 
-# how deep the evaluation of one expression may go (names bound to names…)
-MAX_DEPTH = 32
 # a name longer than this is no topic name: not computed
 MAX_STRING = 1000
 
@@ -47,7 +47,7 @@ class _Value:
         self.ref = ref
 
 
-class Project:
+class Project(StarImports):
     """The package's modules and the evaluation of expressions in them."""
 
     def __init__(self, package_path, package_modules):  # noqa: D107
@@ -58,6 +58,7 @@ class Project:
         self._active = set()
         self._numbers_active = set()
         self._strings_active = set()
+        self._stars_active = set()
         self._mro = {}
         # (expression, scope) -> text or None: the values that stand in
         # for some expressions while strings are computed (substituting)
@@ -134,15 +135,17 @@ class Project:
             return self.value(expr.value, scope, depth)
         return None
 
+    def external(self, dotted):
+        """The value of something outside the package."""
+        return _Value(EXT, dotted)
+
     def name_value(self, scope, name, depth):
         """The value of a name read in a scope (where it is bound)."""
+        if depth > MAX_DEPTH:
+            return None  # modules importing names from each other
         owner = lookup(scope, name)
         if owner is None:
-            owner, dotted = self.star_source(scope.module, name, depth)
-            if dotted is not None:
-                return _Value(EXT, dotted)
-            if owner is None:
-                return None
+            return self._star_value(scope.module, name, depth)
         for kind, payload, where in owner.bindings.get(name, ()):
             if kind == 'import':
                 result = self.resolve_dotted(payload, depth)
@@ -200,26 +203,24 @@ class Project:
         parent = self.module('.'.join(parts[:-1]))
         if parent is None or depth > MAX_DEPTH:
             return None
-        owner, dotted = self.module_owner(parent, parts[-1], depth)
-        if dotted is not None:
-            return _Value(EXT, dotted)
-        if owner is None or any(
-                kind == 'import' and payload == '.'.join(parts)
-                for kind, payload, _ in owner.bindings.get(parts[-1], ())):
+        bindings = parent.scope.bindings.get(parts[-1])
+        if not bindings:
+            return self._star_value(parent, parts[-1], depth)
+        if any(kind == 'import' and payload == '.'.join(parts)
+               for kind, payload, _ in bindings):
             return None  # the submodule itself
-        return self.name_value(owner, parts[-1], depth + 1)
+        return self.name_value(parent.scope, parts[-1], depth + 1)
 
     def attr(self, base, name, depth):
         """The value of ``base.name``."""
         kind = base.kind
         if kind == MODULE:
             module = self.module(base.ref)
-            owner, dotted = self.module_owner(module, name, depth) \
-                if module is not None else (None, None)
-            if dotted is not None:
-                return _Value(EXT, dotted)
-            if owner is not None:
-                return self.name_value(owner, name, depth)
+            if module is not None and name in module.scope.bindings:
+                return self.name_value(module.scope, name, depth + 1)
+            if module is not None and self.star_source(module, name, depth) \
+                    != (None, None):
+                return self._star_value(module, name, depth)
             sub = f'{base.ref}.{name}'
             if sub in self.package_modules:
                 return _Value(MODULE, sub)
@@ -374,55 +375,6 @@ class Project:
         if current is None:
             return None
         return _Value(SUPER, current.cls)
-
-    # star imports ----------------------------------------------------------
-
-    def owner(self, scope, name, depth=0):
-        """The scope that binds a name read in `scope`, or None.
-
-        Where the scope's own code binds it (:func:`lookup`), else the
-        package module a ``from X import *`` of its module takes it from.
-        """
-        owner = lookup(scope, name)
-        if owner is None:
-            owner, _ = self.star_source(scope.module, name, depth)
-        return owner
-
-    def module_owner(self, module, name, depth=0):
-        """(scope, None) of the module that binds ``module.name``.
-
-        The module itself, else what its star imports give (see
-        :meth:`star_source`); (None, None) when neither binds it.
-        """
-        if name in module.scope.bindings:
-            return module.scope, None
-        return self.star_source(module, name, depth)
-
-    def star_source(self, module, name, depth=0):
-        """Where ``from X import *`` of a module takes a name from.
-
-        (module scope, None): a package module that binds it (its
-        ``__all__``, else its public names); (None, dotted name): an API
-        of :mod:`python_api` an outside module X has; (None, None): none.
-        The last star import that has the name wins, as when run.
-        """
-        if depth > MAX_DEPTH:
-            return None, None
-        for base in reversed(module.star_imports):
-            if base not in self.package_modules:
-                dotted = python_api.canonical(f'{base}.{name}')
-                if python_api.lookup(dotted) is not None or \
-                        dotted in python_api.DURATIONS:
-                    return None, dotted
-                continue
-            other = self.module(base)
-            if other is None or other is module or \
-                    not _exports(other, name):
-                continue
-            found = self.module_owner(other, name, depth + 1)
-            if found != (None, None):
-                return found
-        return None, None
 
     # numbers (rates) -------------------------------------------------------
 
@@ -724,23 +676,6 @@ def _arithmetic(op, left, right):
     except python_arithmetic.Refused:
         return None
     return value if isinstance(value, (int, float)) else None
-
-
-def _exports(module, name):
-    """Whether ``from module import *`` binds `name`.
-
-    The names of its ``__all__`` when that is a list of strings, else its
-    names that do not start with ``_``.
-    """
-    listed = set()
-    for kind, payload, _ in module.scope.bindings.get('__all__', ()):
-        if kind != 'assign' or not isinstance(payload, (ast.List, ast.Tuple)):
-            return not name.startswith('_')
-        listed.update(e.value for e in payload.elts
-                      if isinstance(e, ast.Constant))
-    if module.scope.bindings.get('__all__'):
-        return name in listed
-    return not name.startswith('_')
 
 
 def call_argument(call, spec):
