@@ -160,6 +160,43 @@ if __name__ == '__main__':
     main()
 """
 
+# ROS 2: several parameters declared at once, with and without namespace
+DECLARED_MANY = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Many(Node):
+    def __init__(self):
+        super().__init__('many')
+        self.declare_parameters(
+            namespace='',
+            parameters=[('input', 'points'), ('output', 'filtered_points'),
+                        ('rate', 10.0)])
+        self.declare_parameters('topics', [('debug', 'debug_out')])
+        self.create_subscription(
+            String, self.get_parameter('input').value, self.on_input, 10)
+        self.create_publisher(
+            String,
+            self.get_parameter('output').get_parameter_value().string_value,
+            10)
+        self.create_publisher(
+            String, self.get_parameter('topics.debug').value, 10)
+
+    def on_input(self, msg):
+        pass
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Many())
+
+
+if __name__ == '__main__':
+    main()
+"""
+
 LAUNCH = """<launch>
   <node pkg="names" type="relay" name="relay">
     <param name="input" value="remapped_input"/>
@@ -186,6 +223,7 @@ def package(tmp_path_factory):
         'scripts/filter': FILTER,
         'scripts/around': AROUND,
         'scripts/declared': DECLARED,
+        'scripts/declared_many': DECLARED_MANY,
         'launch/relay.launch': LAUNCH,
     }
     for relative, text in files.items():
@@ -332,3 +370,17 @@ def test_a_parameter_without_default_is_unknown_with_a_note(summary):
         '"self.get_parameter(\'undeclared\').value" is the value of the '
         "parameter '~undeclared', which has no default: not known unless "
         'a launch file sets it']
+
+
+def test_parameters_declared_together(summary):
+    assert _topics(summary, 'declared_many') == {
+        ("self.get_parameter('output').get_parameter_value().string_value",
+         False, ('output', 'filtered_points', '~')),
+        ("self.get_parameter('topics.debug').value", False,
+         ('topics.debug', 'debug_out', '~'))}
+    assert _topics(summary, 'declared_many', 'subscribers') == {
+        ("self.get_parameter('input').value", False,
+         ('input', 'points', '~'))}
+    system = load_system([summary])
+    assert _resolved(system, '/many') == [
+        '/debug_out', '/filtered_points', '/points']

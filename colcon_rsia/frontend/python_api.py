@@ -80,6 +80,7 @@ sleeps that do not adapt (recognised so   ``rospy.sleep``, ``time.sleep``
 that they are never taken for a Rate)
 parameter reads (a topic name may come    ``rospy.get_param``,
 from one)                                 ``rclpy.node.Node.declare_parameter``,
+                                          ``declare_parameters``,
                                           ``rclpy.node.Node.get_parameter``
 ========================================  ===================================
 
@@ -163,6 +164,11 @@ class PyApi:
     default: Optional[tuple] = None
     # PARAM_READ: ROS 2 parameters always belong to the node itself
     node_private: bool = False
+    # PARAM_READ of several parameters: (position, keyword) of the list of
+    # (name, default[, descriptor]) tuples, and of the namespace their
+    # names are joined to with '.'
+    param_list: Optional[tuple] = None
+    param_namespace: Optional[tuple] = None
     # PUBLISHER: (position, keyword) of an argument that, when given and
     # not a string, makes the object publish from a timer of its own
     # (ROS 2 diagnostic_updater.Updater(node, period)); `period` gives the
@@ -238,6 +244,9 @@ CALLS = {
     NODE + 'declare_parameter': PyApi(
         PARAM_READ, name=(0, 'name'), default=(1, 'value'),
         node_private=True),
+    NODE + 'declare_parameters': PyApi(
+        PARAM_READ, param_namespace=(0, 'namespace'),
+        param_list=(1, 'parameters'), node_private=True),
     NODE + 'get_parameter': PyApi(
         PARAM_READ, name=(0, 'name'), node_private=True),
     NODE + 'create_rate': PyApi(
@@ -416,7 +425,7 @@ NODE_NAMING = frozenset({'rospy.init_node', 'rclpy.create_node', NODE_CLASS})
 
 NODE_METHODS = frozenset({
     'get_logger', 'get_clock', 'get_name', 'get_namespace',
-    'get_fully_qualified_name', 'declare_parameter', 'declare_parameters',
+    'get_fully_qualified_name', 'declare_parameter',
     'get_parameter', 'get_parameters', 'get_parameter_or',
     'get_parameters_by_prefix', 'has_parameter', 'set_parameters',
     'set_parameters_atomically', 'undeclare_parameter',

@@ -101,6 +101,9 @@ class Params:
             f'{call.col_offset}'
 
     def _on_param_read(self, api, name, node, context):
+        if api.param_list is not None:
+            self._param_list(api, node, context)
+            return
         param = self.project.string(
             call_argument(node, api.name), context.scope)
         if param is None:
@@ -115,3 +118,30 @@ class Params:
             function=context.function, name=param, default=default,
             handle=self._param_handle(node, context.scope), nh=namespace,
             location=self.location(node)))
+
+    def _param_list(self, api, node, context):
+        """``declare_parameters('ns', [('topic', 'scan'), ...])``.
+
+        Each parameter whose name is known, with its default when it is a
+        known string; a later ``get_parameter('ns.topic')`` takes it.
+        """
+        prefix = self.project.string(
+            call_argument(node, api.param_namespace), context.scope)
+        if prefix is None and call_argument(node, api.param_namespace):
+            return  # a namespace not known: no name is known
+        for entry in self._elements(
+                call_argument(node, api.param_list), context):
+            if not isinstance(entry, (ast.Tuple, ast.List)) or \
+                    not entry.elts:
+                continue
+            param = self.project.string(entry.elts[0], context.scope)
+            if param is None:
+                continue
+            default = self.project.string(entry.elts[1], context.scope) \
+                if len(entry.elts) > 1 else None
+            self.facts.param_reads.append(model.ParamRead(
+                function=context.function,
+                name=f'{prefix}.{param}' if prefix else param,
+                default=default,
+                handle=self._param_handle(entry, context.scope), nh='~',
+                location=self.location(entry)))
