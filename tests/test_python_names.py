@@ -92,10 +92,118 @@ if __name__ == '__main__':
     main()
 """
 
+# ROS 1: names built around a parameter's value, a parameter name and a
+# default held in constants, a parameter without a default
+AROUND = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+NS_PARAM = '~robot_ns'
+NS_DEFAULT = 'base'
+
+
+def main():
+    rospy.init_node('around')
+    ns = rospy.get_param(NS_PARAM, NS_DEFAULT)
+    rospy.Publisher('%s/cmd_vel' % ns, String, queue_size=1)
+    rospy.Publisher('{}/odom'.format(ns), String, queue_size=1)
+    rospy.Publisher('/' + ns + '/status', String, queue_size=1)
+    rospy.Subscriber(f'{ns}/goal', String, lambda msg: None)
+    required = rospy.get_param('~required_topic')
+    rospy.Publisher(required, String, queue_size=1)
+    # two parameters in one name: which one is not one value
+    other = rospy.get_param('~other', 'x')
+    rospy.Publisher(ns + '/' + other, String, queue_size=1)
+    rospy.spin()
+
+
+if __name__ == '__main__':
+    main()
+"""
+
+# ROS 2: declared parameters, read where declared or later, with defaults
+# held in variables and constants
+DECLARED = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+PREFIX_PARAM = 'prefix'
+
+
+class Declared(Node):
+    DEFAULT_SCAN = 'scan_raw'
+
+    def __init__(self):
+        super().__init__('declared')
+        default_prefix = 'robot'
+        self.declare_parameter(PREFIX_PARAM, default_prefix)
+        prefix = self.get_parameter(PREFIX_PARAM).value
+        self.create_publisher(String, prefix + '/state', 10)
+        self.create_publisher(String, f'{prefix}/pose', 10)
+        scan = self.declare_parameter('scan', self.DEFAULT_SCAN) \\
+            .get_parameter_value().string_value
+        self.create_subscription(String, scan, self.on_scan, 10)
+        self.create_publisher(
+            String, self.get_parameter('undeclared').value, 10)
+
+    def on_scan(self, msg):
+        pass
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Declared())
+
+
+if __name__ == '__main__':
+    main()
+"""
+
+# ROS 2: several parameters declared at once, with and without namespace
+DECLARED_MANY = """#!/usr/bin/env python3
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Many(Node):
+    def __init__(self):
+        super().__init__('many')
+        self.declare_parameters(
+            namespace='',
+            parameters=[('input', 'points'), ('output', 'filtered_points'),
+                        ('rate', 10.0)])
+        self.declare_parameters('topics', [('debug', 'debug_out')])
+        self.create_subscription(
+            String, self.get_parameter('input').value, self.on_input, 10)
+        self.create_publisher(
+            String,
+            self.get_parameter('output').get_parameter_value().string_value,
+            10)
+        self.create_publisher(
+            String, self.get_parameter('topics.debug').value, 10)
+
+    def on_input(self, msg):
+        pass
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Many())
+
+
+if __name__ == '__main__':
+    main()
+"""
+
 LAUNCH = """<launch>
   <node pkg="names" type="relay" name="relay">
     <param name="input" value="remapped_input"/>
     <param name="output" value="not_private"/>
+  </node>
+  <node pkg="names" type="around" name="around">
+    <param name="robot_ns" value="arm"/>
   </node>
 </launch>
 """
@@ -113,6 +221,9 @@ def package(tmp_path_factory):
         'src/names_lib/constants.py': CONSTANTS,
         'scripts/relay': RELAY,
         'scripts/filter': FILTER,
+        'scripts/around': AROUND,
+        'scripts/declared': DECLARED,
+        'scripts/declared_many': DECLARED_MANY,
         'launch/relay.launch': LAUNCH,
     }
     for relative, text in files.items():
@@ -136,6 +247,13 @@ def _topics(summary, executable, role='publishers'):
     return {(t.topic, t.topic_is_literal,
              (t.topic_param.name, t.topic_param.default,
               t.topic_param.namespace) if t.topic_param else None)
+            for t in getattr(node, role)}
+
+
+def _affixes(summary, executable, role='publishers'):
+    node = next(n for n in summary.nodes if n.executable == executable)
+    return {t.topic: (t.topic_param.name, t.topic_param.prefix,
+                      t.topic_param.suffix) if t.topic_param else None
             for t in getattr(node, role)}
 
 
@@ -197,3 +315,72 @@ def test_private_parameters_of_the_launch_file_name_topics(summary, package):
     assert '/remapped_input' in resolved
     assert '/chatter' not in resolved
     assert '/echo' in resolved
+
+
+def test_names_built_around_a_parameter(summary):
+    # the parameter's name and default come from module constants; the
+    # text joined around its value is kept with it
+    assert _affixes(summary, 'around') == {
+        "'%s/cmd_vel' % ns": ('robot_ns', '', '/cmd_vel'),
+        "'{}/odom'.format(ns)": ('robot_ns', '', '/odom'),
+        "'/' + ns + '/status'": ('robot_ns', '/', '/status'),
+        'required': ('required_topic', '', ''),
+        # two parameters: no one value to substitute
+        "ns + '/' + other": None,
+    }
+    assert _affixes(summary, 'around', 'subscribers') == {
+        "f'{ns}/goal'": ('robot_ns', '', '/goal')}
+    system = load_system([summary])
+    assert _resolved(system, '/around') == [
+        '-', '-', '/base/cmd_vel', '/base/goal', '/base/odom',
+        '/base/status']
+
+
+def test_names_around_a_parameter_take_the_launch_files_value(
+        summary, package):
+    system = load_system(
+        [summary], launch=[str(package / 'launch' / 'relay.launch')],
+        package_paths={'names': str(package)})
+    assert _resolved(system, '/around') == [
+        '-', '-', '/arm/cmd_vel', '/arm/goal', '/arm/odom', '/arm/status']
+
+
+def test_declared_parameters_with_defaults_in_variables(summary):
+    # declare_parameter(CONSTANT, variable) then get_parameter(CONSTANT):
+    # the default of the declaration; a class constant as default
+    assert _affixes(summary, 'declared') == {
+        "prefix + '/state'": ('prefix', '', '/state'),
+        "f'{prefix}/pose'": ('prefix', '', '/pose'),
+        "self.get_parameter('undeclared').value": ('undeclared', '', ''),
+    }
+    assert _topics(summary, 'declared', 'subscribers') == {
+        ('scan', False, ('scan', 'scan_raw', '~'))}
+    system = load_system([summary])
+    assert _resolved(system, '/declared') == [
+        '-', '/robot/pose', '/robot/state', '/scan_raw']
+
+
+def test_a_parameter_without_default_is_unknown_with_a_note(summary):
+    notes = [d for d in summary.diagnostics if 'no default' in d]
+    assert notes == [
+        "scripts/around:17: note: the topic 'required' is the value of "
+        "the parameter '~required_topic', which has no default: not known "
+        'unless a launch file sets it',
+        'scripts/declared:22: note: the topic '
+        '"self.get_parameter(\'undeclared\').value" is the value of the '
+        "parameter '~undeclared', which has no default: not known unless "
+        'a launch file sets it']
+
+
+def test_parameters_declared_together(summary):
+    assert _topics(summary, 'declared_many') == {
+        ("self.get_parameter('output').get_parameter_value().string_value",
+         False, ('output', 'filtered_points', '~')),
+        ("self.get_parameter('topics.debug').value", False,
+         ('topics.debug', 'debug_out', '~'))}
+    assert _topics(summary, 'declared_many', 'subscribers') == {
+        ("self.get_parameter('input').value", False,
+         ('input', 'points', '~'))}
+    system = load_system([summary])
+    assert _resolved(system, '/many') == [
+        '/debug_out', '/filtered_points', '/points']

@@ -27,10 +27,19 @@ publishers                                ``rospy.Publisher``,
                                           ``tf2_ros.TransformBroadcaster`` and
                                           ``tf.TransformBroadcaster`` (/tf),
                                           ``tf2_ros.StaticTransformBroadcaster``
-                                          (/tf_static)
+                                          (/tf_static),
+                                          ``diagnostic_updater.Updater``
+                                          (/diagnostics; with a node
+                                          argument (ROS 2) it publishes
+                                          from a timer of its own)
 publish sites                             ``rospy.Publisher.publish``,
                                           ``rclpy.publisher.Publisher.publish``,
-                                          ``<broadcaster>.sendTransform``;
+                                          ``<broadcaster>.sendTransform``,
+                                          ``Updater.update`` /
+                                          ``force_update`` / ``broadcast`` /
+                                          ``publish``,
+                                          ``DiagnosedPublisher.publish`` (the
+                                          publisher it wraps);
                                           ``publish`` / ``sendTransform`` on an
                                           object of unknown type
 subscribers                               ``rospy.Subscriber``,
@@ -43,7 +52,10 @@ subscribers                               ``rospy.Subscriber``,
                                           (one-shot subscriptions: inputs),
                                           ``tf2_ros.TransformListener``,
                                           ``tf.TransformListener`` (/tf and
-                                          /tf_static)
+                                          /tf_static),
+                                          ``interactive_markers.``
+                                          ``InteractiveMarkerServer``
+                                          (<topic_ns>/feedback)
 timers                                    ``rospy.Timer`` (a ``rospy.Duration``),
                                           ``rclpy.node.Node.create_timer``
                                           (seconds)
@@ -61,10 +73,14 @@ actions                                   ``rclpy.action.ActionServer`` /
 message_filters synchronisers             ``message_filters.TimeSynchronizer``,
                                           ``ApproximateTimeSynchronizer``,
                                           ``Cache``; ``registerCallback``
+callbacks of a subscription               ``InteractiveMarkerServer.insert`` /
+                                          ``setCallback``,
+                                          ``MenuHandler.insert``
 sleeps that do not adapt (recognised so   ``rospy.sleep``, ``time.sleep``
 that they are never taken for a Rate)
 parameter reads (a topic name may come    ``rospy.get_param``,
 from one)                                 ``rclpy.node.Node.declare_parameter``,
+                                          ``declare_parameters``,
                                           ``rclpy.node.Node.get_parameter``
 ========================================  ===================================
 
@@ -101,6 +117,8 @@ DURATION = 'duration'   # a Duration object (a bare number: seconds)
 HZ = 'hz'               # a frequency
 
 NODE_CLASS = 'rclpy.node.Node'
+DIAGNOSTICS_MSG = 'diagnostic_msgs::DiagnosticArray'
+MARKER_FEEDBACK_MSG = 'visualization_msgs::InteractiveMarkerFeedback'
 
 
 @dataclass(frozen=True)
@@ -129,14 +147,38 @@ class PyApi:
     # the canonical type of the object the call returns, when not the
     # called class itself
     returns: Optional[str] = None
-    # message_filters.Subscriber: (name, msg_type) of the ROS 1 form
-    # Subscriber(topic, Type), used when the first argument is a string or
-    # only two positional arguments are given
+    # APIs of both ROS 1 and ROS 2 whose arguments differ: (name,
+    # msg_type) of the ROS 1 form, used when a keyword only the ROS 1 form
+    # has is given (ros1_keywords), or none of the ROS 2 form's
+    # (ros2_keywords) and the first argument is a string or fewer than
+    # ros2_arity positional arguments are given (message_filters'
+    # Subscriber(topic, Type) and Subscriber(node, Type, topic))
     ros1_form: Optional[tuple] = None
+    ros1_keywords: tuple = ()
+    ros2_keywords: tuple = ()
+    ros2_arity: int = 0
+    # SUBSCRIBER/PUBLISHER: what the API joins to the name it is given
+    # (an interactive marker server subscribes <topic_ns>/feedback)
+    topic_suffix: str = ''
     # PARAM_READ: (position, keyword) of the default value
     default: Optional[tuple] = None
     # PARAM_READ: ROS 2 parameters always belong to the node itself
     node_private: bool = False
+    # PARAM_READ of several parameters: (position, keyword) of the list of
+    # (name, default[, descriptor]) tuples, and of the namespace their
+    # names are joined to with '.'
+    param_list: Optional[tuple] = None
+    param_namespace: Optional[tuple] = None
+    # PUBLISHER: (position, keyword) of an argument that, when given and
+    # not a string, makes the object publish from a timer of its own
+    # (ROS 2 diagnostic_updater.Updater(node, period)); `period` gives the
+    # timer's period, else `default_period` seconds
+    own_timer: Optional[tuple] = None
+    default_period: Optional[float] = None
+    # PUBLISHER: (position, keyword) of a publisher the object wraps: it
+    # makes no publisher of its own, its publish sites are the wrapped
+    # one's (diagnostic_updater.DiagnosedPublisher(pub, ...))
+    wraps: Optional[tuple] = None
 
 
 NODE = NODE_CLASS + '.'
@@ -202,6 +244,9 @@ CALLS = {
     NODE + 'declare_parameter': PyApi(
         PARAM_READ, name=(0, 'name'), default=(1, 'value'),
         node_private=True),
+    NODE + 'declare_parameters': PyApi(
+        PARAM_READ, param_namespace=(0, 'namespace'),
+        param_list=(1, 'parameters'), node_private=True),
     NODE + 'get_parameter': PyApi(
         PARAM_READ, name=(0, 'name'), node_private=True),
     NODE + 'create_rate': PyApi(
@@ -232,7 +277,9 @@ CALLS = {
     # --- message_filters (ROS 1 and ROS 2) ---
     'message_filters.Subscriber': PyApi(
         SUBSCRIBER, name=(2, 'topic'), msg_type_arg=(1, 'msg_type'),
-        ros1_form=((0, 'name'), (1, 'data_class'))),
+        ros1_form=((0, 'name'), (1, 'data_class')),
+        ros1_keywords=('name', 'data_class'),
+        ros2_keywords=('topic', 'msg_type'), ros2_arity=3),
     'message_filters.TimeSynchronizer': PyApi(SYNC, inputs=(0, 'fs')),
     'message_filters.ApproximateTimeSynchronizer': PyApi(
         SYNC, inputs=(0, 'fs')),
@@ -260,6 +307,38 @@ CALLS = {
     'tf.TransformBroadcaster.sendTransformMessage': PyApi(PUBLISH),
     'tf.TransformListener': PyApi(
         SUBSCRIBER, msg_type=TF_MSG, implicit_topics=('/tf', '/tf_static')),
+    # --- interactive_markers: the server subscribes <topic_ns>/feedback
+    # (ROS 1 (topic_ns, server_id), ROS 2 (node, topic_ns)) and calls the
+    # feedback callbacks given to insert/setCallback (ROS 1 feedback_cb,
+    # ROS 2 feedback_callback) and to a MenuHandler's entries from it; its
+    # own update publishers are the library's, as actionlib's are ---
+    'interactive_markers.InteractiveMarkerServer': PyApi(
+        SUBSCRIBER, name=(1, 'topic_ns'), msg_type=MARKER_FEEDBACK_MSG,
+        topic_suffix='/feedback', ros1_form=((0, 'topic_ns'), None),
+        ros1_keywords=('server_id',), ros2_keywords=('node',),
+        ros2_arity=2),
+    'interactive_markers.InteractiveMarkerServer.insert': PyApi(
+        REGISTER_CALLBACK, callback=(1, 'feedback_cb'),
+        extra_callbacks=((None, 'feedback_callback'),)),
+    'interactive_markers.InteractiveMarkerServer.setCallback': PyApi(
+        REGISTER_CALLBACK, callback=(1, 'feedback_cb'),
+        extra_callbacks=((None, 'feedback_callback'),)),
+    'interactive_markers.MenuHandler.insert': PyApi(
+        REGISTER_CALLBACK, callback=(4, 'callback')),
+    # --- diagnostic_updater: the updater publishes /diagnostics ---
+    # ROS 1 Updater() publishes when update()/force_update() is called;
+    # ROS 2 Updater(node, period=1.0) also from a timer of its own
+    'diagnostic_updater.Updater': PyApi(
+        PUBLISHER, msg_type=DIAGNOSTICS_MSG,
+        implicit_topics=('/diagnostics',), own_timer=(0, 'node'),
+        period=(1, 'period'), period_unit=SECONDS, default_period=1.0),
+    'diagnostic_updater.Updater.update': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.force_update': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.broadcast': PyApi(PUBLISH),
+    'diagnostic_updater.Updater.publish': PyApi(PUBLISH),
+    'diagnostic_updater.DiagnosedPublisher': PyApi(
+        PUBLISHER, wraps=(0, 'pub')),
+    'diagnostic_updater.DiagnosedPublisher.publish': PyApi(PUBLISH),
     # --- plain sleeps and callback binding ---
     'time.sleep': PyApi(SLEEP),
     'functools.partial': PyApi(PARTIAL),
@@ -319,6 +398,14 @@ ALIASES = {
     'tf2_ros.transform_listener.TransformListener':
         'tf2_ros.TransformListener',
     'tf.broadcaster.TransformBroadcaster': 'tf.TransformBroadcaster',
+    'interactive_markers.interactive_marker_server.InteractiveMarkerServer':
+        'interactive_markers.InteractiveMarkerServer',
+    'interactive_markers.menu_handler.MenuHandler':
+        'interactive_markers.MenuHandler',
+    'diagnostic_updater._diagnostic_updater.Updater':
+        'diagnostic_updater.Updater',
+    'diagnostic_updater._publisher.DiagnosedPublisher':
+        'diagnostic_updater.DiagnosedPublisher',
     'tf.listener.TransformListener': 'tf.TransformListener',
 }
 
@@ -338,7 +425,7 @@ NODE_NAMING = frozenset({'rospy.init_node', 'rclpy.create_node', NODE_CLASS})
 
 NODE_METHODS = frozenset({
     'get_logger', 'get_clock', 'get_name', 'get_namespace',
-    'get_fully_qualified_name', 'declare_parameter', 'declare_parameters',
+    'get_fully_qualified_name', 'declare_parameter',
     'get_parameter', 'get_parameters', 'get_parameter_or',
     'get_parameters_by_prefix', 'has_parameter', 'set_parameters',
     'set_parameters_atomically', 'undeclare_parameter',

@@ -89,6 +89,7 @@ def build_python_summary(*, name, path):
     # what an analysed module lost (a statement nested too deeply)
     for module in sorted(units):
         summary.diagnostics += units[module].diagnostics
+    summary.diagnostics.extend(_parameter_notes(summary.nodes))
     for module in sorted(failures, key=lambda m: failures[m]):
         line = failures[module]
         executables = not_analysed.get(module)
@@ -103,6 +104,30 @@ def build_python_summary(*, name, path):
             coverage.package_call_sites(path, python=True),
             nodes=summary.nodes, units=list(units.values())))
     return summary
+
+
+def _parameter_notes(nodes):
+    """One note per topic taken from a parameter that has no default.
+
+    ``rospy.get_param('topic')``, ``self.get_parameter('topic').value``
+    of a parameter declared nowhere with a value: the name is the value a
+    launch file gives the parameter; without one it is not known (the
+    graph gives it no name and connects it to nothing).
+    """
+    notes = set()
+    for node in nodes:
+        for endpoint in node.publishers + node.subscribers:
+            param = endpoint.topic_param
+            if endpoint.topic_is_literal or param is None or \
+                    param.default is not None:
+                continue
+            name = param.name if param.namespace != '~' \
+                else f'~{param.name}'
+            notes.add(
+                f'{endpoint.location}: note: the topic {endpoint.topic!r} '
+                f'is the value of the parameter {name!r}, which has no '
+                f'default: not known unless a launch file sets it')
+    return sorted(notes)
 
 
 def parse_modules(modules, package_path, entry_modules):

@@ -5,9 +5,10 @@
 The analysed code is read with :mod:`ast` only: it is never imported or
 executed. Names are resolved through the module's imports (``import rospy``,
 ``from rclpy.node import Node``, ``import rclpy.node as rn``, relative
-imports) and, for the package's own modules (``package_modules``), through
-their code, parsed the same way; a call is recognised by the canonical name
-of what it calls, looked up in :mod:`colcon_rsia.frontend.python_api`.
+imports, ``from X import *``) and, for the package's own modules
+(``package_modules``), through their code, parsed the same way; a call
+is recognised by the canonical name of what it calls, looked up in
+:mod:`colcon_rsia.frontend.python_api`.
 
 Ids (the same meaning as the C++ front end's USRs):
 

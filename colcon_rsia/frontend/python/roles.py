@@ -53,9 +53,22 @@ class Roles:
         topic, literal = self._topic(argument, context)
         if topic is None:
             return None
+        if api.topic_suffix:
+            topic = topic + api.topic_suffix if literal \
+                else f'{topic} + {api.topic_suffix!r}'
         return [(topic, literal)], argument
 
+    def _topic_source_of(self, api, argument, context):
+        """_topic_source of a name argument, with what the API joins."""
+        source, affixes = self._topic_source(argument, context)
+        if source is not None and api.topic_suffix:
+            prefix, suffix = affixes or ('', '')
+            affixes = [prefix, suffix + api.topic_suffix]
+        return source, affixes
+
     def _on_publisher(self, api, name, node, context):
+        if self._wrapped_publisher(api, node, context):
+            return
         msg_type = api.msg_type or self._msg_type(
             call_argument(node, api.msg_type_arg), context)
         found = self._topics(api, node, api.name, context)
@@ -63,17 +76,70 @@ class Roles:
             return
         topics, argument = found
         handle, handle_name = self._target(node, context)
+        if api.own_timer is not None and handle is not None and \
+                self._given_object(call_argument(node, api.own_timer),
+                                   context):
+            self._own_timer(api, name, node, context, handle)
         for topic, literal in topics:
+            source, affixes = (None, None) if literal else \
+                self._topic_source_of(api, argument, context)
             self.facts.publishers.append(model.PublisherFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 handle_name=handle_name, location=self.location(node),
-                topic_handle=None if literal else self._topic_handle(
-                    argument, context)))
+                topic_handle=source, topic_affixes=affixes))
+
+    def _given_object(self, argument, context):
+        """Whether an argument is written and is no string."""
+        return argument is not None and \
+            self.project.string(argument, context.scope) is None and \
+            not isinstance(argument, ast.JoinedStr)
+
+    def _wrapped_publisher(self, api, node, context):
+        """``DiagnosedPublisher(pub, ...)`` publishes through `pub`.
+
+        Returns whether the call is such a wrapper (it then makes no
+        publisher of its own; its publish sites count for `pub`).
+        """
+        if api.wraps is None:
+            return False
+        wrapped = call_argument(node, api.wraps)
+        if not self._given_object(wrapped, context):
+            return False
+        alias, _ = self._target(node, context)
+        handle = self._object_handle(wrapped, context)
+        if alias is not None and handle is not None:
+            self.facts.handle_aliases.append(model.HandleAlias(
+                alias=alias, handle=handle, location=self.location(node)))
+        return True
+
+    def _own_timer(self, api, name, node, context, handle):
+        """An object publishing from a timer of its own (ROS 2 Updater).
+
+        Recorded as what it does, as in C++: a timer whose callback (a
+        function made up for it, at the construction) publishes through
+        the object.
+        """
+        location = self.location(node)
+        # what the real timer calls; the id is unique per object
+        callback = f'{name}.update@{location}'
+        self.facts.functions.append(model.Function(
+            id=callback, name=f'{name}.update', location=location))
+        period = call_argument(node, api.period)
+        rate_hz = self._rate_hz(period, api.period_unit, context) \
+            if period is not None \
+            else recorder.rate_of_period(api.default_period)
+        self.facts.timers.append(model.TimerFact(
+            function=context.function, api=name, callback=callback,
+            period=self.text(period) if period is not None
+            else str(api.default_period),
+            rate_hz=rate_hz, location=location))
+        self.facts.publish_sites.append(model.PublishSite(
+            function=callback, api=name, handle=handle, location=location))
 
     def _on_subscriber(self, api, name, node, context):
         name_arg, type_arg = api.name, api.msg_type_arg
-        if api.ros1_form is not None and self._ros1_form(node):
+        if api.ros1_form is not None and self._ros1_form(api, node, context):
             name_arg, type_arg = api.ros1_form
         msg_type = api.msg_type or self._msg_type(
             call_argument(node, type_arg), context)
@@ -90,12 +156,13 @@ class Roles:
             self._bind_one(scope, 1, callback_args, context)
         handle, _ = self._target(node, context)
         for topic, literal in topics:
+            source, affixes = (None, None) if literal else \
+                self._topic_source_of(api, argument, context)
             self.facts.subscribers.append(model.SubscriberFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 callback=callback, location=self.location(node),
-                topic_handle=None if literal else self._topic_handle(
-                    argument, context)))
+                topic_handle=source, topic_affixes=affixes))
 
     def _on_timer(self, api, name, node, context):
         callback, _, _ = self._callback(
@@ -212,11 +279,15 @@ class Roles:
             handle=handle, inputs=inputs, location=self.location(node)))
 
     def _on_register_callback(self, api, name, node, context):
-        callback, _, _ = self._callback(
-            call_argument(node, api.callback), context)
-        self.facts.registrations.append(model.Registration(
-            function=context.function, handle=self._receiver(node, context),
-            callback=callback, location=self.location(node)))
+        specs = (api.callback,) + api.extra_callbacks
+        for argument in (call_argument(node, spec) for spec in specs):
+            if argument is None:
+                continue
+            callback, _, _ = self._callback(argument, context)
+            self.facts.registrations.append(model.Registration(
+                function=context.function,
+                handle=self._receiver(node, context), callback=callback,
+                location=self.location(node)))
 
 
 def _continue_before(loop, sleep):

@@ -133,6 +133,8 @@ class _Module:
         self.scopes = {}            # id(node) -> scope of a def/lambda/class
         self.functions = []         # module, function and lambda scopes
         self.classes = []
+        # `from X import *`: the absolute dotted X, in the order written
+        self.star_imports = []
         self.scope = _Scope('module', self, tree, '', None)
         self.functions.append(self.scope)
         _Binder(self).bind(self.scope, tree.body)
@@ -264,6 +266,8 @@ class _Binder:
             base = self.module.import_base(node)
             for alias in node.names:
                 if alias.name == '*':
+                    if base and base not in self.module.star_imports:
+                        self.module.star_imports.append(base)
                     continue
                 dotted = f'{base}.{alias.name}' if base else alias.name
                 self._add(scope, alias.asname or alias.name,

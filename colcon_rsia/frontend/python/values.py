@@ -6,6 +6,7 @@ Part of the Python front end (see :mod:`colcon_rsia.frontend.python`).
 """
 
 import ast
+import contextlib
 import re
 import string
 
@@ -14,9 +15,9 @@ from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend.python.scopes import load_module
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import SourceError
+from colcon_rsia.frontend.python.stars import MAX_DEPTH
+from colcon_rsia.frontend.python.stars import StarImports
 
-# how deep the evaluation of one expression may go (names bound to names…)
-MAX_DEPTH = 32
 # a name longer than this is no topic name: not computed
 MAX_STRING = 1000
 
@@ -46,7 +47,7 @@ class _Value:
         self.ref = ref
 
 
-class Project:
+class Project(StarImports):
     """The package's modules and the evaluation of expressions in them."""
 
     def __init__(self, package_path, package_modules):  # noqa: D107
@@ -57,7 +58,11 @@ class Project:
         self._active = set()
         self._numbers_active = set()
         self._strings_active = set()
+        self._stars_active = set()
         self._mro = {}
+        # (expression, scope) -> text or None: the values that stand in
+        # for some expressions while strings are computed (substituting)
+        self._substitute = None
 
     def load(self, name):
         """The module `name`; raise SourceError when it cannot be parsed."""
@@ -130,11 +135,17 @@ class Project:
             return self.value(expr.value, scope, depth)
         return None
 
+    def external(self, dotted):
+        """The value of something outside the package."""
+        return _Value(EXT, dotted)
+
     def name_value(self, scope, name, depth):
         """The value of a name read in a scope (where it is bound)."""
+        if depth > MAX_DEPTH:
+            return None  # modules importing names from each other
         owner = lookup(scope, name)
         if owner is None:
-            return None
+            return self._star_value(scope.module, name, depth)
         for kind, payload, where in owner.bindings.get(name, ()):
             if kind == 'import':
                 result = self.resolve_dotted(payload, depth)
@@ -171,6 +182,14 @@ class Project:
         for cut in range(len(parts), 0, -1):
             head = '.'.join(parts[:cut])
             if head in self.package_modules:
+                if cut == len(parts) and cut > 1:
+                    # `from package import name`: the package's own name
+                    # for it first (`from .name import *` in its
+                    # __init__.py may bind a class of that name), then the
+                    # submodule
+                    bound = self._package_attribute(parts, depth)
+                    if bound is not None:
+                        return bound
                 value = _Value(MODULE, head)
                 for attr in parts[cut:]:
                     value = self.attr(value, attr, depth)
@@ -179,13 +198,29 @@ class Project:
                 return value
         return _Value(EXT, python_api.canonical(dotted))
 
+    def _package_attribute(self, parts, depth):
+        """The value a package module binds for its submodule's name."""
+        parent = self.module('.'.join(parts[:-1]))
+        if parent is None or depth > MAX_DEPTH:
+            return None
+        bindings = parent.scope.bindings.get(parts[-1])
+        if not bindings:
+            return self._star_value(parent, parts[-1], depth)
+        if any(kind == 'import' and payload == '.'.join(parts)
+               for kind, payload, _ in bindings):
+            return None  # the submodule itself
+        return self.name_value(parent.scope, parts[-1], depth + 1)
+
     def attr(self, base, name, depth):
         """The value of ``base.name``."""
         kind = base.kind
         if kind == MODULE:
             module = self.module(base.ref)
             if module is not None and name in module.scope.bindings:
-                return self.name_value(module.scope, name, depth)
+                return self.name_value(module.scope, name, depth + 1)
+            if module is not None and self.star_source(module, name, depth) \
+                    != (None, None):
+                return self._star_value(module, name, depth)
             sub = f'{base.ref}.{name}'
             if sub in self.package_modules:
                 return _Value(MODULE, sub)
@@ -368,7 +403,7 @@ class Project:
                 expr.op, self.number(expr.left, scope, depth),
                 self.number(expr.right, scope, depth))
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id, depth)
             return self._name_number(owner, expr.id, depth) \
                 if owner is not None else None
         if isinstance(expr, ast.Attribute):
@@ -396,8 +431,10 @@ class Project:
                 module_name, _, attr = payload.rpartition('.')
                 module = self.module(module_name) \
                     if module_name in self.package_modules else None
-                if module is not None and attr in module.scope.bindings:
-                    return self._name_number(module.scope, attr, depth + 1)
+                owner = self.module_owner(module, attr, depth)[0] \
+                    if module is not None else None
+                if owner is not None:
+                    return self._name_number(owner, attr, depth + 1)
             return None
         finally:
             self._numbers_active.discard(key)
@@ -408,9 +445,10 @@ class Project:
             return None
         if base.kind == MODULE:
             module = self.module(base.ref)
-            if module is not None:
-                return self._name_number(module.scope, expr.attr, depth)
-            return None
+            owner = self.module_owner(module, expr.attr, depth)[0] \
+                if module is not None else None
+            return self._name_number(owner, expr.attr, depth) \
+                if owner is not None else None
         if base.kind not in (OBJ, CLASS):
             return None
         sites = []
@@ -439,7 +477,7 @@ class Project:
         a loop variable), or cannot be found: its value is not known.
         """
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id, depth)
             return self._sole_binding(owner, expr.id, depth) \
                 if owner is not None else None
         if not isinstance(expr, ast.Attribute):
@@ -449,8 +487,10 @@ class Project:
             return None
         if base.kind == MODULE:
             module = self.module(base.ref)
-            return self._sole_binding(module.scope, expr.attr, depth) \
+            owner = self.module_owner(module, expr.attr, depth)[0] \
                 if module is not None else None
+            return self._sole_binding(owner, expr.attr, depth) \
+                if owner is not None else None
         if base.kind not in (OBJ, CLASS):
             return None
         sites = []
@@ -474,8 +514,10 @@ class Project:
             module_name, _, attr = payload.rpartition('.')
             module = self.module(module_name) \
                 if module_name in self.package_modules else None
-            if module is not None:
-                return self._sole_binding(module.scope, attr, depth + 1)
+            owner = self.module_owner(module, attr, depth)[0] \
+                if module is not None else None
+            if owner is not None:
+                return self._sole_binding(owner, attr, depth + 1)
         return None
 
     def string(self, expr, scope, depth=0):
@@ -497,7 +539,24 @@ class Project:
             self._strings_active.discard(key)
         return text if text is None or len(text) <= MAX_STRING else None
 
+    @contextlib.contextmanager
+    def substituting(self, substitute):
+        """Compute strings with some expressions standing for a value.
+
+        :param substitute: (expression, scope) -> the text it stands for,
+          or None to evaluate it as usual
+        """
+        previous, self._substitute = self._substitute, substitute
+        try:
+            yield
+        finally:
+            self._substitute = previous
+
     def _string(self, expr, scope, depth):
+        if self._substitute is not None:
+            text = self._substitute(expr, scope)
+            if text is not None:
+                return text
         if isinstance(expr, ast.Constant):
             return expr.value if isinstance(expr.value, str) else None
         if isinstance(expr, (ast.Name, ast.Attribute)):
@@ -585,7 +644,7 @@ class Project:
     def handle(self, expr, scope):
         """The handle id of the variable/attribute an expression names."""
         if isinstance(expr, ast.Name):
-            owner = lookup(scope, expr.id)
+            owner = self.owner(scope, expr.id)
             return owner.handle(expr.id) if owner is not None else None
         if isinstance(expr, ast.Attribute):
             base = self.value(expr.value, scope)

@@ -12,6 +12,8 @@ from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.python.helpers import Helpers
+from colcon_rsia.frontend.python.params import Params
 from colcon_rsia.frontend.python.roles import Roles
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import MODULE_FUNCTION
@@ -23,7 +25,6 @@ from colcon_rsia.frontend.python.values import CLASS
 from colcon_rsia.frontend.python.values import EXT
 from colcon_rsia.frontend.python.values import EXTBOUND
 from colcon_rsia.frontend.python.values import FUNC
-from colcon_rsia.frontend.python.values import MAX_DEPTH
 from colcon_rsia.frontend.python.values import PARTIAL
 from colcon_rsia.frontend.python.values import Project
 from colcon_rsia.frontend.python.values import STUB
@@ -80,7 +81,7 @@ def extract_python_facts(path, *, package_path, module_name,
     return facts
 
 
-class _Extractor(Roles):
+class _Extractor(Roles, Params, Helpers):
     """Collects the facts of one module; see :func:`extract_python_facts`."""
 
     def __init__(self, project, module, facts):
@@ -93,6 +94,8 @@ class _Extractor(Roles):
         self._registered = set()
         self._lambdas_in_variables = set()
         self._stubs = set()
+        # function id -> the endpoint calls a helper may make (helpers.py)
+        self._endpoint_site_cache = {}
 
     def run(self):
         for scope in self.module.functions:
@@ -325,6 +328,7 @@ class _Extractor(Roles):
                 else 0
             self._add_call(context, called.ref.id, node)
             self._bind(called.ref, node.args, node.keywords, context, offset)
+            self._helper_endpoints(called.ref, node, context, offset)
             return
         if kind == STUB:
             self._add_call(context, self._stub(called), node)
@@ -334,7 +338,20 @@ class _Extractor(Roles):
             if init is not None and init.kind in (FUNC, BOUND):
                 self._add_call(context, init.ref.id, node)
                 self._bind(init.ref, node.args, node.keywords, context, 0)
+                self._helper_endpoints(init.ref, node, context, 0)
             return
+        name, api = self._api_of(node, called)
+        if api is not None:
+            handler = _ROLES.get(api.role)
+            if handler is not None:
+                handler(self, api, name, node, context)
+
+    def _api_of(self, node, called):
+        """(name, PyApi) of an API call whose callee evaluates to `called`.
+
+        (None, None) when the call is of no recognised API.
+        """
+        kind = called.kind if called is not None else None
         name, api = None, None
         if kind in (EXT, EXTBOUND):
             name = called.ref
@@ -345,10 +362,7 @@ class _Extractor(Roles):
             if name is not None:
                 api = python_api.lookup(name) or \
                     python_api.DUCK_CALLS.get(name)
-        if api is not None:
-            handler = _ROLES.get(api.role)
-            if handler is not None:
-                handler(self, api, name, node, context)
+        return (name, api) if api is not None else (None, None)
 
     def _bind(self, function, args, keywords, context, offset):
         """Record handles passed to a package function's parameters."""
@@ -504,67 +518,6 @@ class _Extractor(Roles):
             return name, True
         return self.text(expr), False
 
-    def _topic_handle(self, expr, context):
-        """The parameter read a name that is not known comes from."""
-        read = self._param_read_of(expr, context.scope, 0)
-        return self._param_handle(*read) if read is not None else None
-
-    def _param_read_of(self, expr, scope, depth):
-        """(call, scope) of the parameter read `expr` takes its value from.
-
-        ``rospy.get_param('~topic', 'chatter')``,
-        ``self.declare_parameter('topic', 'scan').value``,
-        ``self.get_parameter('topic').get_parameter_value().string_value``,
-        or a name assigned once from one of them.
-        """
-        if expr is None or depth > MAX_DEPTH:
-            return None
-        if isinstance(expr, ast.Call):
-            return (expr, scope) if self._param_api(expr, scope) else None
-        if isinstance(expr, ast.Attribute) and \
-                expr.attr in ('value', 'string_value'):
-            inner = expr.value
-            if expr.attr == 'string_value' and \
-                    isinstance(inner, ast.Call) and not inner.args and \
-                    isinstance(inner.func, ast.Attribute) and \
-                    inner.func.attr == 'get_parameter_value':
-                inner = inner.func.value
-            read = self._param_read_of(inner, scope, depth + 1)
-            if read is not None:
-                return read
-        source = self.project.sole_source(expr, scope, depth)
-        return self._param_read_of(source[0], source[1], depth + 1) \
-            if source is not None else None
-
-    def _param_api(self, call, scope):
-        called = self.project.value(call.func, scope)
-        if called is None or called.kind not in (EXT, EXTBOUND):
-            return None
-        api = python_api.lookup(called.ref)
-        return api if api is not None and \
-            api.role == ros_api.PARAM_READ else None
-
-    def _param_handle(self, call, scope):
-        # the same for the read and for the topics taking its value
-        return f'param@{scope.module.relpath}:{call.lineno}:' \
-            f'{call.col_offset}'
-
-    def _on_param_read(self, api, name, node, context):
-        param = self.project.string(
-            call_argument(node, api.name), context.scope)
-        if param is None:
-            return
-        namespace = '~' if api.node_private else ''
-        if param.startswith('~'):
-            # rospy: a private parameter
-            param, namespace = param[1:], '~'
-        default = self.project.string(
-            call_argument(node, api.default), context.scope)
-        self.facts.param_reads.append(model.ParamRead(
-            function=context.function, name=param, default=default,
-            handle=self._param_handle(node, context.scope), nh=namespace,
-            location=self.location(node)))
-
     def _msg_type(self, expr, context):
         if expr is None:
             return None
@@ -603,12 +556,17 @@ class _Extractor(Roles):
         number = self.project.number(expr, context.scope)
         return number if number and number > 0 else None
 
-    def _ros1_form(self, node):
-        """message_filters.Subscriber(topic, Type) rather than (node, …)."""
+    def _ros1_form(self, api, node, context):
+        """Whether a call has the ROS 1 form of an API of both.
+
+        message_filters.Subscriber(topic, Type) rather than (node, Type,
+        topic); InteractiveMarkerServer(topic_ns) rather than (node,
+        topic_ns).
+        """
         keywords = {k.arg for k in node.keywords}
-        if keywords & {'topic', 'msg_type'}:
+        if keywords & set(api.ros2_keywords):
             return False
-        if keywords & {'name', 'data_class'}:
+        if keywords & set(api.ros1_keywords):
             return True
         positional = []
         for argument in node.args:
@@ -617,10 +575,10 @@ class _Extractor(Roles):
             positional.append(argument)
         if positional and (
                 isinstance(positional[0], ast.JoinedStr) or
-                (isinstance(positional[0], ast.Constant) and
-                 isinstance(positional[0].value, str))):
+                self.project.string(positional[0], context.scope)
+                is not None):
             return True
-        return len(positional) == 2
+        return len(positional) < api.ros2_arity
 
     def _elements(self, expr, context):
         """The expressions of a list/tuple argument (or the one given)."""
