@@ -37,5 +37,11 @@ ALLOWED_ROOTS_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'Directories (separated by :) outside a package that its files may '
     'link into for rsia to read them')
 
+"""Environment variable: the longest one translation unit's parse may take"""
+UNIT_TIMEOUT_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_UNIT_TIMEOUT',
+    'The seconds rsia may spend on one translation unit (its parses and '
+    'their walk) before it gives the unit up (default: 300)')
+
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'
