@@ -41,7 +41,7 @@ ALLOWED_ROOTS_ENVIRONMENT_VARIABLE = EnvironmentVariable(
 UNIT_TIMEOUT_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'COLCON_RSIA_UNIT_TIMEOUT',
     'The seconds rsia may spend on one translation unit (its parses and '
-    'their walk) before it gives the unit up (default: 300)')
+    'their walk) before it gives the unit up (default: 900)')
 
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'

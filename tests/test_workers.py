@@ -139,7 +139,7 @@ def test_a_bad_time_limit_is_one_error_up_front(tmp_path, value):
     assert lines == [
         f"rsia: COLCON_RSIA_UNIT_TIMEOUT='{value}' is not a positive number "
         'of seconds (the time one translation unit may take; unset, it is '
-        '300); nothing analysed'], result.stdout + result.stderr
+        '900); nothing analysed'], result.stdout + result.stderr
     assert 'analysing p' not in result.stdout
     assert not (tmp_path / 'build' / 'p' / 'rsia').exists()
 
@@ -231,7 +231,7 @@ def test_the_build_handler_says_a_bad_time_limit_once(tmp_path, capsys,
     assert capsys.readouterr().out == (
         "rsia: COLCON_RSIA_UNIT_TIMEOUT='soon' is not a positive number of "
         'seconds (the time one translation unit may take; unset, it is '
-        '300); nothing is analysed\n')
+        '900); nothing is analysed\n')
 
 
 # --- the worker processes themselves -----------------------------------------
@@ -355,4 +355,4 @@ def test_no_worker_starts_when_every_unit_is_cached(tmp_path, monkeypatch):
 @pytest.mark.parametrize('value', ['', ' ', '0.5', '300', '1e3'])
 def test_good_time_limits(monkeypatch, value):
     monkeypatch.setenv('COLCON_RSIA_UNIT_TIMEOUT', value)
-    assert workers.unit_timeout() == (float(value) if value.strip() else 300)
+    assert workers.unit_timeout() == (float(value) if value.strip() else 900)

@@ -17,6 +17,10 @@ unlike a plain fork, and each worker starts in a few milliseconds), only
 when a unit needs parsing (a re-analysis whose units all come from the
 cache starts none), and are kept for the next package of the run.
 
+As with any multiprocessing program, a script that calls the analysis
+must guard its own code with ``if __name__ == '__main__':`` (the fork
+server imports the script, as its main module, once).
+
 Also here: how an analysis is stopped (Ctrl-C, :func:`request_stop`).
 """
 
@@ -79,10 +83,12 @@ def default_jobs():
 
 
 # the time limit of one unit unless the variable says otherwise: a ROS unit
-# parses in seconds, its repair rounds take a few parses more; a unit past
-# five minutes is a parse that does not end (a constexpr loop, a template
-# explosion), not a slow machine
-DEFAULT_UNIT_TIMEOUT_S = 300
+# parses in seconds, its repair rounds take a few parses more; the 5 MB
+# generated unit of tests/test_faults.py (90,000 functions) takes 4 minutes
+# with its repairs on a busy 2-core machine, and a unit may be 8 MB (the
+# file size limit). Past 15 minutes a parse does not end (a constexpr
+# loop, a template explosion)
+DEFAULT_UNIT_TIMEOUT_S = 900
 
 
 def unit_timeout():
