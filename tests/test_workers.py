@@ -356,3 +356,11 @@ def test_no_worker_starts_when_every_unit_is_cached(tmp_path, monkeypatch):
 def test_good_time_limits(monkeypatch, value):
     monkeypatch.setenv('COLCON_RSIA_UNIT_TIMEOUT', value)
     assert workers.unit_timeout() == (float(value) if value.strip() else 900)
+
+
+def test_the_fork_server_preloads_modules_that_exist():
+    # a module that moved would silently be imported by every worker again
+    import importlib
+    for module in workers.PRELOAD:
+        if module != '__main__':
+            importlib.import_module(module)

@@ -133,9 +133,9 @@ PRELOAD = [
     '__main__', 'clang.cindex', 'colcon_rsia.package.analysis',
     'colcon_rsia.package.workers', 'colcon_rsia.frontend.cpp',
     'colcon_rsia.frontend.cpp.model_mode',
-    'colcon_rsia.frontend.cpp.model_mode.repair',
-    'colcon_rsia.frontend.cpp.model_mode.source_edits',
-    'colcon_rsia.frontend.cpp.parse', 'colcon_rsia.frontend.cpp.wrappers']
+    'colcon_rsia.frontend.cpp.model_mode.recovery',
+    'colcon_rsia.frontend.cpp.parse', 'colcon_rsia.frontend.cpp.token_facts',
+    'colcon_rsia.frontend.cpp.wrappers']
 # how often a wait for the workers looks at request_stop(): Ctrl-C ends
 # the analysis within this
 POLL_S = 0.2
