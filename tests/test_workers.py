@@ -19,7 +19,6 @@ import time
 import uuid
 
 from colcon_rsia.package import workers
-from conftest import analyse_source
 from conftest import build_workspace
 from conftest import colcon_executable
 from conftest import run_colcon
@@ -338,15 +337,17 @@ def test_a_stop_ends_the_parses_under_way(tmp_path, monkeypatch):
 
 def test_no_worker_starts_when_every_unit_is_cached(tmp_path, monkeypatch):
     from colcon_rsia.package.analysis import analyze_package
-    first = analyse_source(tmp_path, 'p', GOOD_NODE)
+    first = analyze_package(
+        name='p', path=str(_package(tmp_path, 'p', {'n.cpp': GOOD_NODE})),
+        build_base=str(tmp_path / 'build' / 'p'), header_mode='model')
     workers.shutdown()
 
     def no_worker(*args, **kwargs):
         raise AssertionError('a worker process was started')
     monkeypatch.setattr(workers, '_Worker', no_worker)
     again = analyze_package(
-        name='p', path=str(tmp_path / 'p'), build_base=str(tmp_path / 'b'),
-        header_mode='model', workspace_package_dirs=[str(tmp_path / 'p')])
+        name='p', path=str(tmp_path / 'src' / 'p'),
+        build_base=str(tmp_path / 'build' / 'p'), header_mode='model')
     assert again.diagnostics == first.diagnostics
     assert json.dumps(again.to_dict()['nodes']) == \
         json.dumps(first.to_dict()['nodes'])
