@@ -43,5 +43,11 @@ CMAKE_WITHOUT_SANDBOX_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'Set to 1 to let rsia configure an unbuilt package with CMake where no '
     'bubblewrap sandbox can be made (only for code you trust)')
 
+"""Environment variable: the longest one translation unit's parse may take"""
+UNIT_TIMEOUT_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_UNIT_TIMEOUT',
+    'The seconds rsia may spend on one translation unit (its parses and '
+    'their walk) before it gives the unit up (default: 900)')
+
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'

@@ -11,6 +11,7 @@ opened without blocking and checked again on the open descriptor, so a
 file swapped after the check is caught too.
 """
 
+import contextlib
 import math
 import os
 import re
@@ -246,13 +247,14 @@ def write_file_atomically(path, write):
 
     ``write(temporary)`` fills a temporary file in the same directory,
     which is then renamed over the target (a write killed half-way leaves
-    at most a stray temporary file), with the mode of every other build
-    artifact, not mkstemp's 0600.
+    at most a stray temporary file, named by :func:`temporary_files_of`),
+    with the mode of every other build artifact, not mkstemp's 0600.
     """
     directory = os.path.dirname(path)
     os.makedirs(directory, exist_ok=True)
     fd, temporary = tempfile.mkstemp(
-        dir=directory, prefix='.' + os.path.basename(path), suffix='.tmp')
+        dir=directory, prefix=f'.{os.path.basename(path)}.{os.getpid()}.',
+        suffix='.tmp')
     os.close(fd)
     try:
         write(temporary)
@@ -264,6 +266,45 @@ def write_file_atomically(path, write):
         except OSError:
             pass
         raise
+
+
+def temporary_files_of(directory, pid):
+    """The temporary files a process killed while writing left in a directory.
+
+    Those of :func:`write_file_atomically` (``.name.<pid>.XXXXXXXX.tmp``),
+    and what a writer of its own (libclang saving a precompiled header)
+    made next to them.
+    """
+    try:
+        names = os.listdir(directory)
+    except OSError:
+        return []
+    return sorted(
+        os.path.join(directory, name) for name in names
+        if name.startswith('.') and f'.{pid}.' in name and '.tmp' in name)
+
+
+@contextlib.contextmanager
+def directory_lock(directory):
+    """Hold an exclusive lock on a directory (made if missing).
+
+    Processes and threads that take it wait for each other (each takes it
+    through its own open descriptor); the lock ends with the process that
+    held it, however it ends. The directory holds no file for it. Where
+    there is no ``flock`` it locks nothing.
+    """
+    os.makedirs(directory, exist_ok=True)
+    try:
+        import fcntl
+    except ImportError:  # not POSIX
+        yield
+        return
+    fd = os.open(directory, os.O_RDONLY | os.O_CLOEXEC)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)
 
 
 def display(text):

@@ -8,6 +8,7 @@ from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.cpp.model_mode import precompiled
 from colcon_rsia.package import analysis
 from colcon_rsia.package import store
+from colcon_rsia.package import workers
 import pytest
 
 # std::deque and std::accumulate without their headers: the real rclcpp
@@ -117,8 +118,9 @@ def test_a_precompiled_header_clang_refuses_gives_way_to_a_plain_parse(
     assert [p.topic for p in node.publishers] == ['average']
     assert [s.topic for s in node.subscribers] == ['samples']
     assert not os.path.exists(pch)
-    # the next analysis (another process, as the next run) builds it again
+    # the next analysis (other processes, as the next run) builds it again
     precompiled._known.clear()
+    workers.shutdown()
     _assert_averager(_analyze(package, build_base))
     assert os.path.isfile(pch)
 

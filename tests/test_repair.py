@@ -10,6 +10,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.frontend.cpp.walker import _Walker
 from colcon_rsia.package import analysis
+from colcon_rsia.package import workers
 from conftest import analyse_source
 import pytest
 
@@ -592,6 +593,8 @@ def test_a_failing_declaration_loses_only_itself(tmp_path, monkeypatch):
             raise RuntimeError('boom')
         return original(walker, cursor)
     monkeypatch.setattr(_Walker, '_function', failing)
+    # the patch is in this process: parse here, not in worker processes
+    monkeypatch.setattr(workers, 'START_METHOD', None)
     summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
     [node] = summary.nodes
     # the constructor's facts survive; the publish site was in onImage
@@ -616,6 +619,7 @@ def test_a_failing_unit_loses_only_itself(tmp_path, monkeypatch):
         return original(tu, package_path=package_path, source=source,
                         **others)
     monkeypatch.setattr(cpp, 'extract_facts', failing)
+    monkeypatch.setattr(workers, 'START_METHOD', None)
     summary = _analyze(package, tmp_path / 'build' / 'acme_vision')
     assert [n.id for n in summary.nodes] == ['acme_vision/detector_node']
     assert any(d.startswith('src/other.cpp: not analysed (internal error: '

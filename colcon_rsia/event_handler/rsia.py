@@ -19,9 +19,11 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
     """
     Analyse each package's rates right after its build job ends.
 
-    The analysis runs in a worker thread while the build goes on; results
-    are printed as they come and joined when the build ends. A package that
-    cannot be analysed gets one message and never fails the build.
+    The analysis runs in a worker thread while the build goes on (its
+    translation units parsed in worker processes: a unit that crashes
+    libclang loses only itself); results are printed as they come and
+    joined when the build ends. A package that cannot be analysed gets one
+    message and never fails the build.
     """
 
     # the build's own console output and logs come first (they have higher
@@ -34,8 +36,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
     PACKAGE_WORKERS = 1
 
     # the niceness of the analysis threads: the compiler comes first, the
-    # analysis takes the CPU time the build leaves (threads it starts, the
-    # libclang parses, inherit it)
+    # analysis takes the CPU time the build leaves (the worker processes
+    # that parse its units take it too)
     NICENESS = 10
 
     def __init__(self):  # noqa: D107
@@ -100,10 +102,10 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             workspace_package_dirs=self._workspace_package_dirs(pkg)))
 
     def _interrupt(self):
-        # Ctrl-C: colcon stops its jobs; analyse nothing more, and let the
-        # analysis under way end at its next parse without writing, so that
-        # colcon exits as soon as its own jobs have stopped
-        from colcon_rsia.package.analysis import request_stop
+        # Ctrl-C: colcon stops its jobs; analyse nothing more, and end the
+        # analysis under way (its worker processes) without writing, so
+        # that colcon exits as soon as its own jobs have stopped
+        from colcon_rsia.package.workers import request_stop
         self._interrupted = True
         request_stop()
         for future in self._pending:
@@ -157,7 +159,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             print(outcome.line(), flush=True)
 
     def _shutdown(self):
-        from colcon_rsia.package.analysis import stop_requested
+        from colcon_rsia.package import workers
         if self._pool is None:
             return
         for future in self._pending:
@@ -165,10 +167,12 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._pending = []
         self._pool.shutdown(wait=True)
         self._pool = None
+        # the processes that parsed the units end with the build
+        workers.shutdown()
         analysed = [o for o in self._outcomes if o.summary is not None]
         considered = [o for o in self._outcomes if not o.skipped]
         nodes = sum(len(o.summary.nodes) for o in analysed)
-        if self._interrupted or stop_requested():
+        if self._interrupted or workers.stop_requested():
             print(
                 f'rsia: interrupted; analysed {len(analysed)} packages '
                 f'({nodes} nodes) before that, the others not: build again '
@@ -200,9 +204,9 @@ def _stop_before_exit():
     # Ctrl-C while colcon waits for the analysis at the end of the build:
     # colcon returns, and the interpreter joins our threads before it exits.
     # The functions threading runs just before that join end the analysis
-    # at its next parse. (A private hook, the one concurrent.futures uses;
+    # (its parses in worker processes). (A private hook, the one concurrent.futures uses;
     # where it is missing, the analysis under way runs to its end.)
-    from colcon_rsia.package.analysis import request_stop
+    from colcon_rsia.package.workers import request_stop
     register = getattr(threading, '_register_atexit', None)
     if register is not None:
         try:

@@ -7,7 +7,6 @@ The event handler and ``colcon rsia analyze`` both call
 """
 
 import collections
-from concurrent.futures import ThreadPoolExecutor
 import glob
 import os
 import threading
@@ -27,9 +26,9 @@ from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
 from colcon_rsia.package import coverage
 from colcon_rsia.package import plugin_hosts
 from colcon_rsia.package import store
+from colcon_rsia.package import workers
 from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.assembly import executable_nodes
-from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
 from colcon_rsia.package.call_sites import cxx_call_sites
@@ -41,44 +40,11 @@ from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
 from colcon_rsia.package.nodes import find_plugins
 from colcon_rsia.package.nodes import skipped_executable
+from colcon_rsia.package.workers import check_stop
 
 
 class AnalysisError(RuntimeError):
     """An expected failure of one package's analysis (one clear sentence)."""
-
-
-class Interrupted(Exception):
-    """The build was interrupted: the analysis ends and writes nothing."""
-
-
-# set by request_stop() when the build is interrupted (Ctrl-C)
-_stop_requested = threading.Event()
-
-
-def request_stop():
-    """Make every running analysis end before its next parse.
-
-    A parse under way cannot be cut short (libclang has no way to), so an
-    analysis ends within one translation unit's parse, and writes no
-    summary: the summaries already written stay whole.
-    """
-    _stop_requested.set()
-
-
-def stop_requested():
-    """Whether :func:`request_stop` was called."""
-    return _stop_requested.is_set()
-
-
-def check_stop():
-    """Raise :class:`Interrupted` if the analysis should end now."""
-    if _stop_requested.is_set():
-        raise Interrupted()
-
-
-def default_jobs():
-    """Threads for parsing: libclang releases the GIL while it parses."""
-    return max(1, os.cpu_count() or 1)
 
 
 HEADER_MODES = ('model', 'exact')
@@ -108,7 +74,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     :param str name: the package name
     :param str path: the package source directory
     :param str build_base: the package's build directory
-    :param int jobs: parallel parses (default: the number of CPUs)
+    :param int jobs: parallel parses, each in a worker process (default:
+      the number of CPUs)
     :param bool use_cache: reuse facts of unchanged translation units
     :param bool nothing_compiled: the package compiles no translation unit
       (CMake wrote no compile database): summarise it with no nodes
@@ -130,6 +97,10 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         raise AnalysisError(
             f"unknown header mode '{header_mode}' (one of "
             f"{', '.join(HEADER_MODES)})")
+    try:
+        timeout = workers.unit_timeout()
+    except ValueError as e:
+        raise AnalysisError(str(e)) from None
     started = time.monotonic()
     path = os.path.abspath(path)
     db_path = os.path.join(build_base, COMPILE_DB_FILENAME)
@@ -157,11 +128,11 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
         precompiled_dir = store.precompiled_dir(build_base)
 
-    units, diagnostics = parse_units(
-        entries, package_path=path, resource_dir=resource_dir,
-        precompiled_dir=precompiled_dir,
+    units, diagnostics = workers.parse_units(
+        entries, unit_facts=_unit_facts, package_path=path,
+        resource_dir=resource_dir, precompiled_dir=precompiled_dir,
         cache=store.cache_dir(build_base) if use_cache else None,
-        jobs=jobs or default_jobs(), repair=repair,
+        jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
         wrappers=store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
@@ -366,62 +337,10 @@ def _inside(file, directory):
     return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
 
 
-def parse_units(entries, *, package_path, resource_dir, cache, jobs,
-                wrappers=(), precompiled_dir=None,
-                repair=REPAIR_WHEN_IT_PAYS):
-    """Parse the TUs in a thread pool; return (facts by file, messages).
-
-    :param repair: when the model mode repairs a unit (analyze_package)
-
-    :param precompiled_dir: where the model mode's precompiled standard
-      headers are kept (None: parse without them)
-    :param wrappers: the model.WrapperSummary of the workspace's other
-      packages, for the calls of functions whose body is out of sight
-    """
-    hidden = _unsafe_includes(entries, package_path)
-    # (the cached facts of a unit depend on its repairs too)
-    digest = f'{store.wrappers_digest(wrappers)}:{repair}'
-
-    def work(entry):
-        try:
-            check_stop()
-            return _unit_facts(
-                entry, package_path, resource_dir, cache, hidden,
-                wrappers=wrappers, wrappers_digest=digest,
-                precompiled_dir=precompiled_dir, repair=repair)
-        except Interrupted:
-            raise
-        except Exception as e:  # noqa: B902
-            # a bug of ours in one unit loses that unit, not the package
-            relative = os.path.relpath(entry.file, package_path)
-            return None, [f'{relative}: not analysed (internal error: '
-                          f'{type(e).__name__}: {e}); please report it']
-    units = {}
-    diagnostics = []
-    with ThreadPoolExecutor(max_workers=jobs) as pool:
-        for entry, (facts, messages) in zip(entries, pool.map(work, entries)):
-            if facts is not None:
-                units[entry.file] = facts
-            diagnostics.extend(messages)
-    return units, diagnostics
-
-
-def _unsafe_includes(entries, package_path):
-    """Files an include could make libclang open that it must not."""
-    search_dirs = sorted({d for e in entries for d in safe_files.include_dirs(
-        e.arguments, e.directory)})
-    return safe_files.unsafe_inputs(
-        [e.file for e in entries], search_dirs=search_dirs,
-        roots=[package_path] + search_dirs,
-        # colcon_rsia itself (its model headers): this module is in
-        # colcon_rsia/package
-        skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
-
-
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
                 wrappers=(), wrappers_digest=None, precompiled_dir=None,
                 repair=REPAIR_WHEN_IT_PAYS):
-    """Facts of one TU, from the cache when nothing it reads changed.
+    """Facts of one TU, parsed (in a worker process: see workers.py).
 
     :param hidden: {file: why} of files libclang is given as empty
     :param wrappers: the other packages' wrapper summaries (parse_units),
@@ -429,29 +348,12 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     """
     hidden = hidden or {}
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
-    try:
-        safe_files.check_file(entry.file, roots=[package_path])
-        safe_files.read_head(entry.file, 1)
-    except safe_files.UnsafeFileError as e:
-        return None, [f'{relative}: {e}']
-    except FileNotFoundError:
-        pass  # said below
-    except OSError as e:
-        return None, [f'{relative}: cannot be read ({e.strerror or e})']
-    cache_file = None
-    if cache is not None:
-        cache_file = unit_cache_file(cache, entry)
-        cached = read_cached_facts(cache_file, entry, wrappers_digest)
-        if cached is not None:
-            return cached, list(cached.diagnostics)
+    cache_file = None if cache is None else unit_cache_file(cache, entry)
     # imported here: libclang is needed only when something is parsed
     import clang.cindex as ci
     from colcon_rsia.frontend import cpp
     from colcon_rsia.frontend.clang_names import allow_undecodable_names
     allow_undecodable_names()
-    if not os.path.isfile(entry.file):
-        return None, [f'{relative}: source file missing (stale compile '
-                      'database?); skipped']
     from colcon_rsia.frontend.cpp.model_mode import precompiled
     from colcon_rsia.frontend.cpp.model_mode.recovery import parse_unit
     from colcon_rsia.frontend.cpp.wrappers import ExternalWrappers

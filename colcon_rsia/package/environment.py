@@ -50,10 +50,15 @@ _CHECKS = [
 
 def environment_problems():
     """One sentence for each of our variables that holds a bad value."""
+    # (imported here: the workers' module loads multiprocessing)
+    from colcon_rsia.package.workers import unit_timeout_problem
     problems = []
     size_problem = max_file_mb_problem()
     if size_problem:
         problems.append(size_problem)
+    timeout_problem = unit_timeout_problem()
+    if timeout_problem:
+        problems.append(timeout_problem)
     for name, good, expected in _CHECKS:
         value = os.environ.get(name)
         if value and not good(value):

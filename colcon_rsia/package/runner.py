@@ -23,12 +23,12 @@ from colcon_rsia.model import PackageSummary
 from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
-from colcon_rsia.package.analysis import check_stop
-from colcon_rsia.package.analysis import Interrupted
 from colcon_rsia.package.analysis import REPAIR_WHEN_IT_PAYS
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.problems import problem_to_text
 from colcon_rsia.package.problems import split_problem
+from colcon_rsia.package.workers import check_stop
+from colcon_rsia.package.workers import Interrupted
 from colcon_rsia.safe_files import display
 from colcon_rsia.safe_files import printable
 

@@ -59,14 +59,15 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                  '(default: when-it-pays)')
         parser.add_argument(
             '--jobs', type=positive_int, default=None, metavar='N',
-            help='Translation units parsed in parallel (default: the number '
-                 'of CPUs)')
+            help='Translation units parsed in parallel, each in a worker '
+                 'process (default: the number of CPUs)')
 
     def main(self, *, context):  # noqa: D102
         # imported here: every colcon call loads this module, only
         # `colcon rsia analyze` needs the analysis
         from colcon_rsia.package.coverage import total_line
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.package import workers
         from colcon_rsia.package.environment import environment_problems
         from colcon_rsia.package.runner import analyze
         from colcon_rsia.package.runner import build_base_problem
@@ -87,23 +88,29 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
         analysed = 0
         summaries = []
         failures = {}
-        for number, decorator in enumerate(decorators, start=1):
-            pkg = decorator.descriptor
-            print(printable(
-                f'[{number}/{len(decorators)}] analysing {pkg.name} ...'),
-                flush=True)
-            outcome = analyze(
-                name=pkg.name, package_type=pkg.type, path=str(pkg.path),
-                build_base=os.path.join(build_base, pkg.name),
-                jobs=args.jobs, header_mode=args.header_mode,
-                repair=args.repair,
-                workspace_package_dirs=package_dirs, without_build=True)
-            print(outcome.line(), flush=True)
-            analysed += outcome.summary is not None
-            if outcome.summary is not None:
-                summaries.append(outcome.summary)
-            elif outcome.error is not None:
-                failures[pkg.name] = outcome.error
+        try:
+            for number, decorator in enumerate(decorators, start=1):
+                pkg = decorator.descriptor
+                print(printable(
+                    f'[{number}/{len(decorators)}] analysing {pkg.name} ...'),
+                    flush=True)
+                outcome = analyze(
+                    name=pkg.name, package_type=pkg.type,
+                    path=str(pkg.path),
+                    build_base=os.path.join(build_base, pkg.name),
+                    jobs=args.jobs, header_mode=args.header_mode,
+                    repair=args.repair,
+                    workspace_package_dirs=package_dirs, without_build=True)
+                print(outcome.line(), flush=True)
+                analysed += outcome.summary is not None
+                if outcome.summary is not None:
+                    summaries.append(outcome.summary)
+                elif outcome.error is not None:
+                    failures[pkg.name] = outcome.error
+        finally:
+            # the worker processes parsed every package's units: they end
+            # with the command
+            workers.shutdown()
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
               f'{time.monotonic() - started:.1f}s', flush=True)
         if summaries or not failures:

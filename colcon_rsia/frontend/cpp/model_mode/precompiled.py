@@ -34,6 +34,12 @@ _lock = threading.Lock()
 # (directory, standard) -> the PCH's path, or None when none can be had
 _known = {}
 
+# called with the PCH's path before it is built, and with None after: a
+# worker process tells its parent (package/workers.py), so that a crash
+# of libclang while it writes the PCH (an abort on a full disk) is said to
+# be the PCH's, not the unit's
+on_build = None
+
 
 def precompiled_header(directory, source, arguments, resource_dir):
     """The PCH a unit's parse loads, or None (then it parses without one).
@@ -92,6 +98,25 @@ def _built(directory, standard, resource_dir):
         directory, f'std-{standard or "default"}-{digest}.pch')
     if os.path.isfile(path):
         return path
+    try:
+        # the worker processes of a run (and other runs) that need it
+        # wait for the first to build it, then load it
+        with safe_files.directory_lock(directory):
+            if os.path.isfile(path):
+                return path
+            if on_build is not None:
+                on_build(path)
+            try:
+                return _compile(path, standard, resource_dir, ci)
+            finally:
+                if on_build is not None:
+                    on_build(None)
+    except OSError:
+        return None
+
+
+def _compile(path, standard, resource_dir, ci):
+    """Compile the PCH to ``path``; return it, or None if it fails."""
     arguments = ['-x', 'c++-header']
     if standard:
         arguments.append(f'-std={standard}')

@@ -3,8 +3,8 @@
 """Writing the stand-ins of one unit into the stub directory.
 
 A stub directory may be shared by the translation units of a package,
-parsed in parallel: the generated files only ever grow, writes are atomic
-and serialised by a lock.
+parsed in parallel processes: the generated files only ever grow, writes
+are atomic and serialised by a lock on the directory (processes share it).
 """
 
 import os
@@ -68,8 +68,8 @@ def write_stand_ins(scanner, codes, stub_dir):
                 stubs.setdefault(stub_name, content)
             implicit.append(include)
     up_dirs = set()
-    with _lock:
-        os.makedirs(stub_dir, exist_ok=True)
+    # (the units of a package are parsed in several processes)
+    with _lock, safe_files.directory_lock(stub_dir):
         # stand-ins before the headers that include them: another TU of the
         # package may be parsing already
         for name, content in stubs.items():

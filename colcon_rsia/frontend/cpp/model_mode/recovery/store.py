@@ -15,6 +15,7 @@ import os
 import re
 import threading
 
+from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     is_declared
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
@@ -130,7 +131,8 @@ def _shareable(repair):
 def share_repairs(header, repairs):
     """Offer a unit's repairs to the units of its package parsed later."""
     path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
-    with _shared_lock:
+    # the units of a package are parsed in several processes
+    with _shared_lock, safe_files.directory_lock(os.path.dirname(path)):
         known = _read_shared(path)
         offered = {r for r in repairs if _shareable(r)}
         if not offered <= known:
