@@ -28,43 +28,23 @@ from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
-from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
-from colcon_rsia.frontend.cpp.strings import unquote
+from colcon_rsia.frontend.cpp.token_roles import CallFacts
+from colcon_rsia.frontend.cpp.token_text import brackets
+from colcon_rsia.frontend.cpp.token_text import CLOSING
+from colcon_rsia.frontend.cpp.token_text import joined_text
+from colcon_rsia.frontend.cpp.token_text import OPENING
+from colcon_rsia.frontend.cpp.token_text import seconds_of
+from colcon_rsia.frontend.cpp.token_text import string_literal
+from colcon_rsia.frontend.cpp.token_text import tokens_of
 
 CK = ci.CursorKind
 TOKENS = model.ORIGIN_TOKENS
 
-_OPENING = {'(': ')', '[': ']', '{': '}'}
-_CLOSING = {v: k for k, v in _OPENING.items()}
 # tokens after which a `[` starts a lambda, not a subscript
 _BEFORE_LAMBDA = frozenset({
     '(', ',', '=', '{', '}', ';', 'return', '?', ':', '&&', '||', '!'})
-# calls that store their argument in their object
-_STORING_METHODS = frozenset({
-    'push_back', 'emplace_back', 'reset', 'insert', 'emplace', 'push',
-    'push_front', 'emplace_front', 'assign'})
 _BIND = frozenset({'bind'})
-# seconds per unit of the chrono literals and of the duration types named
-# in a period: `100ms`, `std::chrono::milliseconds(100)`
-_CHRONO_SUFFIX = {'h': 3600.0, 'min': 60.0, 's': 1.0, 'ms': 1e-3,
-                  'us': 1e-6, 'ns': 1e-9}
-_DURATION_TYPES = {
-    'hours': 3600.0, 'minutes': 60.0, 'seconds': 1.0, 'milliseconds': 1e-3,
-    'microseconds': 1e-6, 'nanoseconds': 1e-9, 'Duration': 1.0,
-    'WallDuration': 1.0, 'from_seconds': 1.0, 'duration': 1.0}
-_NUMBER = re.compile(
-    r'^(\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)'
-    r'(h|min|s|ms|us|ns|[fFlLuU]*)$')
-
-
-@dataclass
-class _Token:
-    kind: str          # libclang's TokenKind name
-    text: str
-    line: int
-    column: int
-    offset: int
 
 
 @dataclass
@@ -84,160 +64,6 @@ class _Loop:
 
     body_start: int
     body_end: int
-
-
-def _tokens(tu, extent):
-    tokens = []
-    for token in tu.get_tokens(extent=extent):
-        kind = token.kind
-        if kind == ci.TokenKind.COMMENT:
-            continue
-        # (one location: each access of token.location asks libclang again)
-        location = token.location
-        tokens.append(_Token(kind.name, token.spelling, location.line,
-                             location.column, location.offset))
-    return tokens
-
-
-def _brackets(tokens):
-    """{index of an opening or closing bracket: index of its partner}."""
-    pairs = {}
-    stack = []
-    for i, token in enumerate(tokens):
-        if token.text in _OPENING:
-            stack.append(i)
-        elif token.text in _CLOSING:
-            # an unbalanced closing bracket (a macro's) closes nothing
-            while stack and tokens[stack[-1]].text != _CLOSING[token.text]:
-                stack.pop()
-            if stack:
-                opening = stack.pop()
-                pairs[opening] = i
-                pairs[i] = opening
-    return pairs
-
-
-def _text(tokens):
-    """Tokens joined as written, readably (a blank between two words)."""
-    text = ''
-    for token in tokens:
-        if text and (text[-1].isalnum() or text[-1] == '_') and \
-                (token.text[0].isalnum() or token.text[0] == '_'):
-            text += ' '
-        text += token.text
-    return text
-
-
-def _string_literal(tokens):
-    """The value of an argument that is string literals only, or None."""
-    if not tokens or any(t.kind != 'LITERAL' or '"' not in t.text
-                         for t in tokens):
-        return None
-    return ''.join(unquote(t.text) for t in tokens)
-
-
-def seconds_of(tokens):
-    """Seconds of a constant period written in tokens, or None.
-
-    Numbers and the four operations; a chrono literal (``100ms``); a
-    duration type around them (``std::chrono::milliseconds(100)``,
-    ``ros::Duration(0.1)``, ``Duration::from_seconds(0.5)``); a name the
-    tokens cannot value makes the period unknown.
-    """
-    texts = [t.text for t in tokens]
-    scale = 1.0
-    # Type(args) and Type<...>(args): the unit of the outermost duration
-    for i, text in enumerate(texts):
-        if text == '(' and i > 0:
-            name = texts[i - 1]
-            if name == '>':
-                depth = 0
-                for j in range(i - 1, -1, -1):
-                    depth += {'>': 1, '<': -1}.get(texts[j], 0)
-                    if depth == 0:
-                        name = texts[j - 1] if j else ''
-                        break
-            if name in _DURATION_TYPES:
-                scale = _DURATION_TYPES[name]
-                closing = _matching(texts, i)
-                if closing is None:
-                    return None
-                inner = texts[i + 1:closing]
-                # Duration(sec, nanosec)
-                if name in ('Duration', 'WallDuration') and ',' in inner:
-                    comma = inner.index(',')
-                    whole = _arithmetic(inner[:comma])
-                    nanos = _arithmetic(inner[comma + 1:])
-                    return None if whole is None or nanos is None \
-                        else whole + nanos * 1e-9
-                value = _arithmetic(inner)
-                return None if value is None else value * scale
-            break
-    return _arithmetic(texts)
-
-
-def _matching(texts, opening):
-    depth = 0
-    for i in range(opening, len(texts)):
-        depth += {'(': 1, ')': -1}.get(texts[i], 0)
-        if depth == 0:
-            return i
-    return None
-
-
-def _arithmetic(texts):
-    """Value of numbers joined by + - * / and parentheses, or None."""
-    position = 0
-
-    def number():
-        nonlocal position
-        if position >= len(texts):
-            raise ValueError
-        text = texts[position]
-        if text == '(':
-            position += 1
-            value = expression()
-            if position >= len(texts) or texts[position] != ')':
-                raise ValueError
-            position += 1
-            return value
-        if text in ('-', '+'):
-            position += 1
-            value = number()
-            return -value if text == '-' else value
-        match = _NUMBER.match(text)
-        if not match:
-            raise ValueError
-        position += 1
-        value = float(match.group(1))
-        return value * _CHRONO_SUFFIX.get(match.group(2), 1.0)
-
-    def term():
-        nonlocal position
-        value = number()
-        while position < len(texts) and texts[position] in ('*', '/'):
-            operator = texts[position]
-            position += 1
-            right = number()
-            if operator == '/' and right == 0:
-                raise ValueError
-            value = value * right if operator == '*' else value / right
-        return value
-
-    def expression():
-        nonlocal position
-        value = term()
-        while position < len(texts) and texts[position] in ('+', '-'):
-            operator = texts[position]
-            position += 1
-            right = term()
-            value = value + right if operator == '+' else value - right
-        return value
-    try:
-        value = expression()
-    except ValueError:
-        return None
-    return value if position == len(texts) else None
 
 
 def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls,
@@ -298,7 +124,7 @@ def _may_have_lost(cursor, errors):
         len(list(body.get_tokens())) > 2
 
 
-class _Reader:
+class _Reader(CallFacts):
     """Reads function bodies as tokens; see :func:`recover_facts`."""
 
     def __init__(  # noqa: D107
@@ -343,13 +169,13 @@ class _Reader:
                      if c.kind == CK.COMPOUND_STMT), None)
         if body is None or cursor.location.file is None:
             return
-        tokens = _tokens(self.tu, cursor.extent)
+        tokens = tokens_of(self.tu, cursor.extent)
         start = next((i for i, t in enumerate(tokens)
                       if t.offset == body.extent.start.offset), None)
         if start is None:
             return  # a body made by a macro: no tokens of its own here
         self.tokens = tokens
-        self.pairs = _brackets(tokens)
+        self.pairs = brackets(tokens)
         parent = cursor.semantic_parent
         locals_ = {}
         for current in walk_preorder(cursor):
@@ -436,7 +262,7 @@ class _Reader:
             return min(j, end - 1)
         j = i
         while j < end and tokens[j].text != ';':
-            j = self.pairs.get(j, j) + 1 if tokens[j].text in _OPENING \
+            j = self.pairs.get(j, j) + 1 if tokens[j].text in OPENING \
                 else j + 1
         return min(j, end - 1)
 
@@ -580,9 +406,9 @@ class _Reader:
                 depth -= 2
             elif text in (';', '{', '}', '&&', '||'):
                 return None
-            elif text in _OPENING:
+            elif text in OPENING:
                 i = self.pairs.get(i, i)
-            elif text in _CLOSING:
+            elif text in CLOSING:
                 return None
             if depth <= 0:
                 return i if depth == 0 else None
@@ -659,7 +485,7 @@ class _Reader:
             return
         if name in ros_api.FORWARDING_FACTORY_NAMES and template is not None:
             # make_shared<C>(...): C's constructor
-            made = _text(tokens[template[0]:template[1]]).split('<')[0]
+            made = joined_text(tokens[template[0]:template[1]]).split('<')[0]
             for constructor in self._constructors(made):
                 self._call_edge(ctx, constructor, start)
             return
@@ -722,7 +548,7 @@ class _Reader:
         declaration = self._object_declaration(object_range)
         if declaration is None:
             return None
-        written = _text(_tokens(self.tu, declaration.extent))
+        written = joined_text(tokens_of(self.tu, declaration.extent))
         written = written.split(declaration.spelling)[0] or written
         for candidate in ros_api.methods_named(name):
             owner = candidate.rsplit('::', 2)[-2]
@@ -738,7 +564,7 @@ class _Reader:
         i = start
         while i < closing:
             text = tokens[i].text
-            if text in _OPENING:
+            if text in OPENING:
                 i = self.pairs.get(i, i) + 1
                 continue
             if text == '<' and i > 0 and tokens[i - 1].kind == 'IDENTIFIER':
@@ -782,7 +608,7 @@ class _Reader:
         if argument is None:
             return None, False, None
         tokens = self.tokens[argument[0]:argument[1]]
-        literal = _string_literal(tokens)
+        literal = string_literal(tokens)
         if literal is not None:
             return literal, True, None
         names = [t for t in tokens if t.kind == 'IDENTIFIER']
@@ -791,48 +617,7 @@ class _Reader:
                 t.kind == 'IDENTIFIER' or t.text in ('this', '->', '.')
                 for t in tokens):
             handle = self._handle(names[0].text)[0]
-        return (_text(tokens) or None), False, handle
-
-    def _msg_type(self, arguments, callback_declaration=None):
-        api = self._current['api']
-        if api.msg_type:
-            return self._table_msg_type(api.msg_type)
-        if api.type_name_arg is not None:
-            written, literal, _ = self._topic(
-                self._argument(arguments, api.type_name_arg))
-            if literal and re.fullmatch(r'\w+/\w+/\w+', written or ''):
-                return written.replace('/', '::')
-        template = self._current['template']
-        if template is not None:
-            tokens = self.tokens[template[0]:template[1]]
-            depth = 0
-            first = []
-            for token in tokens:
-                depth += {'<': 1, '>': -1, '>>': -2}.get(token.text, 0)
-                if token.text == ',' and depth == 0:
-                    break
-                first.append(token)
-            return normalize_msg_type(_text(first))
-        return self._parameter_type(callback_declaration)
-
-    def _table_msg_type(self, msg_type):
-        if not msg_type or not self.ros2 or '::msg::' in msg_type:
-            return msg_type
-        package, _, name = msg_type.partition('::')
-        return f'{package}::msg::{name}'
-
-    def _parameter_type(self, declaration):
-        """The message type of a callback's first parameter, as written."""
-        if declaration is None:
-            return None
-        for child in declaration.get_children():
-            if child.kind != CK.PARM_DECL:
-                continue
-            written = [t for t in _tokens(self.tu, child.extent)
-                       if t.text != child.spelling]
-            return normalize_msg_type(_text(written)) or \
-                normalize_msg_type(child.type.spelling)
-        return None
+        return (joined_text(tokens) or None), False, handle
 
     def _callback(self, argument, ctx):
         """(function id, declaration cursor) of a callback argument."""
@@ -952,191 +737,6 @@ class _Reader:
 
     def _object_declaration(self, object_range):
         return self._object_name(object_range)[1]
-
-    def _target(self):
-        """(id, name) of the variable or member a call's result goes to."""
-        tokens = self.tokens
-        start = self._current['start']
-        target = self._current['target']
-        j = start - 1
-        if j >= 0 and tokens[j].text == '=':
-            k = j - 1
-            while k >= 0 and tokens[k].text == ']' and k in self.pairs:
-                k = self.pairs[k] - 1
-            if k >= 0 and tokens[k].kind == 'IDENTIFIER':
-                return self._handle(tokens[k].text)[0], tokens[k].text
-            return None, None
-        if j >= 1 and tokens[j].text in ('(', '{') and \
-                tokens[j - 1].kind == 'IDENTIFIER':
-            name = tokens[j - 1].text
-            if name in _STORING_METHODS:
-                handle, _ = self._object_name(self._object(j - 1))
-                names = [t for t in tokens[(self._object(j - 1) or (j, j))[0]:
-                                           j - 2] if t.kind == 'IDENTIFIER']
-                return handle, names[-1].text if names else None
-            if self._declares(j - 1) or (target and target[0] == j - 1):
-                return self._handle(name)[0], name
-        if target is not None and target[0] == start - 2:
-            return self._handle(target[1])[0], target[1]
-        return None, None
-
-    def _namespace(self):
-        """The NodeHandle (or namespace marker) a create call was made on."""
-        object_range = self._current['object']
-        if object_range is None:
-            return None
-        texts = [t.text for t in self.tokens[object_range[0]:object_range[1]]]
-        for text in texts:
-            api = ros_api.lookup_call(f'nodelet::Nodelet::{text}')
-            if api is not None and api.role == ros_api.PRIVATE_HANDLE:
-                return '~'
-            if api is not None and api.role == ros_api.PUBLIC_HANDLE:
-                return ''
-        return self._object_handle(object_range)
-
-    # --- facts -------------------------------------------------------------
-
-    def _here(self):
-        return self._location(self._current['start'])
-
-    def _is_recorded(self, role):
-        return self._here() in self.recorded[role]
-
-    def _endpoint(self, arguments, ctx, callback_declaration=None):
-        api = self._current['api']
-        topic, literal, topic_handle = self._topic(
-            self._argument(arguments, api.name_arg))
-        handle, handle_name = self._target()
-        return dict(
-            function=ctx.function, api=ros_api.api_label(self._current['name']),
-            topic=topic, topic_is_literal=literal,
-            msg_type=self._msg_type(arguments, callback_declaration),
-            handle=handle, location=self._here(), nh=self._namespace(),
-            topic_handle=topic_handle, origin=TOKENS), handle_name
-
-    def _publisher(self, arguments, ctx):
-        if self._is_recorded('publisher'):
-            return
-        common, handle_name = self._endpoint(arguments, ctx)
-        if common['topic'] is None:
-            return  # a constructor without a name: init() gives it later
-        status_callbacks = [
-            callback for position in self._current['api'].status_callback_args
-            for callback in [self._callback(
-                self._argument(arguments, position), ctx)[0]] if callback]
-        self.facts.publishers.append(model.PublisherFact(
-            handle_name=handle_name, status_callbacks=status_callbacks,
-            **common))
-
-    def _subscriber(self, arguments, ctx):
-        if self._is_recorded('subscriber'):
-            return
-        api = self._current['api']
-        callback, declaration = self._callback(
-            self._argument(arguments, api.callback_arg), ctx) \
-            if api.callback_arg is not None else (None, None)
-        common, _ = self._endpoint(arguments, ctx, declaration)
-        if common['topic'] is None:
-            return
-        self.facts.subscribers.append(model.SubscriberFact(
-            callback=callback, **common))
-
-    def _timer(self, arguments, ctx):
-        if self._is_recorded('timer'):
-            return
-        api = self._current['api']
-        callback, _ = self._callback(
-            self._argument(arguments, api.callback_arg), ctx)
-        period = self._argument(arguments, api.period_arg)
-        tokens = self.tokens[period[0]:period[1]] if period else []
-        seconds = seconds_of(tokens)
-        if seconds is not None:
-            seconds *= api.period_unit
-        self.facts.timers.append(model.TimerFact(
-            function=ctx.function, api=ros_api.api_label(self._current['name']),
-            callback=callback, period=_text(tokens),
-            rate_hz=recorder.rate_of_period(seconds), location=self._here(),
-            origin=TOKENS))
-
-    def _service(self, arguments, ctx):
-        if self._is_recorded('service'):
-            return
-        api = self._current['api']
-        name, _, _ = self._topic(self._argument(arguments, api.name_arg))
-        callback, _ = self._callback(
-            self._argument(arguments, api.callback_arg), ctx)
-        self.facts.services.append(model.ServiceFact(
-            function=ctx.function, api=self._current['name'], name=name,
-            callback=callback, location=self._here()))
-
-    def _publish(self, arguments, ctx):
-        if self._is_recorded('publish'):
-            return
-        self.facts.publish_sites.append(model.PublishSite(
-            function=ctx.function, api=self._current['name'],
-            handle=self._object_handle(self._current['object']),
-            location=self._here(), loops=ctx.loop_ids(), origin=TOKENS))
-
-    def _node_name(self, arguments, ctx):
-        api = self._current['api']
-        name, literal, _ = self._topic(self._argument(arguments, api.name_arg))
-        if not literal or any(f.location == self._here()
-                              for f in self.facts.node_names):
-            return
-        self.facts.node_names.append(model.NodeNameFact(
-            function=ctx.function, name=name, namespace=None,
-            location=self._here()))
-
-    def _rate_type(self, i):
-        """Whether the declaration at `i` is of an adaptive-sleep class."""
-        j = i - 1
-        while j >= 0 and self.tokens[j].text in ('*', '&'):
-            j -= 1
-        if j < 0 or self.tokens[j].kind != 'IDENTIFIER':
-            return False
-        api = ros_api.lookup_call(
-            self._type_before(j) + '::' + self.tokens[j].text)
-        return api is not None and api.role == ros_api.RATE
-
-    def _type_before(self, j):
-        qualifier = self._qualifier(j)
-        name = self.tokens[j].text
-        return f'{qualifier}::{name}' if qualifier else name
-
-    def _rate(self, i, arguments, ctx):
-        """``ros::Rate r(10);``: a rate object and its rate."""
-        location = self._location(i)
-        handle, _ = self._handle(self.tokens[i].text) if self._declares(i) \
-            else self._target()
-        if handle is None or handle in self.rate_handles:
-            return
-        tokens = self.tokens[arguments[0][0]:arguments[0][1]] \
-            if arguments else []
-        hz = _arithmetic([t.text for t in tokens])
-        self.rate_handles.add(handle)
-        self.facts.rates.append(model.RateObject(
-            handle=handle, rate_hz=recorder.round_rate(hz),
-            expression=_text(tokens), location=location))
-
-    def _rate_sleep(self, arguments, ctx):
-        i = self._current['index']
-        handle = self._object_handle(self._current['object'])
-
-        def continue_before(loop):
-            return any(t.text == 'continue'
-                       for t in self.tokens[loop.body_start:i])
-        found = recorder.paced_loop(
-            ctx, continue_before=continue_before,
-            made_in_loop=lambda loop: False)
-        if found is None:
-            return
-        loop_id, loop = found
-        if any(p.loop == loop_id for p in self.facts.paced_loops):
-            return
-        recorder.record_paced_loop(
-            self.facts, ctx, loop_id=loop_id, clock=handle,
-            loop_location=self._location(loop.body_start),
-            sleep_location=self._location(i))
 
     def _package_call(self, i, start, object_range, qualifier, ctx):
         """A call of one of the unit's functions, by its name."""
