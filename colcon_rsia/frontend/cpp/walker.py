@@ -29,6 +29,8 @@ from colcon_rsia.frontend.cpp import roles
 from colcon_rsia.frontend.cpp import strings
 from colcon_rsia.frontend.cpp import token_facts
 from colcon_rsia.frontend.cpp import wrappers
+from colcon_rsia.frontend.cpp.callbacks import Callbacks
+from colcon_rsia.frontend.cpp.callbacks import is_callable
 from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import aliased_class
@@ -40,7 +42,6 @@ from colcon_rsia.frontend.cpp.cursors import continue_before
 from colcon_rsia.frontend.cpp.cursors import declared_in
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
-from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
@@ -54,7 +55,6 @@ from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
 from colcon_rsia.frontend.cpp.cursors import made_class
 from colcon_rsia.frontend.cpp.cursors import overload_candidate
-from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import repaired_call_name
@@ -103,10 +103,7 @@ def extract_facts(tu, *, package_path, source, external_wrappers=None):
     return walker.facts
 
 
-BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
-
-
-class _Walker:
+class _Walker(Callbacks):
     """Collects the facts of one TU; see :func:`extract_facts`."""
 
     def __init__(self, package_path, facts, external_wrappers=None):
@@ -238,27 +235,6 @@ class _Walker:
         self._definitions.clear()
         self._classes.clear()
 
-    def _resolve_stored_callbacks(self):
-        """Replace ``callable:<usr>`` callbacks by what was stored there.
-
-        A callback kept in a ``std::function`` member is registered by
-        naming the member; the function is what the code assigned to it
-        (anywhere in the TU, before or after the registration).
-        """
-        def resolve(callback):
-            if callback and callback.startswith(CALLABLE_PREFIX):
-                stored = self._callables.get(callback[len(CALLABLE_PREFIX):])
-                return sorted(stored)[0] if stored else None
-            return callback
-        for fact in (self.facts.subscribers + self.facts.timers +
-                     self.facts.services + self.facts.registrations):
-            fact.callback = resolve(fact.callback)
-        for fact in self.facts.actions:
-            fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
-        for fact in self.facts.publishers:
-            fact.status_callbacks = [
-                c for c in map(resolve, fact.status_callbacks) if c]
-
     def _declaration(self, cursor):
         try:
             kind = cursor.kind
@@ -338,7 +314,7 @@ class _Walker:
         self.string_variables.assignment(member, expression)
         if ctx is None:
             return
-        if _is_callable(member):
+        if is_callable(member):
             self._store_callable(member, expression)
         self._visit(expression, ctx, [_MemberInit(member)])
 
@@ -424,7 +400,7 @@ class _Walker:
             init = initializer(cursor)
             if init is not None and init.kind == CK.LAMBDA_EXPR:
                 self._lambdas_in_variables.add(self._lambda_id(init))
-            elif init is not None and _is_callable(cursor):
+            elif init is not None and is_callable(cursor):
                 self._store_callable(cursor, init)
         children = child_cursors(cursor)
         stack.append(cursor)
@@ -515,13 +491,6 @@ class _Walker:
         self._add_call(ctx, template_member(ref).get_usr(), cursor,
                        kind='ref')
 
-    def _store_callable(self, variable, expression, consume=True):
-        """Remember what a std::function variable/field is set to."""
-        callback, _ = self.resolve_callback(expression, consume=consume)
-        if callback and not callback.startswith(CALLABLE_PREFIX):
-            self._callables.setdefault(variable.get_usr(), set()).add(
-                callback)
-
     def _call(self, cursor, ctx, stack):
         ref = cursor.referenced
         if ref is None:
@@ -533,7 +502,7 @@ class _Walker:
         if cursor.spelling == 'operator=':
             children = child_cursors(cursor)
             target = first_handle(children[0]) if children else None
-            if target is not None and _is_callable(target):
+            if target is not None and is_callable(target):
                 self._store_callable(target, children[-1])
             elif target is not None and len(children) > 1:
                 self.string_variables.assignment(target, children[-1])
@@ -651,26 +620,6 @@ class _Walker:
                              caller=ctx.function)
         self._bind_parameters(callee, arguments)
 
-    def _bind_parameters(self, callee, arguments):
-        """A package function's parameters hold what its callers pass.
-
-        A helper that makes a subscription from its parameters
-        (``TwistSubscriber(node, "cmd_vel", qos, callback)``) gets its
-        topic as a string variable set by the callers (one literal in
-        every call of the unit: that name) and its callback as a stored
-        callable; the argument stays a plain reference of the caller.
-        """
-        definition = callee.get_definition() or callee
-        params = [c for c in definition.get_children()
-                  if c.kind == CK.PARM_DECL]
-        for param, argument in zip(params, arguments):
-            if not is_written(argument):
-                continue
-            if is_string(param):
-                self.string_variables.assignment(param, argument)
-            elif is_callable_argument(argument):
-                self._store_callable(param, argument, consume=False)
-
     def _forwarded_constructor(self, cursor):
         """make_shared<X>(args) reads like X's constructor.
 
@@ -728,87 +677,6 @@ class _Walker:
             argument = arguments[position]
             return argument if is_written(argument) else None
         return None
-
-    def _bind_arguments(self, callee, arguments, first_index=0,
-                        caller=None):
-        """Record what a call passes to a package function's parameters.
-
-        Handles, and string literals (a node name passed to a base class).
-        """
-        for index, argument in enumerate(arguments, start=first_index):
-            if caller is not None and is_string(argument):
-                value, literal = self.topic(argument)
-                if literal:
-                    self.facts.string_arguments.append(model.StringArgument(
-                        caller=caller, callee=callee, index=index,
-                        value=value))
-                    continue
-            handle = plain_handle(argument)
-            if handle is not None and self.in_package(handle):
-                self.facts.bindings.append(model.ParamBinding(
-                    callee=callee, index=index, handle=handle.get_usr()))
-
-    def _bound_arguments(self, argument):
-        """Handles bound by boost::bind / std::bind to the callback."""
-        for current in [argument] + list(walk_preorder(
-                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
-            if current.kind != CK.CALL_EXPR or current.referenced is None or \
-                    qualified_name(current.referenced) not in BIND_FUNCTIONS:
-                continue
-            bound = list(current.get_arguments())
-            if not bound:
-                return
-            target = first_function(bound[0])
-            if target is None or not self.in_package(target):
-                return
-            rest = bound[1:]
-            # a bound method's first argument is the object, not a parameter
-            if target.kind == CK.CXX_METHOD and not target.is_static_method():
-                rest = rest[1:]
-            self._bind_arguments(template_member(target).get_usr(), rest)
-            return
-
-    def resolve_callback(self, argument, consume=True):
-        """Return (function id, declaration cursor) of a callback argument.
-
-        With `consume`, the argument is registered with an API: it is a
-        root of its own, not something the calling function calls.
-        """
-        if argument is None:
-            return None, None
-        self._bound_arguments(argument)
-        for current in [argument] + list(walk_preorder(
-                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
-            if current.kind == CK.LAMBDA_EXPR:
-                lid = self._lambda_id(current)
-                if consume:
-                    self._consumed.add(self.key(current))
-                    self._registered.add(lid)
-                return lid, current
-            if current.kind not in REF_KINDS:
-                continue
-            ref = current.referenced
-            if ref is None:
-                continue
-            if ref.kind in FUNCTION_KINDS and self.in_package(ref):
-                ref = template_member(ref)
-                if consume:
-                    self._consumed.add(self.key(current))
-                    self._registered.add(ref.get_usr())
-                return ref.get_usr(), ref
-            if ref.kind == CK.VAR_DECL:
-                for child in ref.get_children():
-                    if child.kind == CK.LAMBDA_EXPR:
-                        lid = self._lambda_id(child)
-                        self._registered.add(lid)
-                        return lid, child
-            if ref.kind in HANDLE_KINDS and _is_callable(ref) or \
-                    ref.kind == CK.PARM_DECL:
-                # resolved at the end of the walk: see
-                # _resolve_stored_callbacks (a parameter: what the callers
-                # pass, see _bind_parameters)
-                return CALLABLE_PREFIX + ref.get_usr(), None
-        return None, None
 
     def target(self, cursor, stack):
         """The variable/field a created object is stored in, or None."""
@@ -873,12 +741,3 @@ def _is_static_factory(function):
     """
     return function.kind == CK.CXX_METHOD and function.is_static_method() \
         and function.spelling in ros_api.FORWARDING_FACTORY_NAMES
-
-
-CALLABLE_PREFIX = 'callable:'
-_CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
-
-
-def _is_callable(cursor):
-    """A variable/field holding a callable: std::function, bind results."""
-    return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))

@@ -45,6 +45,31 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TEMPLATE
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TEMPLATE_USE
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TYPE
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import VALUE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import ARGUMENT_NOT_VALUE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import ARRAY_TYPE_ARGUMENT
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import CALLED_NON_FUNCTION
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import DECLARATION_EXPECTED
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import HASH_REDEFINED
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import IN_CLASS
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import IN_NAMESPACE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import IN_STD
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import INCOMPLETE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import LITERAL_OPERATOR
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import MACRO_STATEMENT
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import NAMESPACE_ALIAS
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import NAMESPACE_AS_VALUE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import NO_MATCHING_MEMBER
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import NOT_A_SCOPE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import NOT_A_TEMPLATE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import OVERRIDE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import RESERVED_ATTRIBUTE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import SPECIALIZATION
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import TYPE_IN_CLASS
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import UNDECLARED
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import UNDEFINED_IN_STD
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import UNDEFINED_MACRO
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import UNKNOWN_TEMPLATE
+from colcon_rsia.frontend.cpp.model_mode.recovery.messages import UNKNOWN_TYPE
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import after_name
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import by_qualified_use
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import by_use
@@ -59,149 +84,10 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.naming import QUOTED_NAME
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import template_shape
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import template_use
 from colcon_rsia.frontend.cpp.model_mode.recovery.naming import uses_of_namespace
+from colcon_rsia.frontend.cpp.model_mode.recovery.std_headers import \
+    STD_HEADER_OF
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
-
-_UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'")
-_UNKNOWN_TYPE = re.compile(r"^unknown type name '(\w+)'")
-_UNKNOWN_TEMPLATE = re.compile(
-    r"^unknown template name '(\w+)'|^no template named '(\w+)'$")
-# `QFont("Roboto", 10)` after `QFont::Bold` made QFont a namespace
-_NAMESPACE_AS_VALUE = re.compile(
-    r"^unexpected namespace name '(\w+)': expected expression$")
-_IN_NAMESPACE = re.compile(
-    r"^no (type|template|member|class) named '(\w+)' in namespace '([\w:]+)'")
-_NOT_NAMESPACE = re.compile(
-    r"^use of undeclared identifier '(\w+)'|^expected namespace name")
-_IN_STD = re.compile(
-    r"^no (?:type|template|member) named '(\w+)' in namespace "
-    r"'std(?:::(?P<inner>\w+))?'")
-# `std::ifstream f(path);` where only <iosfwd> came in on the way
-_UNDEFINED_IN_STD = re.compile(
-    r"^implicit instantiation of undefined template 'std::(\w+)<")
-# (of a class template's specialisation too: 'Eigen::Matrix<double, 3, 3>')
-_IN_CLASS = re.compile(r"^no member named '(\w+)' in '([\w:]+)(<.*>)?'$")
-# (a field the catch-all base has, `type`, is no type)
-_TYPE_IN_CLASS = re.compile(
-    r'^(?:no type named|typename specifier refers to non-type member) '
-    r"'(\w+)' in '([\w:]+)(<.*>)?'$")
-# the error of a value called (see _MACRO_STATEMENT below)
-_CALLED_NON_FUNCTION = re.compile(
-    r"^called object type '.*' is not a function or function pointer$")
-# a name as the element type of an array among template arguments
-_ARRAY_TYPE_ARGUMENT = re.compile(
-    r'[<,]\s*((?:::)?[A-Za-z_]\w*(?:::[A-Za-z_]\w*)*)\s*\[\s*$')
-# a name reserved to the implementation, `__name__`, at an error: an
-# attribute macro of a compiler we are not (and whether it takes arguments)
-_RESERVED_ATTRIBUTE = re.compile(r'(__[A-Za-z]\w*__)(?!\w)(\s*\()?')
-_INCOMPLETE = re.compile(
-    r"incomplete type '[^']*' \(aka '(?:struct |class )?([\w:]+)'\)|"
-    r'^(?:member access into|variable has|field has) incomplete type '
-    r"'(?:struct |class )?([\w:]+)'$")
-_ARGUMENT_NOT_VALUE = re.compile(
-    r"^'\w+' does not refer to a value|"
-    r"^expected '\(' for function-style cast")
-_UNDEFINED_MACRO = re.compile(r"^function-like macro '(\w+)' is not defined")
-# `template <> IdType customRegister(...)` of a library the model lacks
-_SPECIALIZATION = re.compile(
-    r'^no function template matches function template specialization '
-    r"'(\w+)'$")
-# a call of a method no overload of which matches the arguments
-_NO_MATCHING_MEMBER = re.compile(
-    r"^no matching member function for call to '(\w+)'$")
-# `obj.elementsAs<T>()` of a member repaired as a value
-_NOT_A_TEMPLATE = re.compile(
-    r"^'(\w+)' does not name a template but is followed by template "
-    'arguments')
-# `::gen::ParamListener` of a generated header: the scope is unknown
-_NOT_A_SCOPE = re.compile(
-    r"^'(\w+)' is not a class, namespace, or enumeration$|"
-    r"^no (member|type|template) named '(\w+)' in the global namespace$")
-# a line that is a call of an ALL_CAPS name (with an underscore: not a
-# class called FOO) and what clang says of it when the name is undefined
-_MACRO_STATEMENT = re.compile(r'^\s*([A-Z][A-Z0-9]*_[A-Z0-9_]*)\s*\(')
-_DECLARATION_EXPECTED = re.compile(
-    r'^expected function body after function declarator$|'
-    r'^(?:C\+\+ requires a type specifier|a type specifier is required) '
-    r'for all declarations$')
-_OVERRIDE = re.compile(
-    r"only virtual member functions can be marked '(?:override|final)'|"
-    r"marked '(?:override|final)' but does not override")
-_NAMESPACE_ALIAS = re.compile(
-    r'\bnamespace\s+\w+\s*=\s*(?:::)?([A-Za-z_][\w:]*)|'
-    r'\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)')
-# fmt's `"name"_a = value` without fmt: its literal operator
-_LITERAL = re.compile('^no matching literal operator for call to '
-                      r"'operator\"\"(\w+)'")
-# `template <> struct hash<lanelet::routing::LaneletPath>` of the package,
-# for a class a repair declared hashable
-_HASH_REDEFINED = re.compile(r"^redefinition of 'hash<(?:::)?([\w:]+)>'$")
-
-# what a name of std:: needs (the model includes the costly ones only when
-# the sources name them; a name reached otherwise is repaired here)
-STD_HEADER_OF = {
-    name: header for header, names in {
-        'algorithm': 'sort stable_sort find find_if count count_if copy '
-                     'copy_if fill transform remove remove_if replace '
-                     'reverse rotate unique min max minmax min_element '
-                     'max_element clamp all_of any_of none_of for_each '
-                     'lower_bound upper_bound binary_search equal search '
-                     'partition nth_element',
-        'cmath': 'sqrt cbrt hypot pow exp log log10 log2 sin cos tan asin '
-                 'acos atan atan2 sinh cosh tanh fabs abs floor ceil round '
-                 'lround trunc fmod remainder copysign isnan isinf isfinite '
-                 'fmin fmax signbit',
-        'numeric': 'accumulate iota inner_product partial_sum reduce gcd lcm '
-                   'adjacent_difference transform_reduce',
-        'memory': 'shared_ptr unique_ptr weak_ptr make_shared make_unique '
-                  'enable_shared_from_this static_pointer_cast '
-                  'dynamic_pointer_cast',
-        'functional': 'function bind placeholders ref cref hash invoke '
-                      'mem_fn reference_wrapper',
-        'sstream': 'stringstream ostringstream istringstream '
-                   'basic_stringstream basic_ostringstream '
-                   'basic_istringstream',
-        'iostream': 'cout cerr clog cin',
-        'iomanip': 'setprecision setw setfill put_time quoted',
-        'limits': 'numeric_limits',
-        'mutex': 'mutex recursive_mutex timed_mutex lock_guard unique_lock '
-                 'scoped_lock call_once once_flag',
-        'shared_mutex': 'shared_mutex shared_lock',
-        'condition_variable': 'condition_variable',
-        'thread': 'thread this_thread',
-        'atomic': 'atomic atomic_bool atomic_int',
-        'chrono': 'chrono',
-        'optional': 'optional nullopt make_optional',
-        'variant': 'variant visit holds_alternative monostate',
-        'tuple': 'tuple make_tuple tie get',
-        'utility': 'pair make_pair move forward swap exchange',
-        'map': 'map multimap',
-        'unordered_map': 'unordered_map',
-        'set': 'set multiset',
-        'unordered_set': 'unordered_set',
-        'list': 'list',
-        'deque': 'deque',
-        'queue': 'queue priority_queue',
-        'stack': 'stack',
-        'array': 'array',
-        'string_view': 'string_view',
-        'regex': 'regex regex_match regex_search regex_replace smatch',
-        'random': 'mt19937 random_device uniform_real_distribution '
-                  'uniform_int_distribution normal_distribution',
-        'future': 'future promise async',
-        'filesystem': 'filesystem',
-        'fstream': 'ifstream ofstream fstream basic_ifstream '
-                   'basic_ofstream basic_fstream',
-        'iterator': 'back_inserter inserter distance advance next prev '
-                    'begin end',
-        'stdexcept': 'runtime_error logic_error invalid_argument '
-                     'out_of_range',
-        'cstring': 'memcpy memset strlen strcmp strncpy',
-        'cstdlib': 'exit getenv abort',
-        'complex': 'complex',
-        'bitset': 'bitset',
-        'numbers': 'numbers',
-    }.items() for name in names.split()}
 
 
 @dataclass
@@ -277,12 +163,12 @@ def _reserved_attribute(seen):
     An attribute macro of a compiler we are not (`void __device__ f()`,
     `__launch_bounds__(256)`), read as a type or as a variable of type void.
     """
-    match = _RESERVED_ATTRIBUTE.match(seen.text, max(0, seen.column - 1))
+    match = RESERVED_ATTRIBUTE.match(seen.text, max(0, seen.column - 1))
     return {(MACRO_VOID if match.group(2) else MACRO_EMPTY, match.group(1))}
 
 
 def _reserved_attribute_applies(seen):
-    match = _RESERVED_ATTRIBUTE.match(seen.text, max(0, seen.column - 1))
+    match = RESERVED_ATTRIBUTE.match(seen.text, max(0, seen.column - 1))
     return match is not None and \
         seen.subject in (None, 'void', match.group(1))
 
@@ -312,7 +198,7 @@ def _attribute_macro(seen):
 
 def _undeclared(seen):
     """An undeclared name: a kind from how the code uses it."""
-    written = _UNDECLARED.match(seen.message).group(1)
+    written = UNDECLARED.match(seen.message).group(1)
     kind, name = by_use(written, seen.after, unqualified=True,
                         texts=seen.texts)
     if written not in seen.text and not CAMEL.match(name):
@@ -340,7 +226,7 @@ def _undeclared(seen):
 
 def _unknown_type(seen):
     """An unknown type name; an ALL_CAPS one is a macro at declaration level."""
-    name = qualified(_UNKNOWN_TYPE.match(seen.message).group(1), seen.text,
+    name = qualified(UNKNOWN_TYPE.match(seen.message).group(1), seen.text,
                      seen.column)
     if ALL_CAPS.match(name) and '_' in name:
         # FOO_EXPORT class X, FOO_CLASS_EXPORT(X)
@@ -351,7 +237,7 @@ def _unknown_type(seen):
 
 
 def _unknown_template(seen):
-    match = _UNKNOWN_TEMPLATE.match(seen.message)
+    match = UNKNOWN_TEMPLATE.match(seen.message)
     return {(template_kind(seen.after), qualified(
         match.group(1) or match.group(2), seen.text, seen.column))}
 
@@ -359,14 +245,14 @@ def _unknown_template(seen):
 def _namespace_as_value(seen):
     """A class whose constants made it look like a namespace."""
     # the names repaired inside it become its members
-    return {(TYPE, qualified(_NAMESPACE_AS_VALUE.match(seen.message).group(1),
+    return {(TYPE, qualified(NAMESPACE_AS_VALUE.match(seen.message).group(1),
                              seen.text, seen.column))}
 
 
 def _standard_header(seen):
     """A standard name the real headers would have brought in on the way."""
-    match = _IN_STD.match(seen.message) or \
-        _UNDEFINED_IN_STD.match(seen.message)
+    match = IN_STD.match(seen.message) or \
+        UNDEFINED_IN_STD.match(seen.message)
     # `std::filesystem::path`: the nested namespace names its header too
     for name in (match.group(1), match.groupdict().get('inner')):
         header = STD_HEADER_OF.get(name or '')
@@ -377,7 +263,7 @@ def _standard_header(seen):
 
 def _incomplete(seen):
     """A class only forward-declared: its definition is generated."""
-    match = _INCOMPLETE.search(seen.message)
+    match = INCOMPLETE.search(seen.message)
     name = match.group(1) or match.group(2)
     if ALL_CAPS.match(name) and '_' in name:
         # `struct FOO_ALIGN16 Point {`: an attribute's macro
@@ -394,7 +280,7 @@ def _model_member(class_name, member, seen):
     elif CAMEL.match(member) and (
             names_nested_type(seen.after, seen.before) or
             seen.after.startswith('::')) or \
-            _TYPE_IN_CLASS.match(seen.message):
+            TYPE_IN_CLASS.match(seen.message):
         shape = overlay.TYPE_SHAPE
     elif seen.after.startswith('('):
         shape = overlay.FUNCTION_SHAPE
@@ -410,7 +296,7 @@ def _member_of_class(seen):
     class a repair declared gets the members the code names (added only if
     one did).
     """
-    match = _IN_CLASS.match(seen.message)
+    match = IN_CLASS.match(seen.message)
     found = _model_member(match.group(2), match.group(1), seen)
     if found is not None:
         return found
@@ -430,7 +316,7 @@ def _type_in_class(seen):
     A base class's function called as a statement (`Base::f(x);`) is read
     as a declaration of `x` first: a lower-case name called is a function.
     """
-    match = _TYPE_IN_CLASS.match(seen.message)
+    match = TYPE_IN_CLASS.match(seen.message)
     found = _model_member(match.group(2), match.group(1), seen)
     if found is not None:
         return found
@@ -442,7 +328,7 @@ def _type_in_class(seen):
 
 def _name_in_namespace(seen):
     """A name of a namespace that exists but lacks it."""
-    what, name, namespace = _IN_NAMESPACE.match(seen.message).groups()
+    what, name, namespace = IN_NAMESPACE.match(seen.message).groups()
     after = seen.after
     if what == 'type' and after.startswith('(') and not CAMEL.match(name):
         # `ns::correct(polygon);` read as a declaration of `polygon`: a
@@ -466,7 +352,7 @@ def _model_overload(seen):
     the setter, another parameter type): the class, named by the notes of
     its candidates, gets one that takes anything.
     """
-    name = _NO_MATCHING_MEMBER.match(seen.message).group(1)
+    name = NO_MATCHING_MEMBER.match(seen.message).group(1)
     for _, file, line, _ in seen.notes:
         class_name = overlay.model_class_at(file, line) if file else None
         if class_name is not None:
@@ -477,12 +363,12 @@ def _model_overload(seen):
 
 def _not_a_template(seen):
     """A member declared as a value, then used with template arguments."""
-    return {(TEMPLATE_USE, _NOT_A_TEMPLATE.match(seen.message).group(1))}
+    return {(TEMPLATE_USE, NOT_A_TEMPLATE.match(seen.message).group(1))}
 
 
 def _unknown_scope(seen):
     """An unknown scope (`::gen::Params` of a generated header)."""
-    match = _NOT_A_SCOPE.match(seen.message)
+    match = NOT_A_SCOPE.match(seen.message)
     if match.group(1) or seen.after.startswith('::'):
         name = qualified(match.group(1), seen.text, seen.column) \
             if match.group(1) else match.group(3)
@@ -497,14 +383,14 @@ def _unknown_scope(seen):
 
 def _undefined_macro(seen):
     """`#if FOO(1, 2)` with FOO undefined: a macro that holds."""
-    return {(MACRO_CONDITION, _UNDEFINED_MACRO.match(seen.message).group(1))}
+    return {(MACRO_CONDITION, UNDEFINED_MACRO.match(seen.message).group(1))}
 
 
 def _specialization(seen):
     """A function template the code specialises, in its namespace."""
     namespace = namespace_at(seen.read_line, seen.file, seen.line)
     return {(SPECIALIZED, '::'.join(filter(None, (
-        namespace, _SPECIALIZATION.match(seen.message).group(1)))))}
+        namespace, SPECIALIZATION.match(seen.message).group(1)))))}
 
 
 def _base_class(seen):
@@ -524,26 +410,26 @@ def _base_class(seen):
 
 
 def _macro_with_body_applies(seen):
-    match = _MACRO_STATEMENT.match(seen.text)
+    match = MACRO_STATEMENT.match(seen.text)
     return match is not None and (
         seen.message == 'expected unqualified-id' or
-        _DECLARATION_EXPECTED.match(seen.message)) and opens_body(
+        DECLARATION_EXPECTED.match(seen.message)) and opens_body(
         seen.read_line, seen.file, seen.line, seen.text, match.end())
 
 
 def _macro_with_body(seen):
     """`FOO(name, m) { ... }` at namespace level: the head of a function."""
-    return {(MACRO_FUNCTION, _MACRO_STATEMENT.match(seen.text).group(1))}
+    return {(MACRO_FUNCTION, MACRO_STATEMENT.match(seen.text).group(1))}
 
 
 def _macro_statement_applies(seen):
-    return _MACRO_STATEMENT.match(seen.text) is not None and \
-        _DECLARATION_EXPECTED.match(seen.message) is not None
+    return MACRO_STATEMENT.match(seen.text) is not None and \
+        DECLARATION_EXPECTED.match(seen.message) is not None
 
 
 def _macro_statement(seen):
     """`FOO_REGISTER(...)` at namespace level, read as a declaration."""
-    return {(MACRO_VOID, _MACRO_STATEMENT.match(seen.text).group(1))}
+    return {(MACRO_VOID, MACRO_STATEMENT.match(seen.text).group(1))}
 
 
 def _no_override(seen):
@@ -553,10 +439,10 @@ def _no_override(seen):
 
 def _literal_or_hash(seen):
     """A user-defined literal's operator; a hash the package specialises."""
-    match = _LITERAL.match(seen.message)
+    match = LITERAL_OPERATOR.match(seen.message)
     if match:
         return {(LITERAL, match.group(1))}
-    return {(NO_HASH, _HASH_REDEFINED.match(seen.message).group(1))}
+    return {(NO_HASH, HASH_REDEFINED.match(seen.message).group(1))}
 
 
 def _argument_not_value(seen):
@@ -573,15 +459,15 @@ def _argument_not_value(seen):
 
 
 def _macro_arguments_called_applies(seen):
-    match = _MACRO_STATEMENT.match(seen.text)
+    match = MACRO_STATEMENT.match(seen.text)
     return match is not None and \
-        _CALLED_NON_FUNCTION.match(seen.message) is not None and \
+        CALLED_NON_FUNCTION.match(seen.message) is not None and \
         seen.column > match.end()
 
 
 def _macro_arguments_called(seen):
     """`FOO_EXIT((&a)(&b)) { ... }`: an unknown macro's arguments called."""
-    return {(MACRO_VOID, _MACRO_STATEMENT.match(seen.text).group(1))}
+    return {(MACRO_VOID, MACRO_STATEMENT.match(seen.text).group(1))}
 
 
 def _array_element_applies(seen):
@@ -591,14 +477,14 @@ def _array_element_applies(seen):
 
 def _array_element(seen):
     """`std::unique_ptr<info_t[]>`: an unknown name read as a value."""
-    match = _ARRAY_TYPE_ARGUMENT.search(seen.text[:seen.column - 1])
+    match = ARRAY_TYPE_ARGUMENT.search(seen.text[:seen.column - 1])
     return {(TYPE, match.group(1))} if match else set()
 
 
 def _namespace_alias(seen):
     """`namespace fs = lib::fs;`, `using namespace lib;` of a lacking lib."""
     return {(NAMESPACE, (match.group(1) or match.group(2)).rstrip(':'))
-            for match in _NAMESPACE_ALIAS.finditer(seen.text)
+            for match in NAMESPACE_ALIAS.finditer(seen.text)
             if (match.group(1) or match.group(2)).rstrip(':')}
 
 
@@ -622,7 +508,7 @@ RULES = (
               {(MACRO_VOID, 'GUARDED_BY')}))),
     Rule('undeclared-name', 'use of undeclared identifier',
          (NAMESPACE, TYPE, FUNCTION, OBJECT, CONSTANT, MACRO_VALUE),
-         _message(_UNDECLARED), _undeclared, _examples(
+         _message(UNDECLARED), _undeclared, _examples(
              ('  lib::Widget w;', "use of undeclared identifier 'lib'", 3,
               {(NAMESPACE, 'lib')}),
              ('  int flags = LIB_FLAG_FAST;',
@@ -630,25 +516,25 @@ RULES = (
               {(CONSTANT, 'LIB_FLAG_FAST')}))),
     Rule('unknown-type', 'unknown type name', (TYPE, TEMPLATE, MACRO_EMPTY,
                                                MACRO_VOID),
-         _message(_UNKNOWN_TYPE), _unknown_type, _examples(
+         _message(UNKNOWN_TYPE), _unknown_type, _examples(
              ('  Widget * w = nullptr;', "unknown type name 'Widget'", 3,
               {(TYPE, 'Widget')}),
              ('class LIB_EXPORT Thing {};', "unknown type name 'LIB_EXPORT'",
               7, {(MACRO_EMPTY, 'LIB_EXPORT')}))),
     Rule('unknown-template', 'unknown template name', (TEMPLATE,),
-         _message(_UNKNOWN_TEMPLATE), _unknown_template, _examples(
+         _message(UNKNOWN_TEMPLATE), _unknown_template, _examples(
              ('  Grid<float> grid;', "no template named 'Grid'", 3,
               {(TEMPLATE, 'Grid')}))),
     Rule('namespace-as-value', 'a namespace named where a value is expected',
-         (TYPE,), _message(_NAMESPACE_AS_VALUE), _namespace_as_value,
+         (TYPE,), _message(NAMESPACE_AS_VALUE), _namespace_as_value,
          _examples(
              ('  auto f = Font("Sans", 10);',
               "unexpected namespace name 'Font': expected expression", 12,
               {(TYPE, 'Font')}))),
     Rule('standard-header', 'a standard name of a header not included',
          (STD_HEADER,), lambda seen: bool(
-             _IN_STD.match(seen.message) or
-             _UNDEFINED_IN_STD.match(seen.message)),
+             IN_STD.match(seen.message) or
+             UNDEFINED_IN_STD.match(seen.message)),
          _standard_header, _examples(
              ('  std::optional<int> o;',
               "no template named 'optional' in namespace 'std'", 8,
@@ -658,53 +544,53 @@ RULES = (
               {(STD_HEADER, 'filesystem')}))),
     Rule('incomplete-type', 'a class used but only declared', (TYPE,
                                                                MACRO_EMPTY),
-         _message(_INCOMPLETE), _incomplete, _examples(
+         _message(INCOMPLETE), _incomplete, _examples(
              ('  Index index;', "variable has incomplete type 'Index'", 9,
               {(TYPE, 'Index')}))),
     Rule('member-of-class', 'no member named in a class',
          (MEMBER, MEMBER_TYPE, MEMBER_TEMPLATE, MEMBER_SCOPE, MODEL_MEMBER),
-         _message(_IN_CLASS), _member_of_class, _examples(
+         _message(IN_CLASS), _member_of_class, _examples(
              ('  int n = lib::Grid::size();',
               "no member named 'size' in 'lib::Grid'", 22,
               {(MEMBER, 'lib::Grid::size')}))),
     Rule('type-in-class', 'no type named in a class',
-         (MEMBER, MEMBER_TYPE, MODEL_MEMBER), _message(_TYPE_IN_CLASS),
+         (MEMBER, MEMBER_TYPE, MODEL_MEMBER), _message(TYPE_IN_CLASS),
          _type_in_class,
          _examples(
              ('  lib::Grid::Ptr grid;', "no type named 'Ptr' in 'lib::Grid'",
               14, {(MEMBER_TYPE, 'lib::Grid::Ptr')}))),
     Rule('name-in-namespace', 'no name in a namespace that exists',
          (TYPE, TEMPLATE, FUNCTION, OBJECT, CONSTANT, NAMESPACE),
-         _message(_IN_NAMESPACE), _name_in_namespace, _examples(
+         _message(IN_NAMESPACE), _name_in_namespace, _examples(
              ('  lib::draw(canvas);',
               "no member named 'draw' in namespace 'lib'", 8,
               {(FUNCTION, 'lib::draw')}))),
     Rule('model-overload', 'no overload of a model class method matches',
-         (MODEL_MEMBER,), _message(_NO_MATCHING_MEMBER), _model_overload,
+         (MODEL_MEMBER,), _message(NO_MATCHING_MEMBER), _model_overload,
          _examples(
              ('  auto policy = qos.reliability();',
               "no matching member function for call to 'reliability'", 21,
               set()))),
     Rule('not-a-template', 'a name used with template arguments it lacks',
-         (TEMPLATE_USE,), _message(_NOT_A_TEMPLATE), _not_a_template,
+         (TEMPLATE_USE,), _message(NOT_A_TEMPLATE), _not_a_template,
          _examples(
              ('  auto e = map.elementsAs<Light>();',
               "'elementsAs' does not name a template but is followed by "
               'template arguments', 16, {(TEMPLATE_USE, 'elementsAs')}))),
     Rule('unknown-scope', 'a scope that is no class or namespace',
          (NAMESPACE, TYPE, TEMPLATE, FUNCTION, OBJECT),
-         _message(_NOT_A_SCOPE), _unknown_scope, _examples(
+         _message(NOT_A_SCOPE), _unknown_scope, _examples(
              ('  gen::Params p;',
               "'gen' is not a class, namespace, or enumeration", 3,
               {(NAMESPACE, 'gen')}))),
     Rule('undefined-macro-condition', 'a function-like macro in #if',
-         (MACRO_CONDITION,), _message(_UNDEFINED_MACRO), _undefined_macro,
+         (MACRO_CONDITION,), _message(UNDEFINED_MACRO), _undefined_macro,
          _examples(
              ('#if LIB_VERSION_GTE(2, 0, 0)',
               "function-like macro 'LIB_VERSION_GTE' is not defined", 5,
               {(MACRO_CONDITION, 'LIB_VERSION_GTE')}))),
     Rule('specialized-function', 'a specialisation of an unknown template',
-         (SPECIALIZED,), _message(_SPECIALIZATION), _specialization,
+         (SPECIALIZED,), _message(SPECIALIZATION), _specialization,
          _examples(
              ('template <> Id registerName(const Thing & t);',
               'no function template matches function template '
@@ -727,21 +613,21 @@ RULES = (
               'a type specifier is required for all declarations', 1,
               {(MACRO_VOID, 'LIB_REGISTER_POINT')}))),
     Rule('override-without-base', '`override` of no known virtual method',
-         (NO_OVERRIDE,), _message(_OVERRIDE), _no_override, _examples(
+         (NO_OVERRIDE,), _message(OVERRIDE), _no_override, _examples(
              ('  void paint() override;',
               "only virtual member functions can be marked 'override'", 15,
               {(NO_OVERRIDE, 'override')}))),
     Rule('literal-or-hash', 'a literal operator; a hash specialised twice',
          (LITERAL, NO_HASH), lambda seen: bool(
-             _LITERAL.match(seen.message) or
-             _HASH_REDEFINED.match(seen.message)), _literal_or_hash,
+             LITERAL_OPERATOR.match(seen.message) or
+             HASH_REDEFINED.match(seen.message)), _literal_or_hash,
          _examples(
              ('  auto a = "name"_arg = 1;',
               'no matching literal operator for call to '
               "'operator\"\"_arg' with arguments", 18,
               {(LITERAL, '_arg')}))),
     Rule('argument-not-value', 'a type where a value is expected',
-         (MACRO_VALUE, VALUE), _message(_ARGUMENT_NOT_VALUE),
+         (MACRO_VALUE, VALUE), _message(ARGUMENT_NOT_VALUE),
          _argument_not_value, _examples(
              ('  ar & LIB_NVP(Base);',
               "'Base' does not refer to a value", 16,
@@ -765,7 +651,7 @@ RULES = (
 
 
 # the messages whose notes the rules read
-NEEDS_NOTES = (_NO_MATCHING_MEMBER,)
+NEEDS_NOTES = (NO_MATCHING_MEMBER,)
 
 
 def needs_notes(message):

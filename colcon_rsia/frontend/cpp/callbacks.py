@@ -1,0 +1,176 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Callbacks and what calls bind to a package function's parameters.
+
+A part of the C++ walker (a mixin of ``walker._Walker``): which function a
+callback argument designates (a lambda, ``&C::m``, a bind expression, a
+``std::function`` variable resolved at the end of the walk), and what a
+call passes to the parameters of the package's functions (handles,
+string literals, callables), so that a helper's registrations take its
+callers' names and callbacks.
+"""
+
+import re
+
+import clang.cindex as ci
+from colcon_rsia import model
+from colcon_rsia.frontend.cpp.cursors import first_function
+from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
+from colcon_rsia.frontend.cpp.cursors import is_callable_argument
+from colcon_rsia.frontend.cpp.cursors import is_string
+from colcon_rsia.frontend.cpp.cursors import is_written
+from colcon_rsia.frontend.cpp.cursors import plain_handle
+from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import REF_KINDS
+from colcon_rsia.frontend.cpp.cursors import template_member
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
+
+CK = ci.CursorKind
+BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
+
+CALLABLE_PREFIX = 'callable:'
+_CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
+
+
+def is_callable(cursor):
+    """A variable/field holding a callable: std::function, bind results."""
+    return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))
+
+
+class Callbacks:
+    """The walker's callback resolution and parameter binding.
+
+    Methods of the walker kept apart: they use its state (``facts``,
+    ``string_variables``, ``_callables``, ``_consumed``, ``_registered``)
+    and questions (``topic``, ``in_package``, ``key``, ``_lambda_id``).
+    """
+
+    def _resolve_stored_callbacks(self):
+        """Replace ``callable:<usr>`` callbacks by what was stored there.
+
+        A callback kept in a ``std::function`` member is registered by
+        naming the member; the function is what the code assigned to it
+        (anywhere in the TU, before or after the registration).
+        """
+        def resolve(callback):
+            if callback and callback.startswith(CALLABLE_PREFIX):
+                stored = self._callables.get(callback[len(CALLABLE_PREFIX):])
+                return sorted(stored)[0] if stored else None
+            return callback
+        for fact in (self.facts.subscribers + self.facts.timers +
+                     self.facts.services + self.facts.registrations):
+            fact.callback = resolve(fact.callback)
+        for fact in self.facts.actions:
+            fact.callbacks = [c for c in map(resolve, fact.callbacks) if c]
+        for fact in self.facts.publishers:
+            fact.status_callbacks = [
+                c for c in map(resolve, fact.status_callbacks) if c]
+
+    def _store_callable(self, variable, expression, consume=True):
+        """Remember what a std::function variable/field is set to."""
+        callback, _ = self.resolve_callback(expression, consume=consume)
+        if callback and not callback.startswith(CALLABLE_PREFIX):
+            self._callables.setdefault(variable.get_usr(), set()).add(
+                callback)
+
+    def _bind_parameters(self, callee, arguments):
+        """A package function's parameters hold what its callers pass.
+
+        A helper that makes a subscription from its parameters
+        (``TwistSubscriber(node, "cmd_vel", qos, callback)``) gets its
+        topic as a string variable set by the callers (one literal in
+        every call of the unit: that name) and its callback as a stored
+        callable; the argument stays a plain reference of the caller.
+        """
+        definition = callee.get_definition() or callee
+        params = [c for c in definition.get_children()
+                  if c.kind == CK.PARM_DECL]
+        for param, argument in zip(params, arguments):
+            if not is_written(argument):
+                continue
+            if is_string(param):
+                self.string_variables.assignment(param, argument)
+            elif is_callable_argument(argument):
+                self._store_callable(param, argument, consume=False)
+
+    def _bind_arguments(self, callee, arguments, first_index=0,
+                        caller=None):
+        """Record what a call passes to a package function's parameters.
+
+        Handles, and string literals (a node name passed to a base class).
+        """
+        for index, argument in enumerate(arguments, start=first_index):
+            if caller is not None and is_string(argument):
+                value, literal = self.topic(argument)
+                if literal:
+                    self.facts.string_arguments.append(model.StringArgument(
+                        caller=caller, callee=callee, index=index,
+                        value=value))
+                    continue
+            handle = plain_handle(argument)
+            if handle is not None and self.in_package(handle):
+                self.facts.bindings.append(model.ParamBinding(
+                    callee=callee, index=index, handle=handle.get_usr()))
+
+    def _bound_arguments(self, argument):
+        """Handles bound by boost::bind / std::bind to the callback."""
+        for current in [argument] + list(walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind != CK.CALL_EXPR or current.referenced is None or \
+                    qualified_name(current.referenced) not in BIND_FUNCTIONS:
+                continue
+            bound = list(current.get_arguments())
+            if not bound:
+                return
+            target = first_function(bound[0])
+            if target is None or not self.in_package(target):
+                return
+            rest = bound[1:]
+            # a bound method's first argument is the object, not a parameter
+            if target.kind == CK.CXX_METHOD and not target.is_static_method():
+                rest = rest[1:]
+            self._bind_arguments(template_member(target).get_usr(), rest)
+            return
+
+    def resolve_callback(self, argument, consume=True):
+        """Return (function id, declaration cursor) of a callback argument.
+
+        With `consume`, the argument is registered with an API: it is a
+        root of its own, not something the calling function calls.
+        """
+        if argument is None:
+            return None, None
+        self._bound_arguments(argument)
+        for current in [argument] + list(walk_preorder(
+                argument, stop=frozenset({CK.LAMBDA_EXPR}))):
+            if current.kind == CK.LAMBDA_EXPR:
+                lid = self._lambda_id(current)
+                if consume:
+                    self._consumed.add(self.key(current))
+                    self._registered.add(lid)
+                return lid, current
+            if current.kind not in REF_KINDS:
+                continue
+            ref = current.referenced
+            if ref is None:
+                continue
+            if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+                ref = template_member(ref)
+                if consume:
+                    self._consumed.add(self.key(current))
+                    self._registered.add(ref.get_usr())
+                return ref.get_usr(), ref
+            if ref.kind == CK.VAR_DECL:
+                for child in ref.get_children():
+                    if child.kind == CK.LAMBDA_EXPR:
+                        lid = self._lambda_id(child)
+                        self._registered.add(lid)
+                        return lid, child
+            if ref.kind in HANDLE_KINDS and is_callable(ref) or \
+                    ref.kind == CK.PARM_DECL:
+                # resolved at the end of the walk: see
+                # _resolve_stored_callbacks (a parameter: what the callers
+                # pass, see _bind_parameters)
+                return CALLABLE_PREFIX + ref.get_usr(), None
+        return None, None
