@@ -125,64 +125,78 @@ class _Builder:
         return conditions
 
     def action(self, elem, depth):
-        attrs = elem.attrs
+        """The IR action of one element, through the table of its tag."""
         common = {'location': self.loc(elem),
                   'conditions': self.conditions(elem)}
-        tag = elem.tag
-        if tag == 'arg':
-            has_default = 'default' in attrs
-            return DeclareArgument(name=_sv(attrs.get('name')),
-                                   default=_sv(attrs.get('default')),
-                                   has_default=has_default, **common)
-        if tag == 'let':
-            return SetConfiguration(name=_sv(attrs.get('name')),
-                                    value=_sv(attrs.get('value')), **common)
-        if tag in ('node', 'node_container', 'lifecycle_node'):
-            return self.node(elem, common, depth)
-        if tag == 'load_composable_node':
-            return LoadComposable(
-                composables=self.composables(elem), **common)
-        if tag == 'include':
-            arguments = [(_sv(c.attrs.get('name')),
-                          _sv(c.attrs.get('value', c.attrs.get('default'))))
-                         for c in elem.children if c.tag == 'arg']
-            return Include(path=_sv(attrs.get('file')), arguments=arguments,
-                           **common)
-        if tag in ('group', 'timer'):
-            actions = self.actions(elem.children, depth + 1)
-            ns = attrs.get('namespace', attrs.get('ns'))
-            if ns is not None:
-                actions.insert(0, PushNamespace(
-                    namespace=_sv(ns), location=self.loc(elem)))
-            scoped = _sv(attrs.get('scoped', 'true')) if tag == 'group' \
-                else False
-            forwarding = str(attrs.get('forwarding', 'true')).lower() != \
-                'false'
-            return Group(actions=actions, scoped=scoped,
-                         forwarding=forwarding, **common)
-        if tag in _PUSH:
-            return PushNamespace(
-                namespace=_sv(attrs.get('namespace', attrs.get('ns'))),
-                **common)
-        if tag in ('set_remap', 'set-remap'):
-            return SetRemap(source=_sv(attrs.get('from')),
-                            target=_sv(attrs.get('to')), **common)
-        if tag in ('set_parameter', 'set-parameter'):
-            return SetParameter(name=_sv(attrs.get('name')),
-                                value=_param_text(attrs.get('value')),
-                                **common)
-        if tag in ('set_env', 'set-env'):
-            return SetEnv(name=_sv(attrs.get('name')),
-                          value=_sv(attrs.get('value', '')), **common)
-        if tag in ('unset_env', 'unset-env'):
-            return SetEnv(name=_sv(attrs.get('name')), value=None, **common)
-        if tag in ('log', 'declare_launch_argument_doc'):
-            return None
-        if tag == 'executable':
-            return Opaque(note='<executable> runs a process that is not a '
-                          'ROS node description; not analysed', **common)
-        return Opaque(note=f'unknown element <{shorten(tag, 40)}> ignored',
-                      **common)
+        build = _ACTIONS.get(elem.tag)
+        if build is None:
+            return Opaque(note=f'unknown element <{shorten(elem.tag, 40)}> '
+                          'ignored', **common)
+        return build(self, elem, common, depth)
+
+    # --- one method per element kind (see _ACTIONS) ------------------------
+
+    def _declare_argument(self, elem, common, depth):
+        attrs = elem.attrs
+        return DeclareArgument(name=_sv(attrs.get('name')),
+                               default=_sv(attrs.get('default')),
+                               has_default='default' in attrs, **common)
+
+    def _set_configuration(self, elem, common, depth):
+        return SetConfiguration(name=_sv(elem.attrs.get('name')),
+                                value=_sv(elem.attrs.get('value')), **common)
+
+    def _load_composable(self, elem, common, depth):
+        return LoadComposable(composables=self.composables(elem), **common)
+
+    def _include(self, elem, common, depth):
+        arguments = [(_sv(c.attrs.get('name')),
+                      _sv(c.attrs.get('value', c.attrs.get('default'))))
+                     for c in elem.children if c.tag == 'arg']
+        return Include(path=_sv(elem.attrs.get('file')), arguments=arguments,
+                       **common)
+
+    def _group(self, elem, common, depth):
+        attrs = elem.attrs
+        actions = self.actions(elem.children, depth + 1)
+        ns = attrs.get('namespace', attrs.get('ns'))
+        if ns is not None:
+            actions.insert(0, PushNamespace(
+                namespace=_sv(ns), location=self.loc(elem)))
+        # (a timer's actions run later, unscoped)
+        scoped = _sv(attrs.get('scoped', 'true')) if elem.tag == 'group' \
+            else False
+        forwarding = str(attrs.get('forwarding', 'true')).lower() != 'false'
+        return Group(actions=actions, scoped=scoped, forwarding=forwarding,
+                     **common)
+
+    def _push_namespace(self, elem, common, depth):
+        return PushNamespace(
+            namespace=_sv(elem.attrs.get('namespace', elem.attrs.get('ns'))),
+            **common)
+
+    def _set_remap(self, elem, common, depth):
+        return SetRemap(source=_sv(elem.attrs.get('from')),
+                        target=_sv(elem.attrs.get('to')), **common)
+
+    def _set_parameter(self, elem, common, depth):
+        return SetParameter(name=_sv(elem.attrs.get('name')),
+                            value=_param_text(elem.attrs.get('value')),
+                            **common)
+
+    def _set_env(self, elem, common, depth):
+        return SetEnv(name=_sv(elem.attrs.get('name')),
+                      value=_sv(elem.attrs.get('value', '')), **common)
+
+    def _unset_env(self, elem, common, depth):
+        return SetEnv(name=_sv(elem.attrs.get('name')), value=None, **common)
+
+    def _nothing(self, elem, common, depth):
+        return None  # (documentation and logging: no effect on the graph)
+
+    def _executable(self, elem, common, depth):
+        return Opaque(note='<executable> runs a process that is not a ROS '
+                      'node description; not analysed', **common)
 
     def node(self, elem, common, depth):
         attrs = elem.attrs
@@ -338,3 +352,23 @@ class _YamlConverter:
             else:
                 elem.attrs[key] = value
         return elem
+
+
+# element tag (XML spelling, and YAML's where it differs) -> _Builder method
+_ACTIONS = {
+    'arg': _Builder._declare_argument,
+    'let': _Builder._set_configuration,
+    'node': _Builder.node, 'node_container': _Builder.node,
+    'lifecycle_node': _Builder.node,
+    'load_composable_node': _Builder._load_composable,
+    'include': _Builder._include,
+    'group': _Builder._group, 'timer': _Builder._group,
+    **{tag: _Builder._push_namespace for tag in _PUSH},
+    'set_remap': _Builder._set_remap, 'set-remap': _Builder._set_remap,
+    'set_parameter': _Builder._set_parameter,
+    'set-parameter': _Builder._set_parameter,
+    'set_env': _Builder._set_env, 'set-env': _Builder._set_env,
+    'unset_env': _Builder._unset_env, 'unset-env': _Builder._unset_env,
+    'log': _Builder._nothing, 'declare_launch_argument_doc': _Builder._nothing,
+    'executable': _Builder._executable,
+}
