@@ -323,3 +323,22 @@ def test_the_sandbox_itself(tmp_path, web_server):
     # none of the user's files, none of /etc but the loader's cache
     assert facts['home'] is False
     assert facts['etc'] == ['ld.so.cache']
+
+
+def test_a_package_of_old_cmake_policies_configures(tmp_path, mode):
+    # most ROS 1 packages say cmake_minimum_required(VERSION 2.8.3): the
+    # replacements run under those policies too (if(IN_LIST) was an error
+    # there, and every catkin package's configure failed)
+    package = write_package(tmp_path / 'old', (
+        'cmake_minimum_required(VERSION 2.8.3)\n'
+        'project(old)\n'
+        'execute_process(COMMAND nothing OUTPUT_VARIABLE said\n'
+        '                RESULT_VARIABLE result)\n'
+        'if(NOT result EQUAL 0)\n'
+        '  message(FATAL_ERROR "the replacement reports success")\n'
+        'endif()\n'
+        'add_executable(old_node src/node.cpp)\n'), sources=['src/node.cpp'])
+    executables, diagnostics = _configure(package, tmp_path / 'build')
+    assert executables == {'old_node': [str(package / 'src' / 'node.cpp')]}, \
+        diagnostics
+    assert diagnostics == []

@@ -63,7 +63,11 @@ macro(rsia_nothing_run rsia_outputs rsia_results)
     if(NOT rsia_${rsia_keyword})
       continue()
     endif()
-    if(rsia_keyword IN_LIST rsia_result_keywords)
+    # (list(FIND), not if(IN_LIST): a macro runs under its caller's
+    # policies, and IN_LIST is an error below cmake_minimum_required 3.3,
+    # as in most ROS 1 packages)
+    list(FIND rsia_result_keywords "${rsia_keyword}" rsia_result_index)
+    if(rsia_result_index GREATER -1)
       set(${rsia_${rsia_keyword}} 0 PARENT_SCOPE)
     else()
       set(${rsia_${rsia_keyword}} "" PARENT_SCOPE)
