@@ -770,6 +770,31 @@ def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
         'role': 'publisher', 'api': 'create_publisher'}]
 
 
+def test_scripts_no_node_runs_are_unread_not_missed(tmp_path):
+    # a C++ package's Python tool its CMake installs as no node: its call
+    # sites are in code no node runs ('unread'), not facts the analysis
+    # missed ('none'), and not absent from the coverage either
+    from colcon_rsia.package.runner import analyze
+    package = _package(tmp_path)
+    (package / 'scripts').mkdir()
+    (package / 'scripts' / 'echo_tool.py').write_text(
+        'import rclpy\n'
+        'from std_msgs.msg import String\n'
+        'node = rclpy.create_node("echo_tool")\n'
+        'node.create_subscription(String, "detections", print, 1)\n')
+    outcome = analyze(
+        name='acme_vision', package_type='ros.ament_cmake', path=str(package),
+        build_base=str(tmp_path / 'build' / 'acme_vision'), jobs=1,
+        header_mode='model', workspace_package_dirs=[str(package)],
+        without_build=True)
+    by_file = {(c.file, c.role): c.recorded
+               for c in outcome.summary.coverage.call_sites}
+    assert by_file == {
+        ('scripts/echo_tool.py', 'subscriber'): 'unread',
+        ('src/detector_node.cpp', 'publisher'): 'node',
+        ('src/detector_node.cpp', 'subscriber'): 'node'}
+
+
 @pytest.mark.parametrize('line,expected', [
     # a template argument is a type, a value in an expression an enumerator
     ('std::unique_ptr<bond::Bond> bond_;', ('type', 'bond::Bond')),
