@@ -770,6 +770,43 @@ def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
         'role': 'publisher', 'api': 'create_publisher'}]
 
 
+# a statement no repair makes whole: its call is read from the tokens
+LOST_CALL = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+ros::Publisher kept;
+
+void keep(ros::NodeHandle& nh)
+{
+  kept = nh.advertise<std_msgs::String>("kept", 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "talker");
+  ros::NodeHandle nh;
+  keep(nh);
+  // (far enough from the call the parse kept: the coverage matches calls
+  // to facts a few lines apart, as a call may span lines)
+  ros::Publisher pub = nh.advertise<std_msgs::String>(("chatter"), , 1);
+  ros::spin();
+}
+"""
+
+
+def test_a_unit_whose_parse_lost_a_call_says_so(tmp_path):
+    summary = analyse_source(tmp_path, 'talker', LOST_CALL,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    assert unit.package_errors >= 1
+    # the broken advertise (its fact read from tokens, its name through
+    # the parentheses), not the other
+    assert unit.lost_calls == 1
+    [node] = summary.nodes
+    assert sorted(p.topic for p in node.publishers) == ['chatter', 'kept']
+
+
 def test_scripts_no_node_runs_are_unread_not_missed(tmp_path):
     # a C++ package's Python tool its CMake installs as no node: its call
     # sites are in code no node runs ('unread'), not facts the analysis

@@ -180,7 +180,7 @@ def _coverage(path, units, nodes):
         units=[model.UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
             package_errors=unit.package_errors,
-            repair_rounds=unit.repair_rounds,
+            repair_rounds=unit.repair_rounds, lost_calls=unit.lost_calls,
             repairs=[[rule, kind, _relative(name, path)]
                      for rule, kind, name in unit.repairs])
                for file, unit in sorted(units.items())],
@@ -407,6 +407,9 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     facts.package_errors = sum(
         1 for e in errors if e[1] and _inside(e[1], package_path))
     facts.repair_rounds = rounds
+    # (without an error in the package's code the parse lost nothing)
+    facts.lost_calls = _unrecorded_calls(tu, facts, package_path) \
+        if facts.package_errors else 0
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})
