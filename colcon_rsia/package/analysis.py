@@ -40,6 +40,8 @@ from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
 from colcon_rsia.package.nodes import find_plugins
 from colcon_rsia.package.nodes import skipped_executable
+from colcon_rsia.package.nodes import target_naming
+from colcon_rsia.package.nodes import TEXT_READER
 from colcon_rsia.package.workers import check_stop
 
 
@@ -438,8 +440,10 @@ def build_summary(*, name, path, build_base, units, parsed=None):
     """
     summary = model.PackageSummary(
         package=name, path=path, tool_version=__version__)
+    read_by = []
     executables = find_executables(package_path=path, build_base=build_base,
-                                   diagnostics=summary.diagnostics)
+                                   diagnostics=summary.diagnostics,
+                                   read_by=read_by)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
     unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
@@ -456,6 +460,18 @@ def build_summary(*, name, path, build_base, units, parsed=None):
         if file in executable_sources or not _defines_main(unit):
             continue
         relative = os.path.relpath(file, path)
+        # CMake could not run: a command of a module the text reader does
+        # not know may build it (a guess, said so)
+        target = target_naming(path, file) \
+            if targets_known and read_by == [TEXT_READER] else None
+        if target is not None and target not in executables:
+            executables[target] = [file]
+            executable_sources.add(file)
+            summary.diagnostics.append(
+                f'{relative}: note: defines main() and CMakeLists.txt names '
+                f"it in a command CMake could not run here: node '{target}' "
+                "named after that command's first argument")
+            continue
         if targets_known:
             executable_sources.add(file)
             summary.diagnostics.append(
