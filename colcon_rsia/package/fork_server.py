@@ -5,10 +5,11 @@
 multiprocessing's fork server ignores Ctrl-C only once it has imported
 its preloaded modules (libclang and the analysis, a second or more); Ctrl-C
 reaches the whole process group, so one pressed meanwhile printed the fork
-server's traceback under colcon's output. The parent decides what a
-Ctrl-C ends (see workers.py); this import, the first of the preload list,
-makes the fork server ignore it from the start. Nothing happens when
-another process imports the module.
+server's traceback under colcon's output (its stderr is /dev/null now,
+see workers._start_fork_server, but it would end). The parent decides
+what a Ctrl-C ends (see workers.py); this import, the first of the
+preload list, makes the fork server ignore it from then. Nothing happens
+when another process imports the module.
 """
 
 import signal

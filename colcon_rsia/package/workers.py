@@ -612,13 +612,45 @@ class _Worker:
 _multiprocessing = []
 
 
+_context_lock = threading.Lock()
+
+
 def _multiprocessing_context():
-    if not _multiprocessing:
-        context = multiprocessing.get_context(START_METHOD)
-        if START_METHOD == 'forkserver':
-            context.set_forkserver_preload(PRELOAD)
-        _multiprocessing.append(context)
+    with _context_lock:
+        if not _multiprocessing:
+            context = multiprocessing.get_context(START_METHOD)
+            if START_METHOD == 'forkserver':
+                context.set_forkserver_preload(PRELOAD)
+                _start_fork_server()
+            _multiprocessing.append(context)
     return _multiprocessing[0]
+
+
+def _start_fork_server():
+    """Start the fork server with no terminal to print to.
+
+    Ctrl-C reaches the whole process group, the fork server too, and it
+    ignores Ctrl-C only from its first preloaded import (fork_server.py):
+    one pressed while its interpreter starts printed a traceback under
+    colcon's output. Its stderr (and that of the workers it forks, which
+    write theirs to their own files) is /dev/null: fd 2 points there for
+    the moment the server is spawned, which inherits it.
+    """
+    import multiprocessing.forkserver
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        saved = os.dup(2)
+    except OSError:
+        return  # (started with our stderr by the first worker then)
+    try:
+        os.dup2(devnull, 2)
+        multiprocessing.forkserver.ensure_running()
+    except (OSError, ValueError, RuntimeError):
+        pass  # the first worker's start says why, with our stderr back
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(devnull)
 
 
 # idle workers, for the next package of the run
