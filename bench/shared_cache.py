@@ -2,20 +2,19 @@
 # Licensed under the Apache License, Version 2.0
 """What the shared fact cache saves a second clone, measured in one run.
 
-Copies every workspace of ``test_workspaces/`` to a first place and
-analyses it unbuilt (``colcon rsia analyze``) with an empty
+Copies the workspaces of ``test_workspaces/``, as one workspace, to a
+first place and analyses it unbuilt (``colcon rsia analyze``) with an empty
 ``COLCON_RSIA_CACHE_DIR``, then copies it to a second place (another path,
 nothing built) and analyses it again with the same cache: what CI does for
-a pull request after the main branch's run filled the cache. Prints each
-workspace's wall times, the units the second run found in the cache, and
-one line:
+a pull request after the main branch's run filled the cache. Prints the
+wall times, the units the second run found in the cache, and one line:
 
 RESULT shared_cache_ratio=<second clone time / first run time>
 analysis_ratio=<the same, of the time `analyze` reports>
 
-The wall times hold what the cache does not cover: colcon's start, CMake
-configuring the unbuilt packages, the model mode preparing each unit's
-arguments, the Python packages.
+The wall times hold what the cache does not cover: colcon's start, the
+model mode preparing each unit's arguments (its key), the Python
+packages, writing the summaries.
 
 Usage: python3 bench/shared_cache.py [--root DIR] [--jobs N]
 """
@@ -67,29 +66,29 @@ def main():
     args = parser.parse_args()
     root = args.root or Path(tempfile.mkdtemp(prefix='rsia-shared-cache-'))
     cache = root / 'cache'
-    totals = [0.0, 0.0, 0.0, 0.0]
-    for workspace in sorted(WORKSPACES.iterdir()):
-        if not (workspace / 'src').is_dir():
-            continue
-        first = root / 'first' / workspace.name
-        second = root / 'second' / 'a' / 'longer' / 'path' / workspace.name
-        for clone in (first, second):
-            if clone.exists():
-                shutil.rmtree(clone)
-            shutil.copytree(workspace / 'src', clone / 'src', symlinks=True)
-        wall1, analysis1, _ = analyze(first, cache, args.jobs)
-        wall2, analysis2, (found, looked_up) = analyze(
-            second, cache, args.jobs)
-        totals = [t + v for t, v in zip(
-            totals, (wall1, wall2, analysis1, analysis2))]
-        print(f'{workspace.name}: first {wall1:.1f} s, second clone '
-              f'{wall2:.1f} s (analysis {analysis1:.1f} s -> '
-              f'{analysis2:.1f} s), {found} of {looked_up} units from the '
-              'cache', flush=True)
+    if cache.exists():
+        shutil.rmtree(cache)
+    first = root / 'first' / 'ws'
+    second = root / 'second' / 'a' / 'longer' / 'path' / 'ws'
+    for clone in (first, second):
+        if clone.exists():
+            shutil.rmtree(clone)
+        # one workspace of them all (no two packages share a name): one
+        # colcon start, as in CI
+        for workspace in sorted(WORKSPACES.iterdir()):
+            if (workspace / 'src').is_dir():
+                shutil.copytree(workspace / 'src',
+                                clone / 'src' / workspace.name,
+                                symlinks=True)
+    wall1, analysis1, _ = analyze(first, cache, args.jobs)
+    wall2, analysis2, (found, looked_up) = analyze(second, cache, args.jobs)
+    print(f'first run {wall1:.1f} s (analysis {analysis1:.1f} s), second '
+          f'clone {wall2:.1f} s (analysis {analysis2:.1f} s), {found} of '
+          f'{looked_up} units from the cache', flush=True)
     if not args.root:
         shutil.rmtree(root, ignore_errors=True)
-    print(f'RESULT shared_cache_ratio={totals[1] / totals[0]:.2f} '
-          f'analysis_ratio={totals[3] / totals[2]:.2f}')
+    print(f'RESULT shared_cache_ratio={wall2 / wall1:.2f} '
+          f'analysis_ratio={analysis2 / analysis1:.2f}')
 
 
 if __name__ == '__main__':

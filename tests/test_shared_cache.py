@@ -17,6 +17,7 @@ import time
 
 from colcon_rsia import model
 from colcon_rsia.frontend.compile_db import CompileEntry
+from colcon_rsia.package import cmake_configure
 from colcon_rsia.package import shared_cache
 from colcon_rsia.package.environment import environment_problems
 from conftest import run_colcon
@@ -93,7 +94,9 @@ def _without_seconds(text):
 
 
 def _entries(cache):
-    return sorted(Path(cache).glob(f'{shared_cache.LAYOUT}/*/*.json'))
+    """The units' entries (not those of CMake's results)."""
+    return sorted(p for p in Path(cache).glob(
+        f'{shared_cache.LAYOUT}/*/*.json') if not p.name.startswith('cmake-'))
 
 
 @pytest.fixture(scope='module')
@@ -228,6 +231,41 @@ def test_the_least_recently_used_entries_are_evicted(tmp_path):
     left = sorted(p.name for p in shard.iterdir())
     # at most 90 % of 10,000 bytes: four entries, the most recent
     assert left == ['ab0-x.json', 'ab7-x.json', 'ab8-x.json', 'ab9-x.json']
+
+
+CMAKELISTS = """cmake_minimum_required(VERSION 3.8)
+project(plain)
+add_executable(plain src/plain.cpp)
+"""
+
+
+def _cmake_package(root):
+    (root / 'src').mkdir(parents=True)
+    (root / 'CMakeLists.txt').write_text(CMAKELISTS)
+    (root / 'src' / 'plain.cpp').write_text('int main() {}\n')
+    return root
+
+
+def test_a_cmake_configure_serves_a_clone_elsewhere(tmp_path, monkeypatch):
+    monkeypatch.setenv('COLCON_RSIA_CACHE_DIR', str(tmp_path / 'cache'))
+    first = _cmake_package(tmp_path / 'one' / 'plain')
+    configured = cmake_configure.configure_package(
+        str(first), str(tmp_path / 'one' / 'build'))
+    if configured.executables is None:
+        pytest.skip(f'CMake cannot configure here: {configured.problem}')
+    assert configured.executables == {
+        'plain': [str(first / 'src' / 'plain.cpp')]}
+    [entry] = Path(tmp_path / 'cache').glob('v1/*/cmake-*.json')
+    assert str(first) not in entry.read_text()
+    second = _cmake_package(tmp_path / 'two' / 'x' / 'plain')
+    runs = []
+    monkeypatch.setattr(cmake_configure, '_configure',
+                        lambda *a: runs.append(a))
+    again = cmake_configure.configure_package(
+        str(second), str(tmp_path / 'two' / 'build'))
+    assert runs == []
+    assert again.executables == {
+        'plain': [str(second / 'src' / 'plain.cpp')]}
 
 
 @pytest.mark.parametrize('name,value', [

@@ -74,13 +74,19 @@ _TOOL_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # what the lookups of this process found, for the line `analyze` prints
 _stats_lock = threading.Lock()
-_stats = {'hits': 0, 'lookups': 0}
+_stats = {'hits': 0, 'lookups': 0, 'result_hits': 0, 'results': 0}
 
 
 def statistics():
     """(units found, units looked up) in the shared cache by this process."""
     with _stats_lock:
         return _stats['hits'], _stats['lookups']
+
+
+def _count_result(hit):
+    with _stats_lock:
+        _stats['results'] += 1
+        _stats['result_hits'] += bool(hit)
 
 
 def _count(hit):
@@ -199,6 +205,20 @@ class SharedCache:
         shared = cls(directory, cache_bytes(), roots)
         shared.salt = shared.to_placeholders(resource_dir or '')
         return shared
+
+    @classmethod
+    def of_package(cls, package_path, build_base):
+        """The shared cache of what is read of a package as a whole.
+
+        Its results name the package's files and its build directory only;
+        None when the variable is not set.
+        """
+        directory = cache_directory()
+        if directory is None:
+            return None
+        return cls(directory, cache_bytes(), [
+            (PACKAGE, os.path.abspath(package_path)),
+            (BUILD, os.path.abspath(build_base))])
 
     def with_hidden(self, hidden):
         """This cache for units that see the files of ``hidden`` empty."""
@@ -352,6 +372,56 @@ class SharedCache:
         for placeholder, root in self.roots:
             text = _pattern(json.dumps(root)[1:-1]).sub(placeholder, text)
         return text
+
+    # --- results other than a unit's facts ----------------------------------
+
+    def _result_path(self, kind, key):
+        return os.path.join(self._shard(key), f'{kind}-{key}.json')
+
+    def lookup_result(self, kind, key):
+        """The JSON data kept with :meth:`store_result`, or None.
+
+        :param kind: what it is (a word: the entry's name starts with it)
+        :param key: a digest of everything that decides the data, in
+          which no directory of the checkout may be
+        """
+        path = self._result_path(kind, key)
+        try:
+            with open(path, 'rb') as h:
+                raw = h.read(MAX_ENTRY_BYTES + 1)
+        except OSError:
+            _count_result(False)
+            return None
+        try:
+            if len(raw) > MAX_ENTRY_BYTES:
+                raise ValueError('too large')
+            data = json.loads(self._from_placeholders_json(
+                raw.decode('utf-8')))
+            if data['schema'] != ENTRY_SCHEMA or data['kind'] != kind:
+                raise ValueError('not ours')
+        except (ValueError, KeyError, TypeError, UnicodeDecodeError):
+            _remove(path)
+            _count_result(False)
+            return None
+        try:
+            os.utime(path)
+        except OSError:
+            pass
+        _count_result(True)
+        return data['data']
+
+    def store_result(self, kind, key, data):
+        """Keep JSON data under ``key`` (see :meth:`lookup_result`)."""
+        if _PLACEHOLDER_MARK in json.dumps(data):
+            return
+        text = self._to_placeholders_json(json.dumps(
+            {'schema': ENTRY_SCHEMA, 'kind': kind, 'data': data},
+            sort_keys=True))
+        try:
+            safe_files.write_text_atomically(
+                self._result_path(kind, key), text)
+        except OSError:
+            pass
 
     # --- size ------------------------------------------------------------------
 
