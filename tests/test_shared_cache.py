@@ -10,9 +10,11 @@ entries; a bad value of either variable is one error up front.
 """
 
 import json
+import multiprocessing
 import os
 from pathlib import Path
 import re
+import shutil
 import time
 
 from colcon_rsia import model
@@ -133,19 +135,19 @@ def test_a_second_clone_elsewhere_parses_nothing(first_clone,
         # place a clone's path is meant to be
         expected = first[name].replace(str(root), str(second))
         assert _without_seconds(again[name]) == _without_seconds(expected)
-    # and byte for byte what a parse of the second clone writes
-    for name in first:
-        (second / 'build' / name / 'rsia' / 'summary.json').unlink()
-    parsed = _clone(tmp_path_factory.mktemp('third') / 'ws')
-    run_colcon(['rsia', 'analyze', '--base-paths', str(parsed / 'src'),
-                '--build-base', str(parsed / 'build')], cwd=parsed,
-               check=True)
-    for name, text in _summaries(parsed).items():
-        assert _without_seconds(text) == _without_seconds(
-            again[name].replace(str(second), str(parsed)))
     # the hits were kept in the clone's own cache: its next run reads that
     result = _analyze(second, tmp_path_factory.mktemp('unused'), NO_PARSE)
     assert _found(result) == (0, 0)
+    # and byte for byte what a parse of the same clone writes, without any
+    # cache (the compile databases stay)
+    for name in first:
+        shutil.rmtree(second / 'build' / name / 'rsia')
+    parsed = run_colcon(
+        ['rsia', 'analyze', '--base-paths', str(second / 'src'),
+         '--build-base', str(second / 'build')], cwd=second, check=True)
+    assert SHARED_LINE.search(parsed.stdout) is None
+    for name, text in _summaries(second).items():
+        assert _without_seconds(text) == _without_seconds(again[name])
 
 
 def test_a_damaged_entry_is_ignored_and_written_again(first_clone,
@@ -212,6 +214,38 @@ def test_a_hit_is_used_recently(tmp_path):
     os.utime(stored, (1000, 1000))
     assert cache.lookup(entry, 'w') is not None
     assert stored.stat().st_mtime > time.time() - 60
+
+
+def _write_and_read(entry, cache, header, rounds, results):
+    facts = _big_facts()
+    for _ in range(rounds):
+        cache.store(entry, 'w', [str(header)], facts)
+        found = cache.lookup(entry, 'w')
+        # never half an entry: each reader sees one writer's whole file
+        results.put(found is not None and found[0] == facts)
+
+
+def _big_facts():
+    # large enough that the writes of several processes overlap
+    return model.TuFacts(source='src/a.cpp', diagnostics=[
+        f'note {i}: ' + 'x' * 200 for i in range(2000)])
+
+
+def test_concurrent_writers_and_readers_see_whole_entries(tmp_path):
+    entry, cache, header = _unit(tmp_path)
+    context = multiprocessing.get_context('fork')
+    results = context.Queue()
+    processes = [context.Process(target=_write_and_read, args=(
+        entry, cache, header, 15, results)) for _ in range(4)]
+    for process in processes:
+        process.start()
+    seen = [results.get(timeout=120) for _ in range(4 * 15)]
+    for process in processes:
+        process.join(60)
+        assert process.exitcode == 0
+    assert all(seen)
+    [stored] = _entries(cache.directory)
+    assert not [p for p in stored.parent.iterdir() if p.name.startswith('.')]
 
 
 def test_the_least_recently_used_entries_are_evicted(tmp_path):
