@@ -83,6 +83,20 @@ def statistics():
         return _stats['hits'], _stats['lookups']
 
 
+def statistics_line():
+    """What the shared cache gave this process, or None when it is not set.
+
+    Printed at the end of an analysis: what a CI cache is kept for.
+    """
+    directory = cache_directory()
+    if directory is None:
+        return None
+    hits, lookups = statistics()
+    return safe_files.printable(
+        f'rsia: shared cache: {hits} of {lookups} translation units found '
+        f'in {directory}')
+
+
 def _count_result(hit):
     with _stats_lock:
         _stats['results'] += 1

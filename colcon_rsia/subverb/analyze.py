@@ -114,12 +114,8 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             workers.shutdown()
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
               f'{time.monotonic() - started:.1f}s', flush=True)
-        hits, lookups = shared_cache.statistics()
-        if shared_cache.cache_directory() is not None:
-            # how much a CI cache saved: what it is kept for
-            print(printable(
-                f'rsia: shared cache: {hits} of {lookups} translation units '
-                f'found in {shared_cache.cache_directory()}'), flush=True)
+        if shared_cache.statistics_line():
+            print(shared_cache.statistics_line(), flush=True)
         if summaries or not failures:
             print(total_line(workspace_report(summaries, failures)),
                   flush=True)
