@@ -237,7 +237,8 @@ class SharedCache:
     def with_hidden(self, hidden):
         """This cache for units that see the files of ``hidden`` empty."""
         salt = json.dumps([self.salt, sorted(
-            [self.to_placeholders(f), why] for f, why in hidden.items())])
+            [self.to_placeholders(f), self.to_placeholders(why)]
+            for f, why in hidden.items())])
         return SharedCache(self.directory, self.limit, self.roots, salt)
 
     def to_placeholders(self, text):
