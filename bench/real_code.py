@@ -18,11 +18,15 @@ compares what the summaries record with what the source text shows:
 Ends with one line:
 
 RESULT ws=<name> packages=<n> failed=<n> internal_errors=<n> units=<n>
-units_with_errors=<n> (<pct>%) pub_recall=<pct> (<hit>/<sites>)
+units_with_errors=<n> (<pct>%) units_losing_calls=<n> (<pct>%)
+pub_recall=<pct> (<hit>/<sites>)
 sub_recall=<pct> (<hit>/<sites>) pub_in_nodes=<pct> sub_in_nodes=<pct>
 from_tokens=<n> rejected_summaries=<n> parses_per_unit=<n> s_per_unit=<s>
 peak_mb=<mb>
 
+``units_losing_calls`` counts the units with errors whose parse lost a
+publisher, subscription, publish or timer call the text shows (errors
+that cost no fact are left unrepaired when repairing does not pay);
 ``from_tokens`` counts the recorded call sites whose fact was read from
 tokens (the parse had lost the call); ``rejected_summaries`` the summaries
 the query side would not read (it must be 0); ``parses_per_unit`` the
@@ -170,6 +174,13 @@ def _accepted(build_base, package):
     return True
 
 
+def _units_losing_calls(summary):
+    """The units whose parse lost a call the text shows (newer summaries)."""
+    coverage = summary.get('coverage') if summary else None
+    return sum(1 for u in (coverage or {}).get('units', [])
+               if u.get('lost_calls'))
+
+
 def _units(summary, path):
     """(units, units with errors in package code) of one package.
 
@@ -242,6 +253,7 @@ def main():
         totals['rejected'] += not _accepted(build_base, package)
         totals['units'] += units
         totals['units_with_errors'] += with_errors
+        totals['units_losing_calls'] += _units_losing_calls(summary)
         sites = scan_package(path)
         sites, hits, in_nodes = _recorded(summary, sites)
         for role in (PUBLISHER, SUBSCRIBER):
@@ -268,6 +280,8 @@ def main():
           f'failed={len(failed)} internal_errors={len(internal)} '
           f'units={units} units_with_errors={totals["units_with_errors"]} '
           f'({_percent(totals["units_with_errors"], units)}%) '
+          f'units_losing_calls={totals["units_losing_calls"]} '
+          f'({_percent(totals["units_losing_calls"], units)}%) '
           f'pub_recall={_percent(*pub)} ({pub[0]}/{pub[1]}) '
           f'sub_recall={_percent(*sub)} ({sub[0]}/{sub[1]}) '
           f'pub_in_nodes={_percent(totals[PUBLISHER + "_nodes"], pub[1])} '

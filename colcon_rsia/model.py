@@ -300,7 +300,7 @@ class NodeHandleFact:
     namespace: str                # '' node ns, '~' private, or as written
 
 
-_UNIT_COUNTS = ('errors', 'package_errors', 'repair_rounds')
+_UNIT_COUNTS = ('errors', 'package_errors', 'repair_rounds', 'lost_calls')
 
 
 @dataclass
@@ -362,6 +362,9 @@ class TuFacts:
     errors: int = 0
     package_errors: int = 0
     repair_rounds: int = 0
+    # calls the unit's text shows that its parse lost (errors aside, what
+    # the facts may lack: see analysis._unrecorded_calls)
+    lost_calls: int = 0
     # [rule id, kind, name or place] of the unit's repairs (model mode)
     repairs: List[List[str]] = field(default_factory=list)
 
@@ -577,6 +580,10 @@ class UnitCoverage:
     errors: int = 0            # parse errors left, in all
     package_errors: int = 0    # of which in the package's own files
     repair_rounds: int = 0     # parses after the first (model mode)
+    # publisher/subscription/publish/timer calls the unit's text shows that
+    # the parse lost (an error the repairs left that costs a fact; errors
+    # that cost none are left unrepaired when repairing does not pay)
+    lost_calls: int = 0
     # [rule id, kind, name or place] of the unit's repairs (model mode)
     repairs: List[List[str]] = field(default_factory=list)
 

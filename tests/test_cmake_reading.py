@@ -108,3 +108,45 @@ def test_a_program_no_executable_builds_is_no_node(tmp_path):
     assert summary['diagnostics'] == [
         'src/gamma.cpp: note: defines main() but no executable of '
         'CMakeLists.txt builds it: not a node']
+
+
+def test_a_program_a_command_cmake_could_not_run_builds(tmp_path):
+    package = tmp_path / 'src' / 'mapper'
+    (package / 'mapper' / 'dev').mkdir(parents=True)
+    (package / 'package.xml').write_text(
+        '<?xml version="1.0"?><package format="3"><name>mapper</name>'
+        '<version>0.0.1</version><description>d</description>'
+        '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+        '<buildtool_depend>ament_cmake</buildtool_depend>'
+        '<depend>rclcpp</depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>')
+    # the command that makes executables comes from a library's CMake
+    # module that is not there: CMake fails, the text reader knows no
+    # such command; the sources lie in a subdirectory with its own
+    # CMakeLists.txt
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\nproject(mapper)\n'
+        'find_package(mapping_core REQUIRED)\n'
+        'include("${MAPPING_CORE_CMAKE_DIR}/functions.cmake")\n'
+        'add_subdirectory(mapper)\n')
+    (package / 'mapper' / 'CMakeLists.txt').write_text(
+        'mapping_binary(mapper_node\n  SRCS\n    node_main.cpp\n)\n')
+    (package / 'mapper' / 'node_main.cpp').write_text(
+        NODE.format(name='mapper'))
+    # named by no command: no node, as before
+    (package / 'mapper' / 'dev' / 'scratch_main.cpp').write_text(
+        NODE.format(name='scratch'))
+    run_colcon(['rsia', 'analyze', '--base-paths', str(tmp_path / 'src')],
+               cwd=tmp_path, check=True)
+    summary = json.loads(
+        (tmp_path / 'build' / 'mapper' / 'rsia' / 'summary.json').read_text())
+    nodes = {n['id']: [p['topic'] for p in n['publishers']]
+             for n in summary['nodes']}
+    assert nodes == {'mapper/mapper_node': ['mapper_out']}
+    notes = [d for d in summary['diagnostics'] if ': note:' in d]
+    assert notes == [
+        'mapper/dev/scratch_main.cpp: note: defines main() but no executable '
+        'of CMakeLists.txt builds it: not a node',
+        'mapper/node_main.cpp: note: defines main() and CMakeLists.txt names '
+        "it in a command CMake could not run here: node 'mapper_node' named "
+        "after that command's first argument"]

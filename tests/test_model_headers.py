@@ -111,6 +111,9 @@ def test_model_facts_equal_exact_facts(ros1_workspace, package, tmp_path):
     if not entries:
         pytest.skip(f'{package} compiles no translation unit (header-only)')
     timings = []
+    # the units with ROS facts: a main() that only runs a class another
+    # unit defines (ekf_node's FilterNode<Ekf>) has none of its own
+    proving = []
     for entry in entries:
         started = time.monotonic()
         exact_tu = _parse(file=entry.file, arguments=entry.arguments,
@@ -132,11 +135,12 @@ def test_model_facts_equal_exact_facts(ros1_workspace, package, tmp_path):
         assert model == exact, \
             f'{entry.file}: the model mode gives other facts\n' + \
             _differences(exact, model)
-        assert any(exact[key] for key in (
-            'publishers', 'subscribers', 'publish_sites', 'timers')), \
-            f'{entry.file}: a TU without ROS facts proves nothing'
+        if any(exact[key] for key in (
+                'publishers', 'subscribers', 'publish_sites', 'timers')):
+            proving.append(entry.file)
         timings.append((os.path.basename(entry.file), exact_seconds,
                         model_seconds))
+    assert proving, f'{package}: units without ROS facts prove nothing'
     for name, exact_seconds, model_seconds in timings:
         print(f'{package}/{name}: exact {exact_seconds:.2f} s, '
               f'model {model_seconds:.2f} s')

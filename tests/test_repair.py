@@ -770,6 +770,68 @@ def test_call_sites_in_headers_no_unit_includes_are_not_counted(tmp_path):
         'role': 'publisher', 'api': 'create_publisher'}]
 
 
+# a statement no repair makes whole: its call is read from the tokens
+LOST_CALL = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+ros::Publisher kept;
+
+void keep(ros::NodeHandle& nh)
+{
+  kept = nh.advertise<std_msgs::String>("kept", 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "talker");
+  ros::NodeHandle nh;
+  keep(nh);
+  // (far enough from the call the parse kept: the coverage matches calls
+  // to facts a few lines apart, as a call may span lines)
+  ros::Publisher pub = nh.advertise<std_msgs::String>(("chatter"), , 1);
+  ros::spin();
+}
+"""
+
+
+def test_a_unit_whose_parse_lost_a_call_says_so(tmp_path):
+    summary = analyse_source(tmp_path, 'talker', LOST_CALL,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    assert unit.package_errors >= 1
+    # the broken advertise (its fact read from tokens, its name through
+    # the parentheses), not the other
+    assert unit.lost_calls == 1
+    [node] = summary.nodes
+    assert sorted(p.topic for p in node.publishers) == ['chatter', 'kept']
+
+
+def test_scripts_no_node_runs_are_unread_not_missed(tmp_path):
+    # a C++ package's Python tool its CMake installs as no node: its call
+    # sites are in code no node runs ('unread'), not facts the analysis
+    # missed ('none'), and not absent from the coverage either
+    from colcon_rsia.package.runner import analyze
+    package = _package(tmp_path)
+    (package / 'scripts').mkdir()
+    (package / 'scripts' / 'echo_tool.py').write_text(
+        'import rclpy\n'
+        'from std_msgs.msg import String\n'
+        'node = rclpy.create_node("echo_tool")\n'
+        'node.create_subscription(String, "detections", print, 1)\n')
+    outcome = analyze(
+        name='acme_vision', package_type='ros.ament_cmake', path=str(package),
+        build_base=str(tmp_path / 'build' / 'acme_vision'), jobs=1,
+        header_mode='model', workspace_package_dirs=[str(package)],
+        without_build=True)
+    by_file = {(c.file, c.role): c.recorded
+               for c in outcome.summary.coverage.call_sites}
+    assert by_file == {
+        ('scripts/echo_tool.py', 'subscriber'): 'unread',
+        ('src/detector_node.cpp', 'publisher'): 'node',
+        ('src/detector_node.cpp', 'subscriber'): 'node'}
+
+
 @pytest.mark.parametrize('line,expected', [
     # a template argument is a type, a value in an expression an enumerator
     ('std::unique_ptr<bond::Bond> bond_;', ('type', 'bond::Bond')),

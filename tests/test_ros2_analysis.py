@@ -65,6 +65,9 @@ def test_errors_are_left_only_where_the_ast_has_every_call(ros2_build_base):
                  if c['file'] in with_errors]
         assert all(c['recorded'] != 'none' and c['origin'] == 'ast'
                    for c in sites), sites
+        # (and the coverage says so: the errors left cost no call)
+        assert [u['file'] for u in coverage['units'] if u['lost_calls']] \
+            == []
 
 
 def _graph(build_base, *launch):

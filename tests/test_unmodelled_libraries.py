@@ -131,3 +131,43 @@ def test_an_api_declared_by_the_package_that_implements_it(tmp_path):
     assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
         ('out', 'image_transport::ImageTransport::advertise',
          'sensor_msgs::Image')]
+
+
+# image_transport's republish: an output transport loaded as a plugin, its
+# publisher made through the plugin interface (no model of it: the repairs
+# declare image_transport::PublisherPlugin, whose advertise is then a
+# member every catch-all has, called like a functor)
+REPUBLISH = r"""
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <image_transport/publisher_plugin.h>
+#include <pluginlib/class_loader.h>
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "image_republisher");
+  ros::NodeHandle nh;
+  image_transport::ImageTransport it(nh);
+  typedef image_transport::PublisherPlugin Plugin;
+  pluginlib::ClassLoader<Plugin> loader("image_transport",
+                                        "image_transport::PublisherPlugin");
+  boost::shared_ptr<Plugin> pub(loader.createInstance("raw_pub"));
+  pub->advertise(nh, "out", 1, image_transport::SubscriberStatusCallback(),
+                 image_transport::SubscriberStatusCallback(), ros::VoidPtr(),
+                 false);
+  image_transport::Subscriber sub = it.subscribe("in", 1, &callback);
+  ros::spin();
+}
+"""
+
+
+def test_a_plugin_interface_call_is_named_by_the_objects_class(tmp_path):
+    summary = analyse_source(tmp_path, 'republish', REPUBLISH)
+    [node] = summary.nodes
+    # the topic is the call's second argument (its first is the handle);
+    # before, the functor's object `pub->advertise` was taken for the
+    # first argument and the call for NodeHandle::advertise by its name
+    assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
+        ('out', 'image_transport::PublisherPlugin::advertise',
+         'sensor_msgs::Image')]
+    assert [s.topic for s in node.subscribers] == ['in']

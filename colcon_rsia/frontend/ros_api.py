@@ -223,6 +223,16 @@ CALLS = {
         camera=True),
     'image_transport::Publisher::publish': Api(PUBLISH),
     'image_transport::CameraPublisher::publish': Api(PUBLISH),
+    # a transport's plugin interface, which ImageTransport and republish
+    # call through: (handle, base_topic, ...); ROS 1 takes a queue size
+    # before the callback, ROS 2 none
+    'image_transport::PublisherPlugin::advertise': Api(
+        PUBLISHER, name_arg=1, nh_arg=0, msg_type=IMAGE_MSG,
+        status_callback_args=(3, 4)),
+    'image_transport::PublisherPlugin::publish': Api(PUBLISH),
+    'image_transport::SubscriberPlugin::subscribe': Api(
+        SUBSCRIBER, name_arg=1, nh_arg=0, callback_arg=FIRST_CALLBACK,
+        msg_type=IMAGE_MSG),
     # image_transport (ROS 2) free functions: (node, base_topic, ...)
     'image_transport::create_publisher': Api(
         PUBLISHER, name_arg=1, msg_type='sensor_msgs::msg::Image'),

@@ -41,6 +41,8 @@ from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.nodes import find_nodelets
 from colcon_rsia.package.nodes import find_plugins
 from colcon_rsia.package.nodes import skipped_executable
+from colcon_rsia.package.nodes import target_naming
+from colcon_rsia.package.nodes import TEXT_READER
 from colcon_rsia.package.workers import check_stop
 
 
@@ -188,7 +190,7 @@ def _coverage(path, units, nodes):
         units=[model.UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
             package_errors=unit.package_errors,
-            repair_rounds=unit.repair_rounds,
+            repair_rounds=unit.repair_rounds, lost_calls=unit.lost_calls,
             repairs=[[rule, kind, _relative(name, path)]
                      for rule, kind, name in unit.repairs])
                for file, unit in sorted(units.items())],
@@ -416,6 +418,9 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     facts.package_errors = sum(
         1 for e in errors if e[1] and _inside(e[1], package_path))
     facts.repair_rounds = rounds
+    # (without an error in the package's code the parse lost nothing)
+    facts.lost_calls = _unrecorded_calls(tu, facts, package_path) \
+        if facts.package_errors else 0
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})
@@ -446,8 +451,10 @@ def build_summary(*, name, path, build_base, units, parsed=None):
     """
     summary = model.PackageSummary(
         package=name, path=path, tool_version=__version__)
+    read_by = []
     executables = find_executables(package_path=path, build_base=build_base,
-                                   diagnostics=summary.diagnostics)
+                                   diagnostics=summary.diagnostics,
+                                   read_by=read_by)
     executable_sources = {s for sources in executables.values()
                           for s in sources}
     unreadable = safe_files.unreadable_files(path, ['CMakeLists.txt'])
@@ -464,6 +471,18 @@ def build_summary(*, name, path, build_base, units, parsed=None):
         if file in executable_sources or not _defines_main(unit):
             continue
         relative = os.path.relpath(file, path)
+        # CMake could not run: a command of a module the text reader does
+        # not know may build it (a guess, said so)
+        target = target_naming(path, file) \
+            if targets_known and read_by == [TEXT_READER] else None
+        if target is not None and target not in executables:
+            executables[target] = [file]
+            executable_sources.add(file)
+            summary.diagnostics.append(
+                f'{relative}: note: defines main() and CMakeLists.txt names '
+                f"it in a command CMake could not run here: node '{target}' "
+                "named after that command's first argument")
+            continue
         if targets_known:
             executable_sources.add(file)
             summary.diagnostics.append(

@@ -229,6 +229,8 @@ def package_report(summary):
     report['units'] = len(coverage.units)
     report['units_with_errors'] = sum(
         1 for u in coverage.units if u.package_errors)
+    report['units_losing_calls'] = sum(
+        1 for u in coverage.units if u.lost_calls)
     report['units_repaired'] = sum(
         1 for u in coverage.units if u.repair_rounds)
     report['call_sites'] = {}
@@ -289,6 +291,8 @@ def workspace_report(summaries, failures=None, not_analysed=()):
             1 for p in packages if p['status'] == NOT_ANALYSED),
         'units': sum(p['units'] for p in analysed),
         'units_with_errors': sum(p['units_with_errors'] for p in analysed),
+        'units_losing_calls': sum(
+            p.get('units_losing_calls', 0) for p in analysed),
         'unresolved_topics': sum(
             len(p['unresolved_topics']) for p in analysed),
         'unnamed_nodes': sum(len(p['unnamed_nodes']) for p in analysed),
@@ -330,7 +334,9 @@ def total_line(report):
         (f'; {tokens} read from tokens where the parse failed'
          if tokens else '') +
         f"); {total['units_with_errors']} of "
-        f"{total['units']} translation units with errors in package code; "
+        f"{total['units']} translation units with errors in package code" +
+        (f" ({total.get('units_losing_calls', 0)} of them losing calls)"
+         if total['units_with_errors'] else '') + '; ' +
         f"{total['failed']} packages failed; see 'colcon rsia coverage'")
 
 
@@ -344,7 +350,7 @@ def report_to_text(report, *, missed=False, repairs=False):
     :param missed: list each call site without a fact
     :param repairs: list each repair of the model mode, with its rule
     """
-    lines = [f"{'package':<40} {'units':>6} {'errors':>6} "
+    lines = [f"{'package':<40} {'units':>6} {'errors':>6} {'lost':>6} "
              f"{'pub':>9} {'sub':>9} {'unres.':>6} {'unnamed':>7}"]
     for p in report['packages']:
         if p['status'] != ANALYSED:
@@ -354,6 +360,7 @@ def report_to_text(report, *, missed=False, repairs=False):
         calls = p['call_sites']
         lines.append(
             f"{p['package']:<40} {p['units']:>6} {p['units_with_errors']:>6} "
+            f"{p.get('units_losing_calls', 0):>6} "
             f'{_fraction(calls[PUBLISHER]):>9} '
             f'{_fraction(calls[SUBSCRIBER]):>9} '
             f"{len(p['unresolved_topics']):>6} {len(p['unnamed_nodes']):>7}"

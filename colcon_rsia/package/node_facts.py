@@ -101,8 +101,49 @@ def merge_facts(units):
     merged = model.TuFacts(source='')
     for unit in units:
         merged.extend(unit)
+    _link_by_name(merged)
     merged.calls += _override_calls(merged)
     return merged
+
+
+def _usr_name(usr):
+    """The part of a function's USR that names it, before its signature."""
+    name, hash_, _ = usr.partition('#')
+    return name if hash_ and '@F@' in name else None
+
+
+def _link_by_name(facts):
+    """Calls of a function declared in one unit and defined in another.
+
+    A function's id (its USR) spells its parameters' types. In a unit
+    where the model mode left a parameter's type undeclared (no repair
+    paid there), the declaration's id differs from that of the
+    definition another unit repaired, and the call reached nothing. The
+    linker's rule without the types: a called function no unit defines is
+    the one definition of the same qualified name, when there is one.
+    """
+    defined = {f.id for f in facts.functions}
+    by_name = {}
+    for function in facts.functions:
+        name = _usr_name(function.id)
+        if name is not None:
+            by_name.setdefault(name, set()).add(function.id)
+
+    def linked(callee):
+        if callee in defined:
+            return callee
+        found = by_name.get(_usr_name(callee) or '', ())
+        return next(iter(found)) if len(found) == 1 else callee
+    facts.calls = [c if linked(c.callee) == c.callee
+                   else replace(c, callee=linked(c.callee))
+                   for c in facts.calls]
+    facts.bindings = [b if linked(b.callee) == b.callee
+                      else replace(b, callee=linked(b.callee))
+                      for b in facts.bindings]
+    facts.string_arguments = [
+        a if linked(a.callee) == a.callee
+        else replace(a, callee=linked(a.callee))
+        for a in facts.string_arguments]
 
 
 def _override_calls(facts):

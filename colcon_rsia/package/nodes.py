@@ -24,7 +24,8 @@ import defusedxml.ElementTree as ElementTree
 NODELET_BASE_CLASS = 'nodelet::Nodelet'
 
 
-def find_executables(*, package_path, build_base, diagnostics=None):
+def find_executables(*, package_path, build_base, diagnostics=None,
+                     read_by=None):
     """Return {executable name: [absolute source paths]} of a package.
 
     From the codemodel of the package's build, else from our own configure
@@ -33,16 +34,56 @@ def find_executables(*, package_path, build_base, diagnostics=None):
 
     :param diagnostics: a list that receives why CMake could not be asked
       when ``CMakeLists.txt`` is read here
+    :param read_by: a list that receives who read the CMake code: CMAKE,
+      or TEXT_READER (whose targets are those of ``add_executable`` only)
     """
+    read_by = [] if read_by is None else read_by
     executables = executables_from_codemodel(build_base)
     if executables is not None:
+        read_by.append(CMAKE)
         return executables
     configured = configure_package(package_path, build_base)
     if configured.executables is not None:
+        read_by.append(CMAKE)
         return configured.executables
     if configured.problem and diagnostics is not None:
         diagnostics.append(configured.problem)
+    read_by.append(TEXT_READER)
     return _executables_from_cmakelists(package_path)
+
+
+CMAKE = 'cmake'
+TEXT_READER = 'text'
+# a command call without nested parentheses: name(arguments)
+_COMMAND_CALL = re.compile(r'\b(\w+)\s*\(([^()]*)\)')
+
+
+def target_naming(package_path, source):
+    """The target a command of the CMake code may build `source` into.
+
+    For the text reader, which knows no command but ``add_executable``:
+    the first argument of a command that names the source's file
+    (``google_binary(cartographer_node SRCS node_main.cc)``, a command
+    an unknown CMake module defines; a target-making command takes the
+    target's name first), or None when no command names the file.
+    """
+    name = os.path.basename(source)
+    # the CMakeLists.txt of its directory and of those above it, up to the
+    # package's (add_subdirectory(): a source is named where it lies)
+    texts = [read_cmakelists(package_path)]
+    directory = os.path.dirname(os.path.abspath(source))
+    root = os.path.abspath(package_path)
+    while directory.startswith(root + os.sep):
+        texts.append(cmakelists_text(directory) or '')
+        directory = os.path.dirname(directory)
+    for text in texts:
+        for match in _COMMAND_CALL.finditer(text):
+            words = match.group(2).split()
+            if any(os.path.basename(w.strip('"')) == name
+                   for w in words[1:]) and \
+                    re.fullmatch(r'[A-Za-z_][\w.+-]*', words[0]):
+                return words[0]
+    return None
 
 
 def skipped_executable(executable, sources, *, package_path, build_base,

@@ -20,6 +20,7 @@ from colcon_rsia.environment_variables import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.model import INDEPENDENT
 from colcon_rsia.model import PackageSummary
+from colcon_rsia.package import coverage
 from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
@@ -267,6 +268,12 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
                                key=lambda n: n.id)
         summary.diagnostics += python.diagnostics
         summary.coverage.call_sites += python.coverage.call_sites
+    elif package_type in MIXED_PACKAGE_TYPES:
+        # scripts nothing installs as a node (tools, tests, examples): their
+        # call sites are in code no node runs, said as such, not as misses
+        summary.coverage.call_sites += coverage.call_site_coverage(
+            coverage.package_call_sites(path, python=True), nodes=[],
+            units=[])
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
     store.write_summary(build_base, summary)

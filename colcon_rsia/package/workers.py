@@ -131,7 +131,7 @@ START_METHOD = 'forkserver'
 # imported once by the fork server, so that every worker starts with them
 # ('__main__': the colcon script, which each worker would run again)
 PRELOAD = [
-    '__main__', 'clang.cindex', 'colcon_rsia.package.analysis',
+    '__main__', 'colcon_rsia.package.fork_server', 'clang.cindex', 'colcon_rsia.package.analysis',
     'colcon_rsia.package.workers', 'colcon_rsia.frontend.cpp',
     'colcon_rsia.frontend.cpp.model_mode',
     'colcon_rsia.frontend.cpp.model_mode.recovery',

@@ -18,6 +18,7 @@ from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
+from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import plain_handle
@@ -36,6 +37,26 @@ _CALLABLE_TYPE = re.compile(r'\b(?:std|boost)::(?:function<|_Bind<)')
 def is_callable(cursor):
     """A variable/field holding a callable: std::function, bind results."""
     return bool(_CALLABLE_TYPE.search(cursor.type.get_canonical().spelling))
+
+
+# types no callable converts to: a NodeHandle or name a constructor takes
+# beside its callback (SimpleActionServer(nh, name, callback, ...))
+_NOT_CALLABLE_KINDS = frozenset({
+    ci.TypeKind.BOOL, ci.TypeKind.INT, ci.TypeKind.UINT, ci.TypeKind.LONG,
+    ci.TypeKind.ULONG, ci.TypeKind.LONGLONG, ci.TypeKind.ULONGLONG,
+    ci.TypeKind.FLOAT, ci.TypeKind.DOUBLE, ci.TypeKind.ENUM})
+
+
+def _holds_no_callable(parameter):
+    """Whether a parameter's type is one no callback can have."""
+    canonical = parameter.type.get_canonical()
+    if canonical.kind in (ci.TypeKind.LVALUEREFERENCE,
+                          ci.TypeKind.RVALUEREFERENCE):
+        canonical = canonical.get_pointee()
+    if is_callable(parameter) or is_callable_argument(parameter):
+        return False  # (a signature may name a string: not the type's)
+    return canonical.kind in _NOT_CALLABLE_KINDS or \
+        is_node_handle(parameter) or is_string(parameter)
 
 
 class Callbacks:
@@ -168,7 +189,7 @@ class Callbacks:
                         self._registered.add(lid)
                         return lid, child
             if ref.kind in HANDLE_KINDS and is_callable(ref) or \
-                    ref.kind == CK.PARM_DECL:
+                    ref.kind == CK.PARM_DECL and not _holds_no_callable(ref):
                 # resolved at the end of the walk: see
                 # _resolve_stored_callbacks (a parameter: what the callers
                 # pass, see _bind_parameters)

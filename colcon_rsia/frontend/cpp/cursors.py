@@ -12,6 +12,7 @@ of the workspace's wrappers (:mod:`colcon_rsia.frontend.cpp.wrappers`).
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 
@@ -294,6 +295,23 @@ def is_written(argument):
     return next(iter(argument.get_tokens()), None) is not None
 
 
+def call_arguments(call):
+    """The arguments a call passes to its callee's parameters.
+
+    A call of a member ``operator()`` (a functor; a catch-all's field
+    called like a method, ``helper->advertise(nh, "out", 1)``) lists the
+    object called as its first argument: it is no parameter's, and is
+    left out (it is the expression the call starts with).
+    """
+    arguments = list(call.get_arguments())
+    ref = call.referenced
+    if arguments and ref is not None and ref.spelling == 'operator()' and \
+            ref.kind in (CK.CXX_METHOD, CK.FUNCTION_TEMPLATE) and \
+            arguments[0].extent.start.offset == call.extent.start.offset:
+        return arguments[1:]
+    return arguments
+
+
 def written_arguments(arguments):
     """The arguments written at a call (defaulted ones left out)."""
     return [a for a in arguments if is_written(a)]
@@ -426,9 +444,42 @@ def repaired_call_name(call, ref):
                     CK.VAR_DECL, CK.FIELD_DECL) and \
                     member.semantic_parent is not None and \
                     member.semantic_parent.kind in CLASS_KINDS:
-                return qualified_name(member)
+                name = qualified_name(member)
+                if name.startswith(REPAIRED_PREFIX):
+                    # a name every catch-all has: the class of the object
+                    # it is reached through names the API, when the table
+                    # knows it (else the name alone, see walker._call)
+                    written = _member_of_object_class(current, member)
+                    return written if written and \
+                        ros_api.lookup_call(written) else name
+                return name
             return None
     return None
+
+
+def _member_of_object_class(member_ref, member):
+    """``ns::C::name`` of a member reached through an object of class C.
+
+    (``plugin->advertise(...)`` on a ``shared_ptr<ns::C>`` of a class the
+    repairs declared: the member is the catch-all's, the class the code's.)
+    """
+    children = child_cursors(member_ref)
+    if member_ref.kind != CK.MEMBER_REF_EXPR or not children:
+        return None
+    operand = children[0]
+    while True:
+        written = normalize_msg_type(operand.type.get_canonical().spelling)
+        owner = re.sub(r'<.*', '', written or '')
+        inner = child_cursors(operand)
+        # (past the implicit conversion to the catch-all base that holds
+        # the member)
+        if not owner.startswith(REPAIRED_PREFIX) or len(inner) != 1:
+            break
+        operand = inner[0]
+    if not owner or owner.startswith(REPAIRED_PREFIX) or \
+            not re.fullmatch(r'[\w:]+', owner):
+        return None
+    return f'{owner}::{member.spelling}'
 
 
 def _through_qualifying_class(call, ref):

@@ -607,7 +607,11 @@ class _Reader(CallFacts):
         """(topic as written, is it a literal, handle of its variable)."""
         if argument is None:
             return None, False, None
-        tokens = self.tokens[argument[0]:argument[1]]
+        start, end = argument
+        while end - start > 2 and self.tokens[start].text == '(' and \
+                self.pairs.get(start) == end - 1:
+            start, end = start + 1, end - 1  # ("name"): the name
+        tokens = self.tokens[start:end]
         literal = string_literal(tokens)
         if literal is not None:
             return literal, True, None

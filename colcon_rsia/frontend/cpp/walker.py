@@ -35,6 +35,7 @@ from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import aliased_class
 from colcon_rsia.frontend.cpp.cursors import base_class_names
+from colcon_rsia.frontend.cpp.cursors import call_arguments
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -511,7 +512,7 @@ class _Walker(Callbacks):
                 ros_api.lookup_call(name) is None:
             # (an API is the API wherever it is declared: in the package
             # that implements it, image_transport's own advertise() is one)
-            self._package_call(ctx, ref, cursor, list(cursor.get_arguments()))
+            self._package_call(ctx, ref, cursor, call_arguments(cursor))
             return
         if name.startswith(REPAIRED_PREFIX) or \
                 ref.spelling == REPAIRED_CONSTRUCTOR:
@@ -533,7 +534,7 @@ class _Walker(Callbacks):
                     self.is_workspace_declaration(ref):
                 self._wrappers.record_call(cursor, ctx, stack, ref)
             return
-        arguments = list(cursor.get_arguments())
+        arguments = call_arguments(cursor)
         self._handlers[api.role](cursor, ctx, stack, api, name, arguments)
 
     def _dependent_call(self, cursor, ctx, stack):
@@ -551,7 +552,7 @@ class _Walker(Callbacks):
         self._note_resolved(cursor)
         api = ros_api.lookup_call(name)
         self._handlers[api.role](
-            cursor, ctx, stack, api, name, list(cursor.get_arguments()))
+            cursor, ctx, stack, api, name, call_arguments(cursor))
 
     def dependent_call_name(self, cursor):
         """The API a call on a template-dependent object names, or None."""
@@ -576,7 +577,7 @@ class _Walker(Callbacks):
             return None
         return ros_api.dependent_method(
             rest[0], ros2=self.ros2, arguments=len(written_arguments(
-                list(cursor.get_arguments()))))
+                call_arguments(cursor))))
 
     def publish_site(self, ctx, stack, cursor, api, handle):
         self.facts.publish_sites.append(model.PublishSite(

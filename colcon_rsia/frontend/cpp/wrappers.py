@@ -34,6 +34,7 @@ import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.cursors import call_arguments
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
 from colcon_rsia.frontend.cpp.cursors import child_cursors
@@ -211,7 +212,7 @@ class Summaries:
         if api is None and ref is None:
             name = self.walker.dependent_call_name(call)
             api = ros_api.lookup_call(name) if name else None
-        arguments = list(call.get_arguments())
+        arguments = call_arguments(call)
         if api is not None and api.role in (ROLE_PUBLISHER, ROLE_SUBSCRIBER):
             endpoints.append(self._endpoint(
                 call, api, arguments, params, type_params,
@@ -288,7 +289,7 @@ class Summaries:
         summary = self.of(ref)
         if not summary.endpoints and not summary.publishes_members:
             return
-        arguments = list(cursor.get_arguments())
+        arguments = call_arguments(cursor)
         target = self.walker.target(cursor, stack)
         obj = first_handle(call_object(cursor))
         name = qualified_name(ref)
