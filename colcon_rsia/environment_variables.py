@@ -49,5 +49,17 @@ UNIT_TIMEOUT_ENVIRONMENT_VARIABLE = EnvironmentVariable(
     'The seconds rsia may spend on one translation unit (its parses and '
     'their walk) before it gives the unit up (default: 900)')
 
+"""Environment variable: a fact cache that runs, clones and machines share"""
+CACHE_DIR_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_CACHE_DIR',
+    'A directory where rsia keeps the facts of translation units by their '
+    'content, for every run, checkout and machine that names it')
+
+"""Environment variable: the size of the shared fact cache, in MB"""
+CACHE_MB_ENVIRONMENT_VARIABLE = EnvironmentVariable(
+    'COLCON_RSIA_CACHE_MB',
+    'The size COLCON_RSIA_CACHE_DIR is kept under, in megabytes, by '
+    'removing the least recently used facts (default: 1024)')
+
 # the name it had before it followed colcon's COLCON_ prefix; still read
 OLD_CLANG_RESOURCE_DIR_NAME = 'RSIA_CLANG_RESOURCE_DIR'

@@ -183,6 +183,9 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             f'packages ({nodes} nodes) in '
             f'{time.monotonic() - self._started:.1f}s; '
             "see 'colcon rsia graph' and 'colcon rsia impact'", flush=True)
+        from colcon_rsia.package.shared_cache import statistics_line
+        if statistics_line():
+            print(statistics_line(), flush=True)
         if not analysed:
             return
         from colcon_rsia.package.coverage import total_line

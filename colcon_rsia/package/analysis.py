@@ -25,6 +25,7 @@ from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
 from colcon_rsia.package import coverage
 from colcon_rsia.package import plugin_hosts
+from colcon_rsia.package import shared_cache
 from colcon_rsia.package import store
 from colcon_rsia.package import workers
 from colcon_rsia.package.assembly import build_node
@@ -130,12 +131,19 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
         precompiled_dir = store.precompiled_dir(build_base)
 
+    try:
+        shared = shared_cache.SharedCache.from_environment(
+            package_path=path, build_base=build_base,
+            workspace_package_dirs=workspace_package_dirs,
+            resource_dir=resource_dir) if use_cache else None
+    except ValueError as e:
+        raise AnalysisError(str(e)) from None
     units, diagnostics = workers.parse_units(
         entries, unit_facts=_unit_facts, package_path=path,
         resource_dir=resource_dir, precompiled_dir=precompiled_dir,
         cache=store.cache_dir(build_base) if use_cache else None,
         jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
-        wrappers=store.read_workspace_wrappers(
+        shared=shared, wrappers=store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units,
@@ -341,12 +349,13 @@ def _inside(file, directory):
 
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
                 wrappers=(), wrappers_digest=None, precompiled_dir=None,
-                repair=REPAIR_WHEN_IT_PAYS):
+                repair=REPAIR_WHEN_IT_PAYS, shared=None):
     """Facts of one TU, parsed (in a worker process: see workers.py).
 
     :param hidden: {file: why} of files libclang is given as empty
     :param wrappers: the other packages' wrapper summaries (parse_units),
       and ``wrappers_digest`` theirs (store.wrappers_digest)
+    :param shared: the shared_cache.SharedCache the facts are kept in too
     """
     hidden = hidden or {}
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
@@ -427,6 +436,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         inputs = [i for i in includes if f'/{store.RSIA_DIRNAME}/stubs/' not in i]
         write_cached_facts(cache_file, entry, [entry.file] + inputs, facts,
                            wrappers_digest)
+        if shared is not None:
+            shared.store(entry, wrappers_digest, inputs, facts)
     return facts, list(facts.diagnostics)
 
 

@@ -40,6 +40,7 @@ from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import \
     CMAKE_WITHOUT_SANDBOX_ENVIRONMENT_VARIABLE
 from colcon_rsia.package import sandbox
+from colcon_rsia.package import shared_cache
 from colcon_rsia.package import store
 
 # the dependency provider (cmake_language(SET_DEPENDENCY_PROVIDER)) came
@@ -198,6 +199,15 @@ def configure_package(package_path, build_base):
     cached = _read_result(result_file, key)
     if cached is not None:
         return cached
+    # the key is the content of the package's CMake code, wherever it is:
+    # another clone's result serves (its sources named by placeholders)
+    shared = shared_cache.SharedCache.of_package(package_path, build_base)
+    found = shared.lookup_result('cmake', key) if shared else None
+    if found is not None:
+        cached = _result(dict(found, key=key), key)
+        if cached is not None:
+            _keep(result_file, key, cached)
+            return cached
     with _NOT_KEPT_LOCK:
         if (scratch, key) in _NOT_KEPT:
             # asked again for the same package in this run: the same answer
@@ -208,14 +218,21 @@ def configure_package(package_path, build_base):
         with _NOT_KEPT_LOCK:
             _NOT_KEPT[(scratch, key)] = configured
         return configured
-    try:
-        store.write_json_atomically(result_file, {
-            'key': key, 'executables': configured.executables,
+    data = _keep(result_file, key, configured)
+    if shared is not None:
+        shared.store_result('cmake', key, data)
+    return configured
+
+
+def _keep(result_file, key, configured):
+    data = {'key': key, 'executables': configured.executables,
             'registrations': configured.registrations,
-            'problem': configured.problem})
+            'problem': configured.problem}
+    try:
+        store.write_json_atomically(result_file, data)
     except OSError:
         pass  # a result that cannot be kept only costs time
-    return configured
+    return data
 
 
 # results that may not repeat (a time-out under load, a full disk, no
@@ -349,14 +366,20 @@ def _content_key(cmake_files, version):
 def _read_result(result_file, key):
     try:
         with open(result_file, encoding='utf-8') as h:
-            data = json.load(h)
+            return _result(json.load(h), key)
+    except (OSError, ValueError):
+        return None
+
+
+def _result(data, key):
+    try:
         if data['key'] != key:
             return None
         return Configured(
             executables=data['executables'],
             registrations=[tuple(r) for r in data['registrations']],
             problem=data['problem'])
-    except (OSError, ValueError, KeyError, TypeError):
+    except (KeyError, TypeError):
         return None
 
 

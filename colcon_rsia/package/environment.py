@@ -52,6 +52,7 @@ def environment_problems():
     """One sentence for each of our variables that holds a bad value."""
     # (imported here: the workers' module loads multiprocessing)
     from colcon_rsia.package.workers import unit_timeout_problem
+    from colcon_rsia.package.shared_cache import settings_problems
     problems = []
     size_problem = max_file_mb_problem()
     if size_problem:
@@ -59,6 +60,7 @@ def environment_problems():
     timeout_problem = unit_timeout_problem()
     if timeout_problem:
         problems.append(timeout_problem)
+    problems += settings_problems()
     for name, good, expected in _CHECKS:
         value = os.environ.get(name)
         if value and not good(value):

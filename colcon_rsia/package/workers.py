@@ -45,6 +45,7 @@ from colcon_rsia.environment_variables import \
 from colcon_rsia.package import store
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
+from colcon_rsia.package.cache import write_cached_facts
 
 
 class Interrupted(Exception):
@@ -157,7 +158,7 @@ class WorkersUnavailable(Exception):
 
 def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
                 jobs, timeout, wrappers=(), precompiled_dir=None,
-                repair=None):
+                repair=None, shared=None):
     """Facts of a package's TUs; return (facts by file, messages).
 
     The units whose facts are cached are read here; the others are parsed
@@ -172,12 +173,17 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
       packages, for the calls of functions whose body is out of sight
     :param float timeout: the seconds one unit may take
     :param repair: when the model mode repairs a unit (for unit_facts)
+    :param shared: the shared_cache.SharedCache looked in after ``cache``
+      (and given to unit_facts, which stores the facts it makes), or None
     :raises Interrupted: when :func:`request_stop` was called
     """
     hidden = _unsafe_includes(entries, package_path)
     # (the cached facts of a unit depend on its repairs too)
     digest = f'{store.wrappers_digest(wrappers)}:{repair}'
-    found = [_checked_or_cached(entry, package_path, cache, digest)
+    if shared is not None:
+        # (libclang sees the hidden files empty: other facts)
+        shared = shared.with_hidden(hidden)
+    found = [_checked_or_cached(entry, package_path, cache, digest, shared)
              for entry in entries]
     todo = [i for i, result in enumerate(found) if result is None]
     results, diagnostics = parse(
@@ -185,8 +191,10 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
             unit_facts=unit_facts, package_path=package_path,
             resource_dir=resource_dir, cache=cache, hidden=hidden,
             wrappers=wrappers, wrappers_digest=digest,
-            precompiled_dir=precompiled_dir, repair=repair),
+            precompiled_dir=precompiled_dir, repair=repair, shared=shared),
         jobs=jobs, timeout=timeout, cleanup_dirs=[cache, precompiled_dir])
+    if shared is not None and todo:
+        shared.evict()  # what the workers added may pass the size limit
     for i, (parsed, result) in zip(todo, results):
         found[i] = result if parsed else (None, [
             f'{_relative(entries[i], package_path)}: not analysed: {result}'])
@@ -228,11 +236,12 @@ def _unsafe_includes(entries, package_path):
         skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
 
 
-def _checked_or_cached(entry, package_path, cache, wrappers_digest):
+def _checked_or_cached(entry, package_path, cache, wrappers_digest,
+                       shared=None):
     """(facts, messages) of a TU known without parsing it, or None.
 
-    Its facts from the cache when nothing it reads changed; nothing when
-    it cannot be read.
+    Its facts from the cache when nothing it reads changed (the package's
+    cache, then the shared one); nothing when it cannot be read.
     """
     relative = _relative(entry, package_path)
     try:
@@ -248,6 +257,15 @@ def _checked_or_cached(entry, package_path, cache, wrappers_digest):
         cached = read_cached_facts(
             unit_cache_file(cache, entry), entry, wrappers_digest)
         if cached is not None:
+            return cached, list(cached.diagnostics)
+        found = shared.lookup(entry, wrappers_digest) \
+            if shared is not None else None
+        if found is not None:
+            cached, inputs = found
+            # the next run finds it in the package's cache, without
+            # hashing the files again
+            write_cached_facts(unit_cache_file(cache, entry), entry, inputs,
+                               cached, wrappers_digest)
             return cached, list(cached.diagnostics)
     if not os.path.isfile(entry.file):
         return None, [f'{relative}: source file missing (stale compile '

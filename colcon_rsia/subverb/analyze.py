@@ -67,6 +67,7 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
         # `colcon rsia analyze` needs the analysis
         from colcon_rsia.package.coverage import total_line
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.package import shared_cache
         from colcon_rsia.package import workers
         from colcon_rsia.package.environment import environment_problems
         from colcon_rsia.package.runner import analyze
@@ -113,6 +114,8 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             workers.shutdown()
         print(f'rsia: analysed {analysed} of {len(decorators)} packages in '
               f'{time.monotonic() - started:.1f}s', flush=True)
+        if shared_cache.statistics_line():
+            print(shared_cache.statistics_line(), flush=True)
         if summaries or not failures:
             print(total_line(workspace_report(summaries, failures)),
                   flush=True)
