@@ -248,6 +248,30 @@ class Registration:
 
 
 @dataclass
+class HostEvent:
+    """A callback the hosting process calls on an event of its own.
+
+    ``gazebo::event::Events::ConnectWorldUpdateBegin(cb)``: gzserver calls
+    ``cb`` on every simulation step (see package/plugin_hosts.py).
+    """
+
+    function: str
+    api: str
+    callback: Optional[str]
+    location: str
+
+
+@dataclass
+class NodeletLoad:
+    """``nodelet::Loader::load(name, type, ...)``: a nodelet started in code."""
+
+    function: str
+    name: Optional[str]  # None: not a literal
+    type: Optional[str]  # its plugin name (pkg/Name); None: not a literal
+    location: str
+
+
+@dataclass
 class NodeNameFact:
     """The name (and namespace) a node gives itself in code.
 
@@ -339,6 +363,8 @@ class TuFacts:
     paced_loops: List[PacedLoop] = field(default_factory=list)
     syncs: List[SyncFact] = field(default_factory=list)
     registrations: List[Registration] = field(default_factory=list)
+    host_events: List[HostEvent] = field(default_factory=list)
+    nodelet_loads: List[NodeletLoad] = field(default_factory=list)
     node_handles: List[NodeHandleFact] = field(default_factory=list)
     bindings: List[ParamBinding] = field(default_factory=list)
     param_reads: List[ParamRead] = field(default_factory=list)
@@ -380,6 +406,7 @@ class TuFacts:
             'actions': ActionFact, 'publish_sites': PublishSite,
             'rates': RateObject, 'paced_loops': PacedLoop,
             'syncs': SyncFact, 'registrations': Registration,
+            'host_events': HostEvent, 'nodelet_loads': NodeletLoad,
             'node_handles': NodeHandleFact, 'bindings': ParamBinding,
             'param_reads': ParamRead, 'node_names': NodeNameFact,
             'clients': ClientFact, 'handle_aliases': HandleAlias,
@@ -570,6 +597,17 @@ class Node:
     base_class: Optional[str] = None
     host: Optional[str] = None
     plugin_class: Optional[str] = None
+    # the nodelets the node's code loads itself (nodelet::Loader::load)
+    loads: List['LoadedNodelet'] = field(default_factory=list)
+
+
+@dataclass
+class LoadedNodelet:
+    """A nodelet a node loads in its code: its name and plugin type."""
+
+    name: str
+    type: str
+    location: str
 
 
 @dataclass
@@ -749,11 +787,12 @@ def _node_from_dict(data):
         clients=[NodeClient(**c) for c in data.get('clients', [])],
         roots=[Root(**r) for r in data.get('roots', [])],
         base_class=data.get('base_class'), host=data.get('host'),
-        plugin_class=data.get('plugin_class'))
+        plugin_class=data.get('plugin_class'),
+        loads=[LoadedNodelet(**x) for x in data.get('loads', [])])
 
 
 # {summary class: {field: declared type}}, for _check_types
 _FIELD_TYPES = {cls: get_type_hints(cls) for cls in (
     PackageSummary, Node, LabelledPublisher, Evidence, TopicParam, Trigger,
     NodeSubscriber, NodeTimer, NodeService, NodeClient, NodeAction, Root,
-    Coverage, UnitCoverage, CallSiteCoverage)}
+    LoadedNodelet, Coverage, UnitCoverage, CallSiteCoverage)}

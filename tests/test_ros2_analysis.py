@@ -139,14 +139,16 @@ def test_a_node_of_a_multi_node_executable_is_changed_by_its_id(
     assert impact['rate_impact'] == ['/detector']
 
 
-def test_plugins_without_a_launch_file_are_nodes_under_their_names(
+def test_plugins_without_a_launch_file_are_in_their_hosts_namespace(
         ros2_build_base):
     endpoints = _endpoints(_graph(ros2_build_base))
-    # a controller's private names resolve under its plugin name
-    assert endpoints['/OdometryController'] == (
-        {'/OdometryController/odom', '/OdometryController/command_echo'},
-        {'/OdometryController/cmd_vel'})
+    # a controller's name is its key in the controller manager's
+    # parameters, which only a launch file gives: its private names
+    # (~/odom, ~/command_echo, ~/cmd_vel) are not known
+    assert endpoints['/OdometryController'] == ({None}, {None})
+    # relative names are in the host's namespace, the root by default
     assert endpoints['/StraightLinePlanner'] == ({'/plan_preview'}, set())
+    assert endpoints['/StateBroadcaster'] == ({'/joint_states'}, set())
 
 
 def test_hosts_in_a_launch_file_load_the_plugins_their_parameters_name(

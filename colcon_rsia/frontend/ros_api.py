@@ -47,6 +47,9 @@ TIMER_SINGLE_SHOT = 'timer_single_shot'  # a QTimer that fires once
 OBJECT_TIMER = 'object_timer'      # QObject::startTimer -> timerEvent()
 TIMER_WAIT = 'timer_wait'          # boost::asio async_wait(handler)
 DEADLINE_SLEEP = 'deadline_sleep'  # sleep_until(deadline)
+# code hosted by a process (see frontend/cpp/hosted.py)
+HOST_EVENT = 'host_event'          # a callback the host calls on its events
+NODELET_LOAD = 'nodelet_load'      # a nodelet the process loads itself
 
 # special argument positions
 FIRST_STRING = 'first_string'      # the first argument of string type
@@ -402,6 +405,17 @@ CALLS = {
     'nodelet::Nodelet::getMTNodeHandle': Api(PUBLIC_HANDLE),
     'nodelet::Nodelet::getPrivateNodeHandle': Api(PRIVATE_HANDLE),
     'nodelet::Nodelet::getMTPrivateNodeHandle': Api(PRIVATE_HANDLE),
+    # nodelet::Loader::load(name, type, remappings, my_argv): an instance
+    # of the nodelet `type` under the name `name`
+    'nodelet::Loader::load': Api(NODELET_LOAD, name_arg=0, type_name_arg=1),
+    # Gazebo (gazebo_ros_pkgs' plugins): gzserver calls these callbacks at
+    # the start / end of every simulation step (plugin_hosts.py)
+    'gazebo::event::Events::ConnectWorldUpdateBegin': Api(
+        HOST_EVENT, callback_arg=0),
+    'gazebo::event::Events::ConnectWorldUpdateEnd': Api(
+        HOST_EVENT, callback_arg=0),
+    'gazebo::event::Events::ConnectBeforePhysicsUpdate': Api(
+        HOST_EVENT, callback_arg=0),
 }
 
 # classes whose every object (variable, field, pointee) is a publisher or a

@@ -540,16 +540,24 @@ def build_summary(*, name, path, build_base, units, parsed=None):
         (executable, class_name, 'component')
         for executable, class_name in sorted(components.items())
         if class_name not in wrapped]
-    # a nodelet or component runs its class's methods and what they call,
-    # in any unit (never another executable's main: no method calls it)
+    # a nodelet or component runs its class's methods (and its package
+    # bases', through typedefs too) and what they call, in any unit (never
+    # another executable's main: no method calls it)
     for plugin, class_name, kind in plugins:
+        prefixes = tuple(
+            c + '::' for c in _class_and_bases(class_name, merged_all))
         seeds = {f.id for f in merged_all.functions
-                 if f.name.startswith(class_name + '::')}
+                 if f.name.startswith(prefixes)}
         node = build_node(
             name, plugin.split('/')[-1], kind,
             _sources_of(path, merged_all, seeds), path, merged_all,
             seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}')
         node.plugin_class = class_name
+        if not seeds:
+            summary.diagnostics.append(
+                f"{kind} '{node.id}': no method of {class_name} in the "
+                'units analysed (behind a preprocessor switch of its '
+                'target?): it has no facts')
         summary.nodes.append(node)
     summary.nodes.extend(_plugin_nodes(name, path, merged_all, exported))
     return summary

@@ -97,6 +97,12 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
     facts = node_facts(merged, select_functions(merged, seeds))
     facts.host = host
     facts.host_roots = dict(host_roots or {})
+    for event in facts.host_events:
+        # gzserver's world update: a callback the host calls every step
+        if host is not None and event.api in host.periodic_events and \
+                event.callback in facts.functions:
+            facts.host_roots.setdefault(
+                event.callback, model.ROOT_HOST_PERIODIC)
     for handle in private_handles:
         facts.namespaces[handle] = '~'
     publishers, roots = label_publishers(facts)
@@ -131,7 +137,10 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
         actions=_actions(facts, names),
         clients=[model.NodeClient(name=c.name, api=c.api, location=c.location)
                  for c in facts.clients],
-        roots=roots, host=host.host if host is not None else None)
+        roots=roots, host=host.host if host is not None else None,
+        loads=[model.LoadedNodelet(
+            name=n.name, type=n.type, location=n.location)
+            for n in facts.nodelet_loads if n.name and n.type])
 
 
 def _actions(facts, names):

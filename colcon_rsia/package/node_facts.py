@@ -33,6 +33,8 @@ class NodeFacts:
     publish_sites: List[model.PublishSite] = field(default_factory=list)
     paced_loops: List[model.PacedLoop] = field(default_factory=list)
     registrations: List[model.Registration] = field(default_factory=list)
+    host_events: List[model.HostEvent] = field(default_factory=list)
+    nodelet_loads: List[model.NodeletLoad] = field(default_factory=list)
     rates: Dict[str, model.RateObject] = field(default_factory=dict)
     syncs: List[model.SyncFact] = field(default_factory=list)
     node_names: List[model.NodeNameFact] = field(default_factory=list)
@@ -190,7 +192,7 @@ def _callbacks_registered_by(facts):
         add(fact.function, [fact.callback])
     for fact in facts.actions:
         add(fact.function, fact.callbacks)
-    for fact in facts.registrations:
+    for fact in facts.registrations + facts.host_events:
         add(fact.function, [fact.callback])
     return registered
 
@@ -242,6 +244,10 @@ def node_facts(facts, function_ids):
         p for p in facts.paced_loops if p.function in functions)
     result.registrations = unique(
         r for r in facts.registrations if r.function in functions)
+    result.host_events = unique(
+        e for e in facts.host_events if e.function in functions)
+    result.nodelet_loads = unique(
+        n for n in facts.nodelet_loads if n.function in functions)
     result.node_names = unique(
         n for n in facts.node_names if n.function in functions)
     for argument in facts.string_arguments:

@@ -20,8 +20,9 @@ Facts from the frameworks' interfaces and documentation: ros2_control
 (``controller_interface/controller_interface_base.hpp``,
 ``hardware_interface/system_interface.hpp``), ros_control
 (``controller_interface/controller_base.h``), pr2_controller_interface,
-the navigation2 plugin interfaces and server parameters (docs.nav2.org)
-and ROS 1 nav_core / costmap_2d.
+the navigation2 plugin interfaces and server parameters (docs.nav2.org),
+ROS 1 nav_core / costmap_2d, and Gazebo classic's plugin and event
+interfaces (``gazebo/common/Plugin.hh``, ``gazebo/common/Events.hh``).
 """
 
 from dataclasses import dataclass
@@ -41,6 +42,9 @@ class Host:
     # the method whose last parameter is the NodeHandle the host gives the
     # plugin in its own namespace (a ROS 1 controller's controller_nh)
     private_handle_of: str = ''
+    # the host's events whose callbacks it calls from its loop: the APIs
+    # (ros_api.HOST_EVENT) the plugin connects them with
+    periodic_events: frozenset = frozenset()
 
 
 def _names(text):
@@ -141,6 +145,21 @@ _BT_NODE = Host(
     setup=_names('halt onHalted providedPorts'),
     rate_parameter='bt_loop_duration (default 10 ms)')
 
+# gzserver loads model, sensor, world and system plugins: it calls Load()
+# once, and every callback connected to its world-update events on every
+# simulation step (gazebo/common/Plugin.hh, gazebo/common/Events.hh)
+_GAZEBO = Host(
+    host='gzserver',
+    periodic=frozenset(),
+    requests=frozenset(),
+    setup=_names('Load Init Reset'),
+    rate_parameter="every simulation step: the world's physics "
+                   'real_time_update_rate',
+    periodic_events=_names(
+        'gazebo::event::Events::ConnectWorldUpdateBegin '
+        'gazebo::event::Events::ConnectWorldUpdateEnd '
+        'gazebo::event::Events::ConnectBeforePhysicsUpdate'))
+
 # the base class a plugin is exported with -> its host
 HOSTS = {
     # any node registered with BT_REGISTER_NODES (see frontend/cpp/plugin_exports.py)
@@ -166,6 +185,11 @@ HOSTS = {
     'nav_core::BaseLocalPlanner': _ROS1_LOCAL_PLANNER,
     'nav_core::BaseGlobalPlanner': _ROS1_GLOBAL_PLANNER,
     'nav_core::RecoveryBehavior': _ROS1_RECOVERY,
+    # registered with GZ_REGISTER_*_PLUGIN (see frontend/cpp/plugin_exports.py)
+    'gazebo::ModelPlugin': _GAZEBO,
+    'gazebo::SensorPlugin': _GAZEBO,
+    'gazebo::WorldPlugin': _GAZEBO,
+    'gazebo::SystemPlugin': _GAZEBO,
 }
 
 

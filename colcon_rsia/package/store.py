@@ -78,14 +78,63 @@ def write_text_atomically(path, text):
 
 
 def write_summary(package_build_base, summary):
-    """Store a package summary; return its path."""
+    """Store a package summary; return its path.
+
+    Never a summary its reader rejects: node ids are made distinct first
+    (:func:`distinct_node_ids`), and the data is checked by the reader's
+    own :meth:`PackageSummary.from_dict` (a ValueError left is a bug, which
+    the runner reports as the package's failure).
+    """
     path = summary_path(package_build_base)
-    write_json_atomically(path, summary.to_dict())
+    distinct_node_ids(summary)
+    data = summary.to_dict()
+    PackageSummary.from_dict(data)
+    write_json_atomically(path, data)
     try:
         os.unlink(_failure_path(package_build_base))
     except OSError:
         pass
     return path
+
+
+# the kinds a launch file starts by their id (the plugin name): they keep it
+_LAUNCHED_BY_ID = ('nodelet', 'component', 'plugin')
+
+
+def distinct_node_ids(summary):
+    """Give the nodes of a summary distinct ids (its reader requires them).
+
+    One source built into two targets (an executable and, behind a
+    preprocessor switch, a nodelet of the same name) makes two nodes of
+    one id. The node a launch file names by its id (a nodelet, a
+    component, a plugin) keeps it; the others become
+    ``<id>/<node name>``, as the nodes of a multi-node executable are
+    named, else ``<id>/<kind>``, with a diagnostic naming both.
+    """
+    taken = {node.id for node in summary.nodes}
+    by_id = {}
+    for node in summary.nodes:
+        by_id.setdefault(node.id, []).append(node)
+    for node_id, nodes in sorted(by_id.items()):
+        if len(nodes) < 2:
+            continue
+        keeper = next((n for n in nodes if n.kind in _LAUNCHED_BY_ID),
+                      nodes[0])
+        for node in nodes:
+            if node is keeper:
+                continue
+            suffix = node.name.strip('/') if node.name else node.kind
+            new_id = f'{node_id}/{suffix}'
+            number = 2
+            while new_id in taken:
+                new_id = f'{node_id}/{suffix}{number}'
+                number += 1
+            taken.add(new_id)
+            node.id = new_id
+            summary.diagnostics.append(
+                f"node id '{node_id}' named two nodes, kinds {keeper.kind} "
+                f'and {node.kind} (one source built into two targets?): '
+                f"the {node.kind} is '{new_id}'")
 
 
 def _failure_path(package_build_base):

@@ -42,6 +42,11 @@ class Instance:
     location: str = ''
     publishers: List[dict] = field(default_factory=list)
     subscribers: List[dict] = field(default_factory=list)
+    # what nothing here tells: '' (its code or a launch file names it),
+    # NAMED_BY_LOADER (its name, so its private names) or HOST_UNKNOWN
+    # (also the namespace its host gives it); `note` says why
+    unplaced: str = ''
+    note: str = ''
 
     @property
     def fqn(self):  # noqa: D102
@@ -100,18 +105,84 @@ def _names_of(instance):
     return names
 
 
+NAMED_BY_LOADER = 'name'
+HOST_UNKNOWN = 'host'
+
+
 def instances_from_summaries(summaries):
     """Every analysed node once, as it names itself (else its executable).
 
     This is what runs when no launch file is given: the name and namespace
     are those the code gives (``ros::init``, ``rclcpp::Node("name", "ns")``).
+    A nodelet or plugin is named by what loads it: without that, its
+    private names are not known, nor, for a plugin of a host the analysis
+    does not know, its relative ones (:func:`placement`). The nodelets a
+    node's code loads (``nodelet::Loader::load``) are instances of their
+    own (:func:`loaded_nodelets`).
     """
-    return [
-        Instance(id=node.id, node=node, package=node.package,
-                 executable=node.executable,
-                 name=node.name or node.executable,
-                 namespace=join('/', node.namespace or ''))
-        for summary in summaries for node in summary.nodes]
+    nodes = [node for summary in summaries for node in summary.nodes]
+    instances = []
+    for node in nodes:
+        unplaced, note = placement(node)
+        instance = Instance(
+            id=node.id, node=node, package=node.package,
+            executable=node.executable, name=node.name or node.executable,
+            namespace=join('/', node.namespace or ''), unplaced=unplaced,
+            note=note)
+        instances.append(instance)
+        instances += loaded_nodelets(instance, nodes)
+    return instances
+
+
+def placement(node):
+    """(what is not known of where the node runs, why) without a launcher.
+
+    A nodelet's name is the one its manager loads it under; a plugin's is
+    its host's choice (a controller's key in the controller manager's
+    parameters, the SDF's name of a Gazebo plugin), in the host's
+    namespace: the root, as for every node no launch file places. A
+    plugin of a base no host of the table has (a filter of a filter chain,
+    an rviz display) runs in a process the analysis does not know.
+    """
+    if node.kind == 'nodelet':
+        return NAMED_BY_LOADER, (
+            'a nodelet is named by what loads it (a launch file, '
+            'nodelet::Loader::load): its private names are not resolved')
+    if node.kind != 'plugin' or node.name:
+        return '', ''
+    if node.host:
+        return NAMED_BY_LOADER, (
+            f'{node.host} loads and names this plugin (--launch with the '
+            'host places it): its private names are not resolved')
+    return HOST_UNKNOWN, (
+        f'a plugin of {node.base_class or "an unknown base"}, whose host '
+        'the analysis does not know: only its global names are resolved')
+
+
+def loaded_nodelets(loader, nodes):
+    """The instances of the nodelets a node's code loads by name.
+
+    ``nodelet::Loader::load(name, type, ...)`` names the nodelet as a
+    NodeHandle does: a relative name in the loading node's namespace.
+    """
+    if loader.node is None:
+        return []
+    by_id = {n.id: n for n in nodes if n.kind == 'nodelet'}
+    found = []
+    for load in loader.node.loads:
+        node = by_id.get(load.type)
+        fqn = resolve(load.name, node_name=loader.name,
+                      namespace=loader.namespace)
+        namespace, _, name = fqn.rpartition('/')
+        instance = Instance(
+            id=fqn, node=node, package=load.type.split('/')[0],
+            executable=load.type, name=name, namespace=namespace or '/',
+            remaps=list(loader.remaps),
+            location=f'{loader.package}/{load.location}',
+            note='' if node is not None else
+            f'loaded by {loader.id} ({load.location}): not analysed')
+        found.append(instance)
+    return found
 
 
 def build_graph(summaries, instances=None, notes=()):
@@ -152,10 +223,22 @@ def _topic_name(instance, entity):
 
 
 def _resolve(instance, entity):
+    name = _topic_name(instance, entity)
+    if _unplaced_name(instance, name, entity.namespace or ''):
+        return None
     return resolve(
-        _topic_name(instance, entity),
-        node_name=instance.name, namespace=instance.namespace,
+        name, node_name=instance.name, namespace=instance.namespace,
         handle_namespace=entity.namespace or '', remaps=instance.remaps)
+
+
+def _unplaced_name(instance, name, handle_namespace):
+    """Whether a name depends on what nothing tells of the instance."""
+    if not instance.unplaced or not name or name.startswith('/'):
+        return False
+    if name.startswith('~') or handle_namespace.startswith('~'):
+        return True  # private: in the node's name
+    return instance.unplaced == HOST_UNKNOWN and \
+        not handle_namespace.startswith('/')
 
 
 def _connect(system, instance):
@@ -163,6 +246,8 @@ def _connect(system, instance):
     vertex = ('node', instance.id)
     graph.add_node(vertex)
     if instance.node is None:
+        if instance.note:
+            system.notes.append(f'{instance.id}: {instance.note}')
         _connect_unknown(system, instance)
         return
     for publisher in instance.node.publishers:
@@ -183,6 +268,11 @@ def _connect(system, instance):
         else:
             graph.add_edge(topic, vertex, subscribers=[subscriber])
     _attach_triggers(system, instance)
+    if instance.note and any(
+            _unplaced_name(instance, _topic_name(instance, e),
+                           e.namespace or '')
+            for e in instance.node.publishers + instance.node.subscribers):
+        system.notes.append(f'{instance.id}: {instance.note}')
 
 
 ALL_INPUTS = '*'
@@ -268,6 +358,7 @@ def graph_to_json(system):
             'package': instance.package,
             'executable': instance.executable,
             'kind': instance.kind,
+            **({'note': instance.note} if instance.note else {}),
             'publishers': [{
                 'topic': p['publisher'].topic,
                 'resolved': p['resolved'],
@@ -399,6 +490,8 @@ def graph_to_text(system):
         if instance.node is None:
             lines.append('  (package not analysed: assumed to read and '
                          'write its remapped topics)')
+        elif instance.note:
+            lines.append(f'  ({instance.note})')
         for p in instance.publishers:
             publisher = p['publisher']
             rate = f' {publisher.rate_hz:g} Hz' if publisher.rate_hz else ''

@@ -7,6 +7,7 @@ import os
 from colcon_rsia.system import hosts
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.graph import Instance
+from colcon_rsia.system.graph import loaded_nodelets
 from colcon_rsia.system.names import join
 
 
@@ -81,7 +82,8 @@ def launch_instances(summaries, result):
     :returns: the instances and notes on what could not be matched
     """
     nodes = {}
-    plugins = [n for s in summaries for n in s.nodes if n.kind == 'plugin']
+    every_node = [n for s in summaries for n in s.nodes]
+    plugins = [n for n in every_node if n.kind == 'plugin']
     # a component is launched by its class: the node that runs it (a
     # component, or the executable that only instantiates the class)
     by_class = {}
@@ -115,6 +117,7 @@ def launch_instances(summaries, result):
             instances.append(instance)
             instances += _hosted_instances(
                 instance, plugins, notes, launched, result.global_params)
+            instances += loaded_nodelets(instance, every_node)
     return instances, notes
 
 

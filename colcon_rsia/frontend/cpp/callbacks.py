@@ -26,6 +26,7 @@ from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.cpp.hosted import node_handle_marker
 
 CK = ci.CursorKind
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
@@ -133,6 +134,12 @@ class Callbacks:
             if handle is not None and self.in_package(handle):
                 self.facts.bindings.append(model.ParamBinding(
                     callee=callee, index=index, handle=handle.get_usr()))
+            elif node_handle_marker(argument) is not None:
+                # a handle made in place (getPrivateNodeHandle(),
+                # ros::NodeHandle("~")): its namespace marker
+                self.facts.bindings.append(model.ParamBinding(
+                    callee=callee, index=index,
+                    handle=node_handle_marker(argument)))
 
     def _bound_arguments(self, argument):
         """Handles bound by boost::bind / std::bind to the callback."""

@@ -25,6 +25,21 @@ BT_REGISTRATION = re.compile(r'\bBT_REGISTER_NODES\s*\(\s*(\w+)\s*\)')
 BT_NODE_TYPE = re.compile(r'\bregisterNodeType\s*<\s*([\w:]+)\s*>')
 # the base recorded for them (the table's key: plugin_hosts.py)
 BT_NODE_BASE = 'BT::TreeNode'
+# Gazebo plugins, which gzserver loads (gazebo/common/Plugin.hh):
+# `GZ_REGISTER_MODEL_PLUGIN(Class)`, written inside the class's namespace
+GAZEBO_BASES = {
+    'MODEL': 'gazebo::ModelPlugin',
+    'SENSOR': 'gazebo::SensorPlugin',
+    'WORLD': 'gazebo::WorldPlugin',
+    'SYSTEM': 'gazebo::SystemPlugin',
+}
+_GAZEBO_MACRO = r'\bGZ_REGISTER_(MODEL|SENSOR|WORLD|SYSTEM)_PLUGIN\s*\(\s*([\w:]+)\s*\)'
+# what decides the namespace a macro is written in: comments and literals
+# (skipped), namespace openings, other braces, the macro itself
+_SCOPES = re.compile(
+    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\''
+    r'|\bnamespace\s+((?:\w+\s*::\s*)*\w+)\s*\{|\bnamespace\s*\{|\{|\}|'
+    + _GAZEBO_MACRO, re.S)
 
 
 def plugin_exports(main_file):
@@ -44,4 +59,33 @@ def plugin_exports(main_file):
     if registration is not None:
         for match in BT_NODE_TYPE.finditer(text, registration.end()):
             exports.append([match.group(1).lstrip(':'), BT_NODE_BASE])
+    if 'GZ_REGISTER_' in text:
+        exports += gazebo_exports(text)
+    return exports
+
+
+def gazebo_exports(text):
+    """[class, base] of the Gazebo plugins a source registers.
+
+    The macro names the class as its namespace sees it: the namespaces
+    the macro is written in qualify it.
+    """
+    exports = []
+    scopes = []  # a namespace's name, or None for any other brace
+    for match in _SCOPES.finditer(text):
+        token = match.group(0)
+        if match.group(3):
+            class_name = match.group(3)
+            if not class_name.startswith('::'):
+                class_name = '::'.join(
+                    [s for s in scopes if s] + [class_name])
+            exports.append(
+                [class_name.lstrip(':'), GAZEBO_BASES[match.group(2)]])
+        elif token.startswith('namespace'):
+            name = match.group(1)
+            scopes.append(re.sub(r'\s+', '', name) if name else None)
+        elif token == '{':
+            scopes.append(None)
+        elif token == '}' and scopes:
+            scopes.pop()
     return exports

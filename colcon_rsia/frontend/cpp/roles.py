@@ -17,6 +17,7 @@ import clang.cindex as ci
 from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp import hosted
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
@@ -76,6 +77,8 @@ class RosRoles:
             ros_api.NODE_NAME: self._on_node_name,
             ros_api.SUB_NODE: self._on_sub_node,
             ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
+            # gzserver's events, nodelets loaded in code
+            **hosted.HostedRoles(self.walker).handlers(),
         }
 
     def _callbacks(self, arguments, position):

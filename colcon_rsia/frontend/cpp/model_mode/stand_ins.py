@@ -8,8 +8,10 @@ generated header has; anything else is empty (with what the sources use of
 its guessed namespace, declared when nothing else declares it).
 """
 
+import os
 import re
 
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.source_names import IDENTIFIER
@@ -32,6 +34,11 @@ def empty_stub(name):
     if _QT_HEADER.match(name):
         # a class declaration of the unit's uses the moc keywords
         lines.append('#include <rsia_model/qt_keywords.h>')
+    partial = partial_model(name)
+    if partial:
+        # what the model knows of the library, before what the sources
+        # use of it is guessed (each declaration there skips its own)
+        lines.append(f'#include <{partial}>')
     namespace = guessed_namespace(name)
     if namespace:
         # what the sources use of `namespace::`, if it is declared nowhere
@@ -43,6 +50,21 @@ def empty_stub(name):
             f'#include <{header}>',
             '#endif']
     return '\n'.join(lines) + '\n'
+
+
+# the libraries the model knows a part of (rsia_model/partial/<top>.h): the
+# facts' part, the rest being guessed as for any unknown library
+PARTIAL_DIR = 'rsia_model/partial'
+
+
+def partial_model(include):
+    """The partial model header of an unknown include's library, or None."""
+    top = include.split('/')[0]
+    header = f'{PARTIAL_DIR}/{top}.h'
+    if '/' in include and PACKAGE.match(top) and os.path.isfile(
+            os.path.join(MODEL_HEADERS_DIR, *header.split('/'))):
+        return header
+    return None
 
 
 # <QPushButton>, <QtWidgets/QWidget>, <QtGui/qpainter.h>
