@@ -24,17 +24,31 @@ BUILD_TIMEOUT_S = 1500
 
 
 # What makes a test slow: compiling a test workspace with colcon, a real
-# browser, a real ROS system. `pytest -m "not slow"` leaves these out (the
-# quick run); `bash .ci/run` runs everything.
+# browser, a real ROS system, running the colcon script end to end on
+# generated workspaces, fuzzing. `pytest -m "not slow"` leaves these out
+# (the quick run: the front ends, launch, system and report logic);
+# `bash .ci/run` runs everything.
 SLOW_FIXTURES = frozenset({
     'ros1_workspace', 'system_workspace', 'fig2_workspace', 'fig2_summaries',
     'triggers_workspace', 'fault_builds', 'python_workspace'})
+# the suites whose every test runs colcon (or a sandboxed CMake, or worker
+# processes) on workspaces of its own
+SLOW_MODULES = frozenset({
+    'test_ci_recipe', 'test_cmake_configure', 'test_cmake_sandbox',
+    'test_colcon_script', 'test_cross_package_wrappers', 'test_faults',
+    'test_hardening', 'test_hardening_round2', 'test_hosted',
+    'test_launch_fuzz', 'test_precompiled', 'test_report_page',
+    'test_ros2_analysis', 'test_shared_cache', 'test_system',
+    'test_workers', 'test_workspace_layouts'})
 
 
 def pytest_collection_modifyitems(items):
     """Mark the tests that need a compiled workspace as slow."""
     for item in items:
-        if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())):
+        module = getattr(item, 'module', None)
+        if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())) or \
+                (module is not None and
+                 module.__name__.rsplit('.', 1)[-1] in SLOW_MODULES):
             item.add_marker(pytest.mark.slow)
 
 
