@@ -29,7 +29,6 @@ under ``COLCON_RSIA_CACHE_MB`` by removing the least recently used entries
 
 import hashlib
 import json
-import math
 import os
 import re
 import threading
@@ -41,6 +40,7 @@ from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import CACHE_DIR_ENVIRONMENT_VARIABLE
 from colcon_rsia.environment_variables import CACHE_MB_ENVIRONMENT_VARIABLE
 from colcon_rsia.package.cache import _frontend_digest
+from colcon_rsia.package.settings import positive_number
 
 DEFAULT_CACHE_MB = 1024
 # a new layout (or a new meaning of an entry) gets a new directory: old
@@ -123,20 +123,10 @@ def cache_bytes():
     :raises ValueError: one sentence, when the value is not a positive
       number of megabytes
     """
-    name = CACHE_MB_ENVIRONMENT_VARIABLE.name
-    text = os.environ.get(name, '').strip()
-    if not text:
-        return DEFAULT_CACHE_MB << 20
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value) or value <= 0:
-        raise ValueError(
-            f'{name}={text!r} is not a positive number of megabytes (the '
-            'size of the shared fact cache; unset, it is '
-            f'{DEFAULT_CACHE_MB})')
-    return int(value * (1 << 20))
+    return int(positive_number(
+        CACHE_MB_ENVIRONMENT_VARIABLE.name, default=DEFAULT_CACHE_MB,
+        unit='megabytes', what='the size of the shared fact cache') *
+        (1 << 20))
 
 
 def settings_problems():

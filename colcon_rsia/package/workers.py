@@ -29,7 +29,6 @@ from collections import deque
 from concurrent.futures import ThreadPoolExecutor
 import errno
 import itertools
-import math
 import multiprocessing
 import multiprocessing.connection
 import os
@@ -46,6 +45,7 @@ from colcon_rsia.package import store
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
+from colcon_rsia.package.settings import positive_number
 
 
 class Interrupted(Exception):
@@ -98,20 +98,10 @@ def unit_timeout():
     :raises ValueError: one sentence, when the value is not a positive
       number
     """
-    name = UNIT_TIMEOUT_ENVIRONMENT_VARIABLE.name
-    text = os.environ.get(name, '').strip()
-    if not text:
-        return float(DEFAULT_UNIT_TIMEOUT_S)
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value) or value <= 0:
-        raise ValueError(
-            f'{name}={text!r} is not a positive number of seconds (the '
-            'time one translation unit may take; unset, it is '
-            f'{DEFAULT_UNIT_TIMEOUT_S})')
-    return value
+    return positive_number(
+        UNIT_TIMEOUT_ENVIRONMENT_VARIABLE.name,
+        default=DEFAULT_UNIT_TIMEOUT_S, unit='seconds',
+        what='the time one translation unit may take')
 
 
 def unit_timeout_problem():
