@@ -418,9 +418,11 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     facts.package_errors = sum(
         1 for e in errors if e[1] and _inside(e[1], package_path))
     facts.repair_rounds = rounds
-    # (without an error in the package's code the parse lost nothing)
-    facts.lost_calls = _unrecorded_calls(tu, facts, package_path) \
-        if facts.package_errors else 0
+    # (without an error in the package's code the parse lost nothing; the
+    # repair rounds counted it already when they ran)
+    facts.lost_calls = 0 if not facts.package_errors else \
+        parsed.lost_calls if parsed.lost_calls is not None else \
+        _unrecorded_calls(tu, facts, package_path)
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None})

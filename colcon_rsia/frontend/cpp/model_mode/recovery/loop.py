@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from dataclasses import field
 import os
 import threading
+from typing import Optional
 
 from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
@@ -49,6 +50,9 @@ class ParsedUnit:
     rounds: int = 0              # parses after the first
     # {(kind, name): rule id}: the unit's repairs (see store.py)
     repairs: dict = field(default_factory=dict)
+    # the calls the kept parse lost, when the rounds counted them
+    # (`unrecorded` given); None otherwise
+    lost_calls: Optional[int] = None
 
 
 def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
@@ -201,14 +205,15 @@ class _Repairing:
             if score < best[0]:
                 best = (score, rounds, tu, facts,
                         store.read_records(self.header))
-        _, best_round, tu, facts, records = best
+        (lost_calls, _), best_round, tu, facts, records = best
         if best_round != rounds:
             # a later round made things worse: keep the best, so that later
             # parses of the unit do not pay for it
             store.write_records(self.header, self.relative, records)
         if best_round:
             store.share_repairs(self.header, set(records))
-        return ParsedUnit(tu, facts, rounds, records)
+        return ParsedUnit(tu, facts, rounds, records,
+                          lost_calls if self.unrecorded else None)
 
     def repairs(self, tu, errors):
         """{(kind, name): rule id} of the declarations and edits to add."""
