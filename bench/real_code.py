@@ -60,8 +60,8 @@ from colcon_rsia.package.call_sites import PUBLISHER  # noqa: E402,I100,I202
 from colcon_rsia.package.call_sites import scan_package  # noqa: E402
 from colcon_rsia.package.call_sites import SUBSCRIBER  # noqa: E402
 from colcon_rsia.package.coverage import match_sites  # noqa: E402
-from colcon_rsia.package.store import read_summary  # noqa: E402
-from colcon_rsia.package.store import SummaryError  # noqa: E402
+from colcon_rsia.summary.store import read_summary  # noqa: E402
+from colcon_rsia.summary.store import SummaryError  # noqa: E402
 
 CXX_SOURCES = ('.cpp', '.cc', '.cxx', '.c++', '.C')
 

@@ -25,7 +25,12 @@ import subprocess
 import sys
 import time
 
-from colcon_rsia import model
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.package_summary import PackageSummary
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import rate_impact
@@ -177,13 +182,13 @@ def synthetic_system(nodes, seed=1):
         for number in range(rng.randint(1, 3)):
             topic = f'/l{layer}/n{index}/t{number}'
             topics_by_layer[layer].append(topic)
-            publishers.append(model.LabelledPublisher(
+            publishers.append(LabelledPublisher(
                 topic=topic, topic_is_literal=True, msg_type='m', api='a',
                 handle='h', namespace='', location='f:1',
-                label=rng.choice([model.INDEPENDENT, model.DEPENDENT,
-                                  model.DEPENDENT]),
+                label=rng.choice([INDEPENDENT, DEPENDENT,
+                                  DEPENDENT]),
                 pattern='none', rate_hz=None))
-        summary_nodes.append((layer, model.Node(
+        summary_nodes.append((layer, Node(
             id=f'p/n{index}', package='p', executable=f'n{index}',
             kind='executable', publishers=publishers)))
     for layer, node in summary_nodes:
@@ -193,11 +198,11 @@ def synthetic_system(nodes, seed=1):
         if layer == 1:
             # feedback: odometry of the drivers reaches perception
             sources = sources + topics_by_layer[layers - 1][:20]
-        node.subscribers = [model.NodeSubscriber(
+        node.subscribers = [NodeSubscriber(
             topic=rng.choice(sources), topic_is_literal=True, msg_type='m',
             api='a', callback='cb', namespace='', location='f:2')
             for _ in range(rng.randint(1, 3))]
-    return build_graph([model.PackageSummary(
+    return build_graph([PackageSummary(
         package='p', path='/p', tool_version='0',
         nodes=[node for _, node in summary_nodes])])
 

@@ -12,6 +12,7 @@ file swapped after the check is caught too.
 """
 
 import contextlib
+import json
 import math
 import os
 import re
@@ -240,6 +241,16 @@ def write_text_atomically(path, text, *, errors='backslashreplace'):
         with open(temporary, 'w', encoding='utf-8', errors=errors) as h:
             h.write(text)
     write_file_atomically(path, write)
+
+
+def write_json_atomically(path, data):
+    """Write JSON so that readers see the old file or the new, never half.
+
+    A temp file in the same directory is renamed over the target; a build
+    killed mid-write leaves at most a stray temp file.
+    """
+    write_text_atomically(
+        path, json.dumps(data, indent=1, sort_keys=True) + '\n')
 
 
 def write_file_atomically(path, write):

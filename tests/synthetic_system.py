@@ -18,8 +18,16 @@ planners read (cycles). The same size gives the same system.
 import random
 
 from colcon_rsia import __version__
-from colcon_rsia import model
-from colcon_rsia.package.store import write_summary
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import PATTERN_NONE
+from colcon_rsia.summary.kinds import PATTERN_TIMER
+from colcon_rsia.summary.nodes import Evidence
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.store import write_summary
 
 STAGES = ('sensor', 'filter', 'fusion', 'planning', 'control', 'driver')
 NODES_PER_PACKAGE = 8
@@ -55,15 +63,15 @@ def changed_node(count):
 def _publisher(topic, index, line, *, timer):
     location = f'src/node_{index:04d}.cpp:{line}'
     if timer:
-        evidence = [model.Evidence('timer', f'src/node_{index:04d}.cpp:'
-                                   f'{line + 20}', '10 Hz')]
-        label, pattern, rate = model.INDEPENDENT, model.PATTERN_TIMER, 10.0
+        evidence = [Evidence('timer', f'src/node_{index:04d}.cpp:'
+                             f'{line + 20}', '10 Hz')]
+        label, pattern, rate = INDEPENDENT, PATTERN_TIMER, 10.0
     else:
-        evidence = [model.Evidence(
+        evidence = [Evidence(
             'subscriber', f'src/node_{index:04d}.cpp:{line + 30}',
             'published from a subscription callback')]
-        label, pattern, rate = model.DEPENDENT, model.PATTERN_NONE, None
-    return model.LabelledPublisher(
+        label, pattern, rate = DEPENDENT, PATTERN_NONE, None
+    return LabelledPublisher(
         topic=topic, topic_is_literal=True, msg_type='std_msgs/String',
         api='ros::NodeHandle::advertise', handle=f'pub_{line}',
         namespace='', location=location, label=label, pattern=pattern,
@@ -71,7 +79,7 @@ def _publisher(topic, index, line, *, timer):
 
 
 def _subscriber(topic, index, line):
-    return model.NodeSubscriber(
+    return NodeSubscriber(
         topic=topic, topic_is_literal=True, msg_type='std_msgs/String',
         api='ros::NodeHandle::subscribe', callback=f'on_message_{line}',
         namespace='', location=f'src/node_{index:04d}.cpp:{line}')
@@ -119,7 +127,7 @@ def synthetic_summaries(count, seed=20):
             publishers.append(_publisher(HUB_TOPIC, index, 100, timer=True))
         if index % READS_TF_EVERY == 5:
             subscribers.append(_subscriber(HUB_TOPIC, index, 110))
-        node = model.Node(
+        node = Node(
             id=identifier, package=package, executable=executable,
             kind='executable', name=executable,
             sources=[f'src/{executable}.cpp'],
@@ -127,7 +135,7 @@ def synthetic_summaries(count, seed=20):
             publishers=publishers, subscribers=subscribers)
         packages.setdefault(package, []).append(node)
     return [
-        model.PackageSummary(
+        PackageSummary(
             package=name, path=f'/generated/src/{name}',
             tool_version=__version__, nodes=nodes)
         for name, nodes in sorted(packages.items())]

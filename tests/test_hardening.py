@@ -260,26 +260,32 @@ OWN_STRONG = ('Changed', 'Rate-aware impact', 'Stopped at independent edges')
 
 
 def _injected_system():
-    from colcon_rsia import model
+    from colcon_rsia.summary.kinds import DEPENDENT
+    from colcon_rsia.summary.kinds import INDEPENDENT
+    from colcon_rsia.summary.kinds import PATTERN_NONE
+    from colcon_rsia.summary.nodes import LabelledPublisher
+    from colcon_rsia.summary.nodes import Node
+    from colcon_rsia.summary.nodes import NodeSubscriber
+    from colcon_rsia.summary.package_summary import PackageSummary
     from colcon_rsia.system.load import load_system
     nodes = []
     for number, evil in enumerate(INJECTED):
         timer = number % 2 == 0
-        nodes.append(model.Node(
+        nodes.append(Node(
             id=f'evil/n{number}{evil}', package='evil',
             executable=f'n{number}{evil}', kind='executable',
-            publishers=[model.LabelledPublisher(
+            publishers=[LabelledPublisher(
                 topic=f'/t{number + 1}{evil}', topic_is_literal=True,
                 msg_type='x', api='a', handle=None, namespace='',
                 location='f.cpp:1',
-                label=model.INDEPENDENT if timer else model.DEPENDENT,
-                pattern=f'timer{evil}' if timer else model.PATTERN_NONE,
+                label=INDEPENDENT if timer else DEPENDENT,
+                pattern=f'timer{evil}' if timer else PATTERN_NONE,
                 rate_hz=None)],
-            subscribers=[model.NodeSubscriber(
+            subscribers=[NodeSubscriber(
                 topic=f'/t{number}{INJECTED[number - 1]}',
                 topic_is_literal=True, msg_type='x', api='a',
                 callback=None, namespace='', location='f.cpp:2')]))
-    return load_system([model.PackageSummary(
+    return load_system([PackageSummary(
         package='evil', path='/nowhere', tool_version='0', nodes=nodes)])
 
 

@@ -14,8 +14,18 @@ import subprocess
 import time
 import unicodedata
 
-from colcon_rsia import model
-from colcon_rsia.package.store import write_summary
+from colcon_rsia.summary.coverage import CallSiteCoverage
+from colcon_rsia.summary.coverage import Coverage
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import PATTERN_NONE
+from colcon_rsia.summary.kinds import PATTERN_TIMER
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.nodes import Trigger
+from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.store import write_summary
 import pytest
 from test_faults import _package
 from test_faults import _summary
@@ -114,29 +124,29 @@ def _chain_system():
     for i in range(CHAIN):
         location = f'src/n{i}.cpp'
         if i == 0:
-            publisher = model.LabelledPublisher(
+            publisher = LabelledPublisher(
                 topic='/t0', topic_is_literal=True, msg_type='m', api='a',
                 handle=None, namespace='', location=f'{location}:1',
-                label=model.INDEPENDENT, pattern=model.PATTERN_TIMER,
+                label=INDEPENDENT, pattern=PATTERN_TIMER,
                 rate_hz=10.0)
             subscribers = []
         else:
-            publisher = model.LabelledPublisher(
+            publisher = LabelledPublisher(
                 topic=f'/t{i}', topic_is_literal=True, msg_type='m',
                 api='a', handle=None, namespace='', location=f'{location}:1',
-                label=model.DEPENDENT, pattern=model.PATTERN_NONE,
-                rate_hz=None, triggers=[model.Trigger(
+                label=DEPENDENT, pattern=PATTERN_NONE,
+                rate_hz=None, triggers=[Trigger(
                     kind='subscriber', name=f'/t{i - 1}',
                     location=f'{location}:2', detail='callback')])
-            subscribers = [model.NodeSubscriber(
+            subscribers = [NodeSubscriber(
                 topic=f'/t{i - 1}', topic_is_literal=True, msg_type='m',
                 api='a', callback='cb', namespace='',
                 location=f'{location}:2')]
-        nodes.append(model.Node(
+        nodes.append(Node(
             id=f'chain/n{i}', package='chain', executable=f'n{i}',
             kind='executable', publishers=[publisher],
             subscribers=subscribers))
-    return load_system([model.PackageSummary(
+    return load_system([PackageSummary(
         package='chain', path='/nowhere', tool_version='0', nodes=nodes)])
 
 
@@ -176,13 +186,13 @@ def test_fail_under_takes_a_percentage(tmp_path):
         assert (f"argument --fail-under: '{value}' is not a percentage from "
                 '0 to 100') in result.stderr
     # and compared with the share: two of three call sites have a fact
-    sites = [model.CallSiteCoverage(
+    sites = [CallSiteCoverage(
         file='shared/talker.py', line=line, role='publisher', api='a',
         recorded=recorded) for line, recorded in (
             (1, 'node'), (2, 'node'), (3, 'none'))]
-    write_summary(str(tmp_path / 'build' / 'shared'), model.PackageSummary(
+    write_summary(str(tmp_path / 'build' / 'shared'), PackageSummary(
         package='shared', path='/nowhere', tool_version='0',
-        coverage=model.Coverage(call_sites=sites)))
+        coverage=Coverage(call_sites=sites)))
     assert _query(tmp_path, 'coverage', '--fail-under', '70').returncode == 2
     assert _query(tmp_path, 'coverage', '--fail-under', '66').returncode == 0
 
@@ -309,19 +319,19 @@ HOSTILE = [
 def _hostile_summary(build):
     nodes = []
     for number, evil in enumerate(HOSTILE):
-        nodes.append(model.Node(
+        nodes.append(Node(
             id=f'evil/n{number}{evil}', package='evil',
             executable=f'n{number}{evil}', kind='executable',
-            publishers=[model.LabelledPublisher(
+            publishers=[LabelledPublisher(
                 topic=f'/t{number + 1}{evil}', topic_is_literal=True,
                 msg_type='x', api='a', handle=None, namespace='',
-                location=f'src/{evil}.cpp:1', label=model.INDEPENDENT,
-                pattern=model.PATTERN_TIMER, rate_hz=10.0)],
-            subscribers=[model.NodeSubscriber(
+                location=f'src/{evil}.cpp:1', label=INDEPENDENT,
+                pattern=PATTERN_TIMER, rate_hz=10.0)],
+            subscribers=[NodeSubscriber(
                 topic=f'/t{number}{HOSTILE[number - 1]}',
                 topic_is_literal=True, msg_type='x', api='a', callback=None,
                 namespace='', location=f'src/{evil}.cpp:2')]))
-    summary = model.PackageSummary(
+    summary = PackageSummary(
         package='evil', path='/nowhere', tool_version='0', nodes=nodes,
         diagnostics=[f'src/{e}.cpp: {e}' for e in HOSTILE])
     write_summary(str(build / 'evil'), summary)

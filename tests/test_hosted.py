@@ -9,8 +9,10 @@ names, comes only from what loads it; a plugin belongs to its host.
 
 import json
 
-from colcon_rsia import model
-from colcon_rsia.package import store
+from colcon_rsia.summary import store
+from colcon_rsia.summary.kinds import PATTERN_HOST_PERIODIC
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.package_summary import PackageSummary
 from conftest import run_colcon
 from conftest import WORKSPACES
 import pytest
@@ -76,12 +78,12 @@ def test_a_source_built_as_executable_and_nodelet_gives_distinct_ids(hosted):
 
 
 def test_the_writer_never_writes_ids_its_reader_rejects(tmp_path):
-    summary = model.PackageSummary(package='p', path='/p', tool_version='0')
+    summary = PackageSummary(package='p', path='/p', tool_version='0')
     summary.nodes = [
-        model.Node(id='p/a', package='p', executable='a', kind='executable',
-                   name='alpha'),
-        model.Node(id='p/a', package='p', executable='a', kind='nodelet'),
-        model.Node(id='p/a', package='p', executable='a', kind='plugin')]
+        Node(id='p/a', package='p', executable='a', kind='executable',
+             name='alpha'),
+        Node(id='p/a', package='p', executable='a', kind='nodelet'),
+        Node(id='p/a', package='p', executable='a', kind='plugin')]
     path = store.write_summary(str(tmp_path), summary)
     ids = sorted(n.id for n in store.read_summary(path).nodes)
     # the nodelet is launched by its plugin name: it keeps it
@@ -166,8 +168,8 @@ def test_ros1_gazebo_plugins_are_hosted_by_gzserver(hosted):
     # published only from the world-update handler, every simulation step;
     # the cmd_vel callback only stores the speed
     assert _labels(odom) == {
-        'odom': ('independent', model.PATTERN_HOST_PERIODIC),
-        '/tf': ('independent', model.PATTERN_HOST_PERIODIC)}
+        'odom': ('independent', PATTERN_HOST_PERIODIC),
+        '/tf': ('independent', PATTERN_HOST_PERIODIC)}
     assert [s.topic for s in odom.subscribers] == ['cmd_vel']
     tick = nodes['rsia_gazebo_plugins/TickPlugin']
     assert tick.base_class == 'gazebo::WorldPlugin'
@@ -190,7 +192,7 @@ def test_ros2_gazebo_plugin_node_comes_from_gazebo_ros_node_get(hosted):
     assert (plugin.host, plugin.base_class) == (
         'gzserver', 'gazebo::ModelPlugin')
     assert _labels(plugin) == {
-        'joint_states': ('independent', model.PATTERN_HOST_PERIODIC),
+        'joint_states': ('independent', PATTERN_HOST_PERIODIC),
         '~/status': ('dependent', 'none')}
     # Node::Get(sdf): the SDF's <ros><namespace> (none: the root) and its
     # plugin name, which the code does not know

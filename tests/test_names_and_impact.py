@@ -2,7 +2,12 @@
 # Licensed under the Apache License, Version 2.0
 """Name resolution and the two impact analyses on small graphs."""
 
-from colcon_rsia import model
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.package_summary import PackageSummary
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.impact import expand_changed
 from colcon_rsia.system.impact import impact_all
@@ -31,15 +36,15 @@ def test_resolve_global_relative_private_and_handle_namespaces():
 
 
 def _publisher(topic, label):
-    return model.LabelledPublisher(
+    return LabelledPublisher(
         topic=topic, topic_is_literal=True, msg_type='m', api='a',
         handle='h', namespace='', location='f:1', label=label,
-        pattern='timer' if label == model.INDEPENDENT else 'none',
+        pattern='timer' if label == INDEPENDENT else 'none',
         rate_hz=None)
 
 
 def _subscriber(topic):
-    return model.NodeSubscriber(
+    return NodeSubscriber(
         topic=topic, topic_is_literal=True, msg_type='m', api='a',
         callback='cb', namespace='', location='f:2')
 
@@ -47,17 +52,17 @@ def _subscriber(topic):
 def _system(spec):
     """spec: {name: ([(topic, label)], [subscribed topics])}."""
     nodes = [
-        model.Node(id=f'p/{name}', package='p', executable=name,
-                   kind='executable',
-                   publishers=[_publisher(t, lbl) for t, lbl in pubs],
-                   subscribers=[_subscriber(t) for t in subs])
+        Node(id=f'p/{name}', package='p', executable=name,
+             kind='executable',
+             publishers=[_publisher(t, lbl) for t, lbl in pubs],
+             subscribers=[_subscriber(t) for t in subs])
         for name, (pubs, subs) in spec.items()]
-    summary = model.PackageSummary(
+    summary = PackageSummary(
         package='p', path='/p', tool_version='0', nodes=nodes)
     return build_graph([summary])
 
 
-I, D = model.INDEPENDENT, model.DEPENDENT
+I, D = INDEPENDENT, DEPENDENT
 # a -> b (dependent) -> c (independent) -> d; c -> e dependent; d <-> a cycle
 SYSTEM = {
     'a': ([('x', I)], ['w']),
@@ -217,18 +222,18 @@ def test_a_ros1_spawner_loads_the_controllers_its_parameters_type(tmp_path):
     path.write_text(ROS1_CONTROLLERS_LAUNCH)
     # a controller's topics go through the NodeHandle its host gives it,
     # in the controller's own namespace ('~')
-    plugin = model.Node(
+    plugin = Node(
         id='acme_controllers/VelocityController', package='acme_controllers',
         executable='VelocityController', kind='plugin',
         plugin_class='acme_controllers::VelocityController',
-        publishers=[model.LabelledPublisher(
+        publishers=[LabelledPublisher(
             topic='state', topic_is_literal=True, msg_type='m', api='a',
             handle='h', namespace='~', location='f:1',
-            label=model.INDEPENDENT, pattern='host_periodic', rate_hz=None)],
-        subscribers=[model.NodeSubscriber(
+            label=INDEPENDENT, pattern='host_periodic', rate_hz=None)],
+        subscribers=[NodeSubscriber(
             topic='command', topic_is_literal=True, msg_type='m', api='a',
             callback='cb', namespace='~', location='f:2')])
-    summary = model.PackageSummary(
+    summary = PackageSummary(
         package='acme_controllers', path='/a', tool_version='0',
         nodes=[plugin])
     instances, notes = launch_instances(

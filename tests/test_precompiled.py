@@ -7,7 +7,7 @@ import os
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.cpp.model_mode import precompiled
 from colcon_rsia.package import analysis
-from colcon_rsia.package import store
+from colcon_rsia.package import build_paths
 from colcon_rsia.package import workers
 import pytest
 
@@ -90,7 +90,7 @@ def test_units_load_the_standard_headers_precompiled_for_their_standard(
     summary = _analyze(package, build_base, [f'-std={standard}'])
 
     _assert_averager(summary)
-    directory = store.precompiled_dir(str(build_base))
+    directory = build_paths.precompiled_dir(str(build_base))
     assert directory == str(tmp_path / 'build' / '.rsia' / 'precompiled')
     [pch] = os.listdir(directory)
     assert pch.startswith(f'std-{standard}-') and pch.endswith('.pch')
@@ -100,7 +100,7 @@ def test_a_precompiled_header_clang_refuses_gives_way_to_a_plain_parse(
         tmp_path):
     package = _package(tmp_path)
     build_base = tmp_path / 'build' / 'averaging'
-    directory = store.precompiled_dir(str(build_base))
+    directory = build_paths.precompiled_dir(str(build_base))
     pch = precompiled.precompiled_header(
         directory, 'averager.cpp', ['-std=c++17'], find_resource_dir())
     assert os.path.isfile(pch)

@@ -10,7 +10,7 @@ import shutil
 
 from colcon_rsia.package.python_analysis import analyze_python_package
 from colcon_rsia.package.python_nodes import find_python_nodes
-from colcon_rsia.package.store import read_summary
+from colcon_rsia.summary.store import read_summary
 from conftest import build_workspace
 from conftest import WORKSPACES
 from projection import check_evidence

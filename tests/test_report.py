@@ -16,15 +16,21 @@ import shutil
 import subprocess
 import time
 
-from colcon_rsia import model
-from colcon_rsia.package.store import find_summaries
-from colcon_rsia.package.store import read_summary
 from colcon_rsia.report import build_report
 from colcon_rsia.report.html import CSP
 from colcon_rsia.report.html import render_html
 from colcon_rsia.report.layout import layered_layout
 from colcon_rsia.report.markdown import render_summary
 from colcon_rsia.report.writer import write_report
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import PATTERN_NONE
+from colcon_rsia.summary.nodes import Evidence
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.store import find_summaries
+from colcon_rsia.summary.store import read_summary
 from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 from colcon_rsia.system.since import changed_since
@@ -174,23 +180,23 @@ def test_summary_md_when_nothing_changed(system):
 
 def _hostile_summary():
     evil = '<script>alert(1)</script>'
-    publisher = model.LabelledPublisher(
+    publisher = LabelledPublisher(
         topic=f'/x{evil}', topic_is_literal=True, msg_type='std_msgs::"&',
         api='ros::NodeHandle::advertise', handle=None, namespace='',
-        location=f'src/{evil}.cpp:3', label=model.DEPENDENT,
-        pattern=model.PATTERN_NONE, rate_hz=None,
-        evidence=[model.Evidence('path', 'src/a.cpp:1', f'"{evil}"')])
-    subscriber = model.NodeSubscriber(
+        location=f'src/{evil}.cpp:3', label=DEPENDENT,
+        pattern=PATTERN_NONE, rate_hz=None,
+        evidence=[Evidence('path', 'src/a.cpp:1', f'"{evil}"')])
+    subscriber = NodeSubscriber(
         topic=f'/x{evil}', topic_is_literal=True, msg_type=None,
         api='ros::NodeHandle::subscribe', callback=evil, namespace='',
         location='src/a.cpp:2')
     nodes = [
-        model.Node(id=f'pkg/a{evil}', package='pkg', executable=f'a{evil}',
-                   kind='executable', publishers=[publisher]),
-        model.Node(id='pkg/b', package='pkg', executable='b',
-                   kind='executable', subscribers=[subscriber])]
-    return model.PackageSummary(package='pkg', path='/nowhere',
-                                tool_version='0', nodes=nodes)
+        Node(id=f'pkg/a{evil}', package='pkg', executable=f'a{evil}',
+             kind='executable', publishers=[publisher]),
+        Node(id='pkg/b', package='pkg', executable='b',
+             kind='executable', subscribers=[subscriber])]
+    return PackageSummary(package='pkg', path='/nowhere',
+                          tool_version='0', nodes=nodes)
 
 
 def test_html_escapes_every_text_from_the_summaries():

@@ -17,8 +17,8 @@ import re
 import shutil
 import time
 
-from colcon_rsia import model
 from colcon_rsia.frontend.compile_db import CompileEntry
+from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.package import cmake_configure
 from colcon_rsia.package import shared_cache
 from colcon_rsia.package.environment import environment_problems
@@ -187,7 +187,7 @@ def _unit(root):
 
 
 def _facts(diagnostic):
-    return model.TuFacts(source='src/a.cpp', diagnostics=[diagnostic])
+    return TuFacts(source='src/a.cpp', diagnostics=[diagnostic])
 
 
 def test_paths_of_the_checkout_are_placeholders(tmp_path):
@@ -227,7 +227,7 @@ def _write_and_read(entry, cache, header, rounds, results):
 
 def _big_facts():
     # large enough that the writes of several processes overlap
-    return model.TuFacts(source='src/a.cpp', diagnostics=[
+    return TuFacts(source='src/a.cpp', diagnostics=[
         f'note {i}: ' + 'x' * 200 for i in range(2000)])
 
 

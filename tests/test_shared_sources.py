@@ -114,24 +114,26 @@ def test_a_call_reaches_the_one_definition_of_its_name():
     # `int`; mapper.cc, repaired, defines it with the library's type. The
     # call reaches that definition (the only one of the name); a name
     # with two definitions (overloads) is not guessed
-    from colcon_rsia import model
+    from colcon_rsia.frontend.facts import Call
+    from colcon_rsia.frontend.facts import Function
+    from colcon_rsia.frontend.facts import TuFacts
     from colcon_rsia.package.node_facts import merge_facts
-    main = model.TuFacts(source='node_main.cc', functions=[
-        model.Function(id='c:@F@main#I#**C#', name='main',
-                       location='node_main.cc:3')], calls=[
-        model.Call(caller='c:@F@main#I#**C#',
-                   callee='c:@N@m@S@Mapper@F@Mapper#I#',
-                   location='node_main.cc:5'),
-        model.Call(caller='c:@F@main#I#**C#',
-                   callee='c:@N@m@S@Mapper@F@run#I#',
-                   location='node_main.cc:6')])
-    mapper = model.TuFacts(source='mapper.cc', functions=[
-        model.Function(id='c:@N@m@S@Mapper@F@Mapper#*$@N@lib@S@Map#',
-                       name='m::Mapper::Mapper', location='mapper.cc:4'),
-        model.Function(id='c:@N@m@S@Mapper@F@run#d#', name='m::Mapper::run',
-                       location='mapper.cc:9'),
-        model.Function(id='c:@N@m@S@Mapper@F@run#f#', name='m::Mapper::run',
-                       location='mapper.cc:12')])
+    main = TuFacts(source='node_main.cc', functions=[
+        Function(id='c:@F@main#I#**C#', name='main',
+                 location='node_main.cc:3')], calls=[
+        Call(caller='c:@F@main#I#**C#',
+             callee='c:@N@m@S@Mapper@F@Mapper#I#',
+             location='node_main.cc:5'),
+        Call(caller='c:@F@main#I#**C#',
+             callee='c:@N@m@S@Mapper@F@run#I#',
+             location='node_main.cc:6')])
+    mapper = TuFacts(source='mapper.cc', functions=[
+        Function(id='c:@N@m@S@Mapper@F@Mapper#*$@N@lib@S@Map#',
+                 name='m::Mapper::Mapper', location='mapper.cc:4'),
+        Function(id='c:@N@m@S@Mapper@F@run#d#', name='m::Mapper::run',
+                 location='mapper.cc:9'),
+        Function(id='c:@N@m@S@Mapper@F@run#f#', name='m::Mapper::run',
+                 location='mapper.cc:12')])
     merged = merge_facts([main, mapper])
     assert [c.callee for c in merged.calls] == [
         'c:@N@m@S@Mapper@F@Mapper#*$@N@lib@S@Map#',

@@ -10,13 +10,16 @@ The expectations are written from the code of each test.
 import glob
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend.cpp.token_facts import seconds_of
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import ORIGIN_AST
+from colcon_rsia.summary.kinds import ORIGIN_TOKENS
+from colcon_rsia.summary.kinds import PATTERN_TIMER
 from conftest import analyse_source
 import pytest
 
-TOKENS = model.ORIGIN_TOKENS
+TOKENS = ORIGIN_TOKENS
 
 
 def _facts(tmp_path, text, name='node.cpp'):
@@ -171,8 +174,8 @@ def test_the_ast_wins_where_it_has_the_call(tmp_path):
     summary = analyse_source(tmp_path, 'relay_pkg', ROS2_NODE)
     [node] = summary.nodes
     assert sorted(p.topic for p in node.publishers) == ['out', 'status']
-    assert {p.origin for p in node.publishers} == {model.ORIGIN_AST}
-    assert [s.origin for s in node.subscribers] == [model.ORIGIN_AST]
+    assert {p.origin for p in node.publishers} == {ORIGIN_AST}
+    assert [s.origin for s in node.subscribers] == [ORIGIN_AST]
 
 
 def test_a_call_resolved_to_another_library_is_not_taken(tmp_path):
@@ -199,12 +202,12 @@ def test_labels_evidence_and_coverage_say_what_came_from_tokens(tmp_path):
     publishers = {p.topic: p for p in node.publishers}
     status = publishers['status']
     assert (status.origin, status.label, status.pattern, status.rate_hz) == (
-        model.ORIGIN_TOKENS, model.INDEPENDENT, model.PATTERN_TIMER, 4.0)
-    assert publishers['out'].origin == model.ORIGIN_AST
+        ORIGIN_TOKENS, INDEPENDENT, PATTERN_TIMER, 4.0)
+    assert publishers['out'].origin == ORIGIN_AST
     sites = [s for s in summary.coverage.call_sites
              if s.role == 'publisher']
     assert {(s.line, s.recorded, s.origin) for s in sites} == {
-        (9, 'node', model.ORIGIN_AST), (13, 'node', model.ORIGIN_TOKENS)}
+        (9, 'node', ORIGIN_AST), (13, 'node', ORIGIN_TOKENS)}
 
 
 @pytest.mark.parametrize('written, seconds', [

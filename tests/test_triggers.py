@@ -8,9 +8,9 @@ test_workspaces/triggers/src/trig_nodes/src (see the EXPECT comments there).
 
 import json
 
-from colcon_rsia.package.store import find_summaries
-from colcon_rsia.package.store import read_summary
 from colcon_rsia.subverb.rates import parse_set_rates
+from colcon_rsia.summary.store import find_summaries
+from colcon_rsia.summary.store import read_summary
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.impact import rate_impact
 from colcon_rsia.system.impact import traditional_impact

@@ -10,7 +10,6 @@ from unittest import mock
 from colcon_core.command import CommandContext
 from colcon_core.event.job import JobEnded
 from colcon_core.event_reactor import EventReactorShutdown
-from colcon_rsia import model
 from colcon_rsia.event_handler.rsia import RsiaEventHandler
 from colcon_rsia.frontend.compile_db import clang_arguments
 from colcon_rsia.frontend.compile_db import CompileDatabaseError
@@ -19,9 +18,11 @@ from colcon_rsia.frontend.cpp import normalize_msg_type
 from colcon_rsia.frontend.cpp.const_eval import evaluate_tokens
 from colcon_rsia.package.runner import analyze
 from colcon_rsia.package.runner import missing_compile_db_message
-from colcon_rsia.package.store import read_summary
-from colcon_rsia.package.store import SummaryError
-from colcon_rsia.package.store import write_summary
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.store import read_summary
+from colcon_rsia.summary.store import SummaryError
+from colcon_rsia.summary.store import write_summary
 import pytest
 
 
@@ -79,8 +80,8 @@ def test_message_types_are_normalised(spelling, expected):
 
 
 def _summary():
-    return model.PackageSummary(
-        package='p', path='/p', tool_version='0', nodes=[model.Node(
+    return PackageSummary(
+        package='p', path='/p', tool_version='0', nodes=[Node(
             id='p/n', package='p', executable='n', kind='executable')])
 
 

@@ -13,7 +13,6 @@ import threading
 import time
 
 from colcon_rsia import __version__
-from colcon_rsia import model
 from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import CXX_STD_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
@@ -23,10 +22,10 @@ from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.compile_db import load_compile_database
 from colcon_rsia.frontend.compile_db import RESOURCE_DIR_HINT
 from colcon_rsia.frontend.ros_api import MAIN_FUNCTION
+from colcon_rsia.package import build_paths
 from colcon_rsia.package import coverage
 from colcon_rsia.package import plugin_hosts
 from colcon_rsia.package import shared_cache
-from colcon_rsia.package import store
 from colcon_rsia.package import workers
 from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.assembly import executable_nodes
@@ -44,6 +43,14 @@ from colcon_rsia.package.nodes import skipped_executable
 from colcon_rsia.package.nodes import target_naming
 from colcon_rsia.package.nodes import TEXT_READER
 from colcon_rsia.package.workers import check_stop
+from colcon_rsia.summary import store
+from colcon_rsia.summary import wrapper_store
+from colcon_rsia.summary.coverage import Coverage
+from colcon_rsia.summary.coverage import UnitCoverage
+from colcon_rsia.summary.kinds import ORIGIN_AST
+from colcon_rsia.summary.kinds import ORIGIN_TOKENS
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
+from colcon_rsia.summary.package_summary import PackageSummary
 
 
 class AnalysisError(RuntimeError):
@@ -93,7 +100,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
       REPAIR_ALWAYS repairs every unit with errors in its own code (fewer
       parse errors, more parses)
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
-    :rtype: colcon_rsia.model.PackageSummary
+    :rtype: colcon_rsia.summary.package_summary.PackageSummary
     :raises AnalysisError: when the package cannot be analysed at all
     """
     if header_mode not in HEADER_MODES:
@@ -129,7 +136,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         entries = _model_entries(
             entries, path, workspace_package_dirs,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
-        precompiled_dir = store.precompiled_dir(build_base)
+        precompiled_dir = build_paths.precompiled_dir(build_base)
 
     try:
         shared = shared_cache.SharedCache.from_environment(
@@ -141,9 +148,9 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     units, diagnostics = workers.parse_units(
         entries, unit_facts=_unit_facts, package_path=path,
         resource_dir=resource_dir, precompiled_dir=precompiled_dir,
-        cache=store.cache_dir(build_base) if use_cache else None,
+        cache=build_paths.cache_dir(build_base) if use_cache else None,
         jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
-        shared=shared, wrappers=store.read_workspace_wrappers(
+        shared=shared, wrappers=wrapper_store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units,
@@ -155,7 +162,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
     store.write_summary(build_base, summary)
-    store.write_wrappers(build_base, path, _exported_wrappers(units))
+    wrapper_store.write_wrappers(build_base, path, _exported_wrappers(units))
     return summary
 
 
@@ -174,20 +181,20 @@ def _unknown_namespace_notes(nodes):
     for node in nodes:
         for endpoint in node.publishers + node.subscribers:
             namespace = endpoint.namespace or ''
-            if namespace.startswith(model.UNKNOWN_NAMESPACE) and \
+            if namespace.startswith(UNKNOWN_NAMESPACE) and \
                     not (endpoint.topic or '').startswith(('/', '~')):
                 notes.append(
                     f'{endpoint.location}: note: {endpoint.topic!r} is '
                     f'relative to the NodeHandle namespace '
-                    f'{namespace[len(model.UNKNOWN_NAMESPACE):]!r}, whose '
+                    f'{namespace[len(UNKNOWN_NAMESPACE):]!r}, whose '
                     f'value the analysis does not know: not connected')
     return sorted(set(notes))
 
 
 def _coverage(path, units, nodes):
     """The C++ part of a package's coverage (see coverage.py)."""
-    return model.Coverage(
-        units=[model.UnitCoverage(
+    return Coverage(
+        units=[UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
             package_errors=unit.package_errors,
             repair_rounds=unit.repair_rounds, lost_calls=unit.lost_calls,
@@ -305,10 +312,10 @@ def _unrecorded_calls(tu, facts, package_path):
     coverage.fact_lines([facts], origins)
     lines = collections.defaultdict(list)
     for (file, role, line), found in origins.items():
-        if model.ORIGIN_AST in found:
+        if ORIGIN_AST in found:
             lines[(file, role)].append(line)
     missing = sum(1 for fact in facts.publish_sites + facts.timers
-                  if fact.origin == model.ORIGIN_TOKENS)
+                  if fact.origin == ORIGIN_TOKENS)
     for file in dict.fromkeys(os.path.abspath(f) for f in files):
         relative = os.path.relpath(file, package_path)
         for line, role, _ in _call_sites_of(file):
@@ -354,7 +361,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
 
     :param hidden: {file: why} of files libclang is given as empty
     :param wrappers: the other packages' wrapper summaries (parse_units),
-      and ``wrappers_digest`` theirs (store.wrappers_digest)
+      and ``wrappers_digest`` theirs (wrapper_store.wrappers_digest)
     :param shared: the shared_cache.SharedCache the facts are kept in too
     """
     hidden = hidden or {}
@@ -451,7 +458,7 @@ def build_summary(*, name, path, build_base, units, parsed=None):
     those of its own TUs plus the package's library TUs, never another
     executable's.
     """
-    summary = model.PackageSummary(
+    summary = PackageSummary(
         package=name, path=path, tool_version=__version__)
     read_by = []
     executables = find_executables(package_path=path, build_base=build_base,

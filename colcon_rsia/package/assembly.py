@@ -1,6 +1,6 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
-"""Node assembly: a node's facts -> its labelled :class:`model.Node`.
+"""Node assembly: a node's facts -> its labelled :class:`Node`.
 
 The C++ (:mod:`colcon_rsia.package.analysis`) and the Python
 (:mod:`colcon_rsia.package.python_analysis`) package analyses find a
@@ -11,13 +11,20 @@ run; :func:`build_node` selects what the node runs, labels its publishers
 
 import os
 
-from colcon_rsia import model
 from colcon_rsia.package.labeling import label_publishers
 from colcon_rsia.package.node_facts import handles_of
 from colcon_rsia.package.node_facts import node_facts
 from colcon_rsia.package.node_facts import resolve_namespace
 from colcon_rsia.package.node_facts import select_functions
 from colcon_rsia.package.node_facts import topic_param
+from colcon_rsia.summary.kinds import ROOT_HOST_PERIODIC
+from colcon_rsia.summary.nodes import LoadedNodelet
+from colcon_rsia.summary.nodes import Node
+from colcon_rsia.summary.nodes import NodeAction
+from colcon_rsia.summary.nodes import NodeClient
+from colcon_rsia.summary.nodes import NodeService
+from colcon_rsia.summary.nodes import NodeSubscriber
+from colcon_rsia.summary.nodes import NodeTimer
 
 
 def executable_nodes(package, executable, sources, path, merged, seeds):
@@ -102,13 +109,13 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
         if host is not None and event.api in host.periodic_events and \
                 event.callback in facts.functions:
             facts.host_roots.setdefault(
-                event.callback, model.ROOT_HOST_PERIODIC)
+                event.callback, ROOT_HOST_PERIODIC)
     for handle in private_handles:
         facts.namespaces[handle] = '~'
     publishers, roots = label_publishers(facts)
     names = {fid: f.name for fid, f in facts.functions.items()}
     node_name, namespace = _node_name(facts)
-    return model.Node(
+    return Node(
         id=node_id or f'{package}/{executable}', package=package,
         executable=executable, kind=kind,
         name=node_name, namespace=namespace,
@@ -117,7 +124,7 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
             os.path.relpath(s, path) for s in sources}),
         publishers=sorted(publishers, key=lambda p: (p.location, p.topic or '')),
         subscribers=sorted((
-            model.NodeSubscriber(
+            NodeSubscriber(
                 topic=s.topic, topic_is_literal=s.topic_is_literal,
                 msg_type=s.msg_type, api=s.api,
                 callback=names.get(s.callback, s.callback),
@@ -126,19 +133,19 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
                 origin=s.origin)
             for s in facts.subscribers),
             key=lambda s: (s.location, s.topic or '')),
-        timers=[model.NodeTimer(
+        timers=[NodeTimer(
             api=t.api, callback=names.get(t.callback, t.callback),
             period=t.period, rate_hz=t.rate_hz, location=t.location)
             for t in facts.timers],
-        services=[model.NodeService(
+        services=[NodeService(
             name=s.name, api=s.api,
             callback=names.get(s.callback, s.callback), location=s.location)
             for s in facts.services],
         actions=_actions(facts, names),
-        clients=[model.NodeClient(name=c.name, api=c.api, location=c.location)
+        clients=[NodeClient(name=c.name, api=c.api, location=c.location)
                  for c in facts.clients],
         roots=roots, host=host.host if host is not None else None,
-        loads=[model.LoadedNodelet(
+        loads=[LoadedNodelet(
             name=n.name, type=n.type, location=n.location)
             for n in facts.nodelet_loads if n.name and n.type])
 
@@ -154,7 +161,7 @@ def _actions(facts, names):
                 registration.handle in by_handle:
             extra.setdefault(registration.handle, []).extend(
                 registration.callbacks)
-    return [model.NodeAction(
+    return [NodeAction(
         name=a.name, api=a.api, role=a.role,
         callbacks=sorted({names.get(c, c) for c in
                           a.callbacks + extra.get(a.handle, [])}),

@@ -12,8 +12,9 @@ import json
 import os
 
 from colcon_rsia import __version__
-from colcon_rsia import model
-from colcon_rsia.package import store
+from colcon_rsia import safe_files
+from colcon_rsia.frontend.facts import FACTS_SCHEMA
+from colcon_rsia.frontend.facts import TuFacts
 
 
 def unit_cache_file(cache_dir, entry):
@@ -40,7 +41,8 @@ def _frontend_digest():
         # the colcon_rsia directory: this module is in colcon_rsia/package
         here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
         files = [os.path.join(here, relative) for relative in (
-            'model.py', 'frontend/ros_api.py')]
+            'frontend/facts.py', 'summary/kinds.py', 'summary/wrapper_store.py',
+            'frontend/ros_api.py')]
         # the C++ front end's modules (the model mode's too), and the
         # model headers
         for root, dirs, names in sorted(os.walk(
@@ -60,7 +62,7 @@ def _frontend_digest():
 
 
 def _cache_key(entry, wrappers):
-    return {'tool': __version__, 'schema': model.FACTS_SCHEMA,
+    return {'tool': __version__, 'schema': FACTS_SCHEMA,
             'frontend': _frontend_digest(),
             'arguments': entry.arguments, 'directory': entry.directory,
             'wrappers': wrappers}
@@ -70,7 +72,7 @@ def read_cached_facts(cache_file, entry, wrappers=None):
     """The cached facts of a unit, or None when any input changed.
 
     :param wrappers: the digest of the other packages' wrapper summaries
-      the unit was walked with (store.wrappers_digest)
+      the unit was walked with (wrapper_store.wrappers_digest)
     """
     try:
         with open(cache_file, encoding='utf-8') as h:
@@ -80,7 +82,7 @@ def read_cached_facts(cache_file, entry, wrappers=None):
         for path, stamp in data['inputs'].items():
             if _file_stamp(path) != stamp:
                 return None
-        return model.TuFacts.from_dict(data['facts'])
+        return TuFacts.from_dict(data['facts'])
     except (OSError, ValueError, KeyError, TypeError):
         return None  # no cache, or one we cannot trust: parse again
 
@@ -92,6 +94,6 @@ def write_cached_facts(cache_file, entry, inputs, facts, wrappers=None):
         'inputs': {p: _file_stamp(p) for p in inputs},
         'facts': facts.to_dict()}
     try:
-        store.write_json_atomically(cache_file, data)
+        safe_files.write_json_atomically(cache_file, data)
     except OSError:
         pass  # a cache that cannot be written only costs time

@@ -41,7 +41,7 @@ from colcon_rsia.environment_variables import \
     CMAKE_WITHOUT_SANDBOX_ENVIRONMENT_VARIABLE
 from colcon_rsia.package import sandbox
 from colcon_rsia.package import shared_cache
-from colcon_rsia.package import store
+from colcon_rsia.summary import store
 
 # the dependency provider (cmake_language(SET_DEPENDENCY_PROVIDER)) came
 # with CMake 3.24
@@ -229,7 +229,7 @@ def _keep(result_file, key, configured):
             'registrations': configured.registrations,
             'problem': configured.problem}
     try:
-        store.write_json_atomically(result_file, data)
+        safe_files.write_json_atomically(result_file, data)
     except OSError:
         pass  # a result that cannot be kept only costs time
     return data

@@ -12,7 +12,6 @@ translation unit, this is the ``coverage`` section of a summary.
 
 import collections
 
-from colcon_rsia import model
 from colcon_rsia.package.call_sites import CXX_HEADER_EXTENSIONS
 from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
 from colcon_rsia.package.call_sites import PUBLISHER
@@ -20,6 +19,11 @@ from colcon_rsia.package.call_sites import scan_package
 from colcon_rsia.package.call_sites import SUBSCRIBER
 from colcon_rsia.safe_files import printable
 from colcon_rsia.safe_files import printable_lines
+from colcon_rsia.summary.coverage import CallSiteCoverage
+from colcon_rsia.summary.coverage import Coverage
+from colcon_rsia.summary.kinds import ORIGIN_AST
+from colcon_rsia.summary.kinds import ORIGIN_TOKENS
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 # a call written over several lines is recorded at the line of its callee
 # name or of its object: both lie within this many lines of each other
@@ -58,8 +62,8 @@ def _origin(site, origins):
     near = set().union(*(
         origins.get((site.file, site.role, line), set())
         for line in range(site.line - LINE_SLACK, site.line + LINE_SLACK + 1)))
-    return model.ORIGIN_TOKENS if near == {model.ORIGIN_TOKENS} \
-        else model.ORIGIN_AST
+    return ORIGIN_TOKENS if near == {ORIGIN_TOKENS} \
+        else ORIGIN_AST
 
 
 def match_sites(sites, lines):
@@ -98,10 +102,10 @@ def match_sites(sites, lines):
 
 
 def call_site_coverage(sites, *, nodes, units):
-    """[model.CallSiteCoverage] of these sites against recorded facts.
+    """[CallSiteCoverage] of these sites against recorded facts.
 
-    :param nodes: the package's nodes (model.Node)
-    :param units: the facts of the units parsed (model.TuFacts); a site in
+    :param nodes: the package's nodes (Node)
+    :param units: the facts of the units parsed (TuFacts); a site in
       a file none of them read is in code the build never compiles
     """
     origins = collections.defaultdict(set)
@@ -119,7 +123,7 @@ def call_site_coverage(sites, *, nodes, units):
         recorded = RECORDED_IN_NODE if site in in_nodes else \
             RECORDED_IN_UNIT if site in in_units else \
             IN_UNREAD_FILE if site.file not in read else NOT_RECORDED
-        result.append(model.CallSiteCoverage(
+        result.append(CallSiteCoverage(
             file=site.file, line=site.line, role=site.role, api=site.api,
             recorded=recorded, origin=_origin(site, origins) if recorded in (
                 RECORDED_IN_NODE, RECORDED_IN_UNIT) else None))
@@ -225,7 +229,7 @@ def package_report(summary):
     """The coverage of one analysed package, as the JSON contract has it."""
     report = {'package': summary.package, 'status': ANALYSED,
               'has_coverage': summary.coverage is not None}
-    coverage = summary.coverage or model.Coverage()
+    coverage = summary.coverage or Coverage()
     report['units'] = len(coverage.units)
     report['units_with_errors'] = sum(
         1 for u in coverage.units if u.package_errors)
@@ -244,7 +248,7 @@ def package_report(summary):
             'in_units_only': sum(1 for c in sites
                                  if c.recorded == RECORDED_IN_UNIT),
             'from_tokens': sum(1 for c in sites
-                               if c.origin == model.ORIGIN_TOKENS)}
+                               if c.origin == ORIGIN_TOKENS)}
     report['missed'] = [
         {'file': c.file, 'line': c.line, 'role': c.role, 'api': c.api}
         for c in coverage.call_sites if c.recorded == NOT_RECORDED]
@@ -258,7 +262,7 @@ def package_report(summary):
         for role, endpoints in ((PUBLISHER, node.publishers),
                                 (SUBSCRIBER, node.subscribers))
         for endpoint in endpoints if not endpoint.topic_is_literal or
-        (endpoint.namespace or '').startswith(model.UNKNOWN_NAMESPACE)]
+        (endpoint.namespace or '').startswith(UNKNOWN_NAMESPACE)]
     report['unnamed_nodes'] = sorted(
         node.id for node in summary.nodes if not node.name)
     # which rules of the model mode's recovery repaired what, where

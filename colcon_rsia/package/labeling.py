@@ -20,12 +20,35 @@ question over the unpaced edges from the non-timer roots (a walk using only
 unpaced edges contains a loop-free path using a subset of them).
 """
 
-from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.package.node_facts import handles_of
 from colcon_rsia.package.node_facts import resolve_namespace
 from colcon_rsia.package.node_facts import topic_param
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import ORIGIN_TOKENS
+from colcon_rsia.summary.kinds import PATTERN_HOST_PERIODIC
+from colcon_rsia.summary.kinds import PATTERN_MIXED
+from colcon_rsia.summary.kinds import PATTERN_NO_SUBSCRIBERS
+from colcon_rsia.summary.kinds import PATTERN_NONE
+from colcon_rsia.summary.kinds import PATTERN_RATE_LOOP
+from colcon_rsia.summary.kinds import PATTERN_TIMER
+from colcon_rsia.summary.kinds import ROOT_ACTION
+from colcon_rsia.summary.kinds import ROOT_CONNECT
+from colcon_rsia.summary.kinds import ROOT_ENTRY
+from colcon_rsia.summary.kinds import ROOT_HOST_PERIODIC
+from colcon_rsia.summary.kinds import ROOT_HOST_REQUEST
+from colcon_rsia.summary.kinds import ROOT_MAIN
+from colcon_rsia.summary.kinds import ROOT_NODELET
+from colcon_rsia.summary.kinds import ROOT_SERVICE
+from colcon_rsia.summary.kinds import ROOT_SUBSCRIBER
+from colcon_rsia.summary.kinds import ROOT_TIMER
+from colcon_rsia.summary.kinds import TRIGGER_ALL
+from colcon_rsia.summary.nodes import Evidence
+from colcon_rsia.summary.nodes import LabelledPublisher
+from colcon_rsia.summary.nodes import Root
+from colcon_rsia.summary.nodes import Trigger
 
 
 def find_roots(facts):
@@ -44,40 +67,40 @@ def find_roots(facts):
             add(function, kind, facts.functions[function].location)
     for function in facts.functions.values():
         if function.name == ros_api.MAIN_FUNCTION:
-            add(function.id, model.ROOT_MAIN, function.location)
+            add(function.id, ROOT_MAIN, function.location)
         elif function.name.endswith('::' + ros_api.NODELET_INIT_METHOD):
-            add(function.id, model.ROOT_NODELET, function.location)
+            add(function.id, ROOT_NODELET, function.location)
     for timer in facts.timers:
-        add(timer.callback, model.ROOT_TIMER, timer.location)
+        add(timer.callback, ROOT_TIMER, timer.location)
     for subscriber in facts.subscribers:
-        add(subscriber.callback, model.ROOT_SUBSCRIBER, subscriber.location)
+        add(subscriber.callback, ROOT_SUBSCRIBER, subscriber.location)
     for publisher in facts.publishers:
         for callback in publisher.status_callbacks:
-            add(callback, model.ROOT_CONNECT, publisher.location)
+            add(callback, ROOT_CONNECT, publisher.location)
     for service in facts.services:
-        add(service.callback, model.ROOT_SERVICE, service.location)
+        add(service.callback, ROOT_SERVICE, service.location)
     for action in facts.actions:
         for callback in action.callbacks:
-            add(callback, model.ROOT_ACTION, action.location)
+            add(callback, ROOT_ACTION, action.location)
     for registration in facts.registrations:
-        add(registration.callback, model.ROOT_SUBSCRIBER,
+        add(registration.callback, ROOT_SUBSCRIBER,
             registration.location)
     called = {c.callee for c in facts.calls if c.caller in facts.functions}
     for function in facts.functions.values():
         if function.id not in roots and function.id not in called:
-            add(function.id, model.ROOT_ENTRY, function.location)
+            add(function.id, ROOT_ENTRY, function.location)
     # functions reachable from no root (a cycle nobody enters) are entered
     # from outside as far as we can tell
     reached = _reach(roots, _edges(facts.calls))
     for function in facts.functions.values():
         if function.id not in reached:
-            roots[function.id] = (model.ROOT_ENTRY, function.location)
+            roots[function.id] = (ROOT_ENTRY, function.location)
             reached |= _reach([function.id], _edges(facts.calls))
     return roots
 
 
 # roots whose calls come at a rate of their own, not with the node's inputs
-PACED_ROOTS = (model.ROOT_TIMER, model.ROOT_HOST_PERIODIC)
+PACED_ROOTS = (ROOT_TIMER, ROOT_HOST_PERIODIC)
 
 
 def _edges(calls, keep=None):
@@ -108,7 +131,7 @@ def has_inputs(facts):
     """Whether anything outside drives the node (pattern 1 fails)."""
     return bool(facts.subscribers or facts.services or any(
         a.role == 'server' for a in facts.actions) or any(
-        kind == model.ROOT_HOST_REQUEST for kind in facts.host_roots.values()))
+        kind == ROOT_HOST_REQUEST for kind in facts.host_roots.values()))
 
 
 def label_publishers(facts):
@@ -125,9 +148,9 @@ def label_publishers(facts):
 
     all_edges = _edges(facts.calls)
     timer_roots = [f for f, (k, _) in roots.items()
-                   if k == model.ROOT_TIMER]
+                   if k == ROOT_TIMER]
     host_roots = [f for f, (k, _) in roots.items()
-                  if k == model.ROOT_HOST_PERIODIC]
+                  if k == ROOT_HOST_PERIODIC]
     other_roots = [f for f, (k, _) in roots.items()
                    if k not in PACED_ROOTS]
     bad_parents = {}
@@ -148,9 +171,9 @@ def label_publishers(facts):
         sites = [s for s in facts.publish_sites
                  if publisher.handle and s.handle and
                  publisher.handle in handles_of(facts, s.handle)]
-        evidence = [model.Evidence(
+        evidence = [Evidence(
             'publish_site', s.location,
-            s.api + (' (read from tokens)' if s.origin == model.ORIGIN_TOKENS else ''))
+            s.api + (' (read from tokens)' if s.origin == ORIGIN_TOKENS else ''))
                     for s in sites]
         base = dict(
             topic=publisher.topic, topic_is_literal=publisher.topic_is_literal,
@@ -162,7 +185,7 @@ def label_publishers(facts):
             topic_param=topic_param(facts, publisher),
             origin=publisher.origin)
         if not driven:
-            evidence.append(model.Evidence(
+            evidence.append(Evidence(
                 'no_subscribers', publisher.location,
                 'the node has no subscriber, service or action server'))
             # its own pacing still sets its rate (`colcon rsia rates`)
@@ -171,18 +194,18 @@ def label_publishers(facts):
                 bad_parents, from_timers, from_host, from_others, callers_of,
                 []))
             # the rate is its pacing's (a talker's `ros::Rate loop(10)`)
-            labelled.append(model.LabelledPublisher(
-                label=model.INDEPENDENT,
-                pattern=model.PATTERN_NO_SUBSCRIBERS,
+            labelled.append(LabelledPublisher(
+                label=INDEPENDENT,
+                pattern=PATTERN_NO_SUBSCRIBERS,
                 rate_hz=paced.get('paced_rate_hz'),
                 evidence=evidence, **base, **paced))
             continue
         if not sites:
-            evidence.append(model.Evidence(
+            evidence.append(Evidence(
                 'no_publish_site', publisher.location,
                 'no publish call through this publisher was found'))
-            labelled.append(model.LabelledPublisher(
-                label=model.DEPENDENT, pattern=model.PATTERN_NONE,
+            labelled.append(LabelledPublisher(
+                label=DEPENDENT, pattern=PATTERN_NONE,
                 rate_hz=None, evidence=evidence,
                 triggers=[triggers.all_inputs(
                     publisher.location,
@@ -193,14 +216,14 @@ def label_publishers(facts):
             sites, facts, roots, is_paced, unpaced_from_others, bad_parents,
             from_timers, from_host, from_others, callers_of, evidence)
         rate_hz = None
-        if label == model.INDEPENDENT and len(rates) == 1:
+        if label == INDEPENDENT and len(rates) == 1:
             rate_hz = next(iter(rates))
-        labelled.append(model.LabelledPublisher(
+        labelled.append(LabelledPublisher(
             label=label, pattern=pattern, rate_hz=rate_hz,
             evidence=evidence,
-            triggers=triggers.of(sites) if label == model.DEPENDENT
+            triggers=triggers.of(sites) if label == DEPENDENT
             else None, **base, **_paced_rate(sites, label, pattern, rates)))
-    root_list = [model.Root(facts.functions[f].name, kind, location)
+    root_list = [Root(facts.functions[f].name, kind, location)
                  for f, (kind, location) in roots.items()]
     return labelled, sorted(root_list, key=lambda r: (r.location, r.function))
 
@@ -214,32 +237,32 @@ def _label_sites(sites, facts, roots, is_paced, unpaced_from_others,
         site_loops = is_paced(site.loops)
         if not site_loops and site.function in unpaced_from_others:
             evidence.append(_bad_path(site, facts, roots, bad_parents))
-            return model.DEPENDENT, model.PATTERN_NONE, set()
+            return DEPENDENT, PATTERN_NONE, set()
         if site.function in from_timers:
-            kinds.add(model.PATTERN_TIMER)
+            kinds.add(PATTERN_TIMER)
             for timer in facts.timers:
                 if timer.callback and _reaches(
                         timer.callback, site.function, facts):
                     rates.add(timer.rate_hz)
-                    evidence.append(model.Evidence(
+                    evidence.append(Evidence(
                         'timer', timer.location, _timer_detail(timer, facts)))
         if site.function in from_host.reached:
-            kinds.add(model.PATTERN_HOST_PERIODIC)
+            kinds.add(PATTERN_HOST_PERIODIC)
             # the host's loop rate is its own parameter, not in the code
             rates.add(None)
             evidence.append(from_host.evidence(site.function))
         if site.function in from_others or site_loops:
-            kinds.add(model.PATTERN_RATE_LOOP)
+            kinds.add(PATTERN_RATE_LOOP)
             loops = site_loops + _paced_calls_into(
                 site.function, facts, is_paced, callers_of)
             for loop in loops:
                 rate = facts.rates.get(loop.rate_handle)
                 rates.add(rate.rate_hz if rate is not None else None)
-                evidence.append(model.Evidence(
+                evidence.append(Evidence(
                     'rate_loop', loop.location,
                     f'paced by sleep() at {loop.sleep_location}'))
-    pattern = kinds.pop() if len(kinds) == 1 else model.PATTERN_MIXED
-    return model.INDEPENDENT, pattern, rates
+    pattern = kinds.pop() if len(kinds) == 1 else PATTERN_MIXED
+    return INDEPENDENT, pattern, rates
 
 
 class _HostReach:
@@ -261,7 +284,7 @@ class _HostReach:
         start = next(s for s, reached in self.by_start.items()
                      if function in reached)
         method = self.facts.functions[start]
-        return model.Evidence(
+        return Evidence(
             'host_periodic', method.location,
             f'{host.host} calls {method.name} from its fixed-rate loop '
             f'({host.rate_parameter})')
@@ -307,10 +330,10 @@ def _bad_path(site, facts, roots, parents):
         call = parents[current]
         path.append(call.location)
         current = call.caller
-    kind, location = roots.get(current, (model.ROOT_ENTRY, '?'))
+    kind, location = roots.get(current, (ROOT_ENTRY, '?'))
     function = facts.functions.get(current)
     name = function.name if function else current
-    return model.Evidence(
+    return Evidence(
         'path', location,
         f'{kind} root {name} reaches the publish site without a timer or '
         f'a rate loop (via {" <- ".join(path)})')
@@ -318,8 +341,8 @@ def _bad_path(site, facts, roots, parents):
 
 def _paced_rate(sites, label, pattern, rates):
     """The ``paced_rate_hz``/``paced_by`` fields of a publisher."""
-    if not sites or label != model.INDEPENDENT or len(rates) != 1 or \
-            pattern == model.PATTERN_MIXED:
+    if not sites or label != INDEPENDENT or len(rates) != 1 or \
+            pattern == PATTERN_MIXED:
         return {}
     rate = next(iter(rates))
     return {'paced_rate_hz': rate, 'paced_by': pattern} if rate else {}
@@ -358,8 +381,8 @@ class _TriggerWalk:
 
     def all_inputs(self, location, why):
         """The trigger that stands for every input of the node."""
-        return model.Trigger(
-            kind=model.TRIGGER_ALL, name=None, location=location, detail=why)
+        return Trigger(
+            kind=TRIGGER_ALL, name=None, location=location, detail=why)
 
     def of(self, sites):
         """The triggers of a dependent publisher with these sites."""
@@ -388,7 +411,7 @@ class _TriggerWalk:
                 current = parents[current].caller
             every = {s.every for s in hit}
             name_of = self.facts.functions[callback].name
-            triggers.append(model.Trigger(
+            triggers.append(Trigger(
                 kind=kind, name=name, location=location,
                 detail=f'{name_of} publishes at {" <- ".join(path)}',
                 sync=sync,
@@ -424,7 +447,7 @@ def _inputs(facts):
                            callback, None, False))
     # a plugin's host calls these when a request reaches it
     for function, kind in sorted(facts.host_roots.items()):
-        if kind == model.ROOT_HOST_REQUEST and function in facts.functions:
+        if kind == ROOT_HOST_REQUEST and function in facts.functions:
             method = facts.functions[function]
             inputs.append(('host_request', method.name.split('::')[-1],
                            method.location, function, None, False))

@@ -16,37 +16,56 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
-from colcon_rsia import model
+from colcon_rsia.frontend.facts import ActionFact
+from colcon_rsia.frontend.facts import Call
+from colcon_rsia.frontend.facts import ClientFact
+from colcon_rsia.frontend.facts import Function
+from colcon_rsia.frontend.facts import HostEvent
+from colcon_rsia.frontend.facts import NodeletLoad
+from colcon_rsia.frontend.facts import NodeNameFact
+from colcon_rsia.frontend.facts import PacedLoop
+from colcon_rsia.frontend.facts import ParamRead
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import PublishSite
+from colcon_rsia.frontend.facts import RateObject
+from colcon_rsia.frontend.facts import Registration
+from colcon_rsia.frontend.facts import ServiceFact
+from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.frontend.facts import SyncFact
+from colcon_rsia.frontend.facts import TimerFact
+from colcon_rsia.frontend.facts import TuFacts
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
+from colcon_rsia.summary.nodes import TopicParam
 
 
 @dataclass
 class NodeFacts:
     """Facts restricted to the functions one node runs."""
 
-    functions: Dict[str, model.Function] = field(default_factory=dict)
-    calls: List[model.Call] = field(default_factory=list)
-    publishers: List[model.PublisherFact] = field(default_factory=list)
-    subscribers: List[model.SubscriberFact] = field(default_factory=list)
-    timers: List[model.TimerFact] = field(default_factory=list)
-    services: List[model.ServiceFact] = field(default_factory=list)
-    actions: List[model.ActionFact] = field(default_factory=list)
-    publish_sites: List[model.PublishSite] = field(default_factory=list)
-    paced_loops: List[model.PacedLoop] = field(default_factory=list)
-    registrations: List[model.Registration] = field(default_factory=list)
-    host_events: List[model.HostEvent] = field(default_factory=list)
-    nodelet_loads: List[model.NodeletLoad] = field(default_factory=list)
-    rates: Dict[str, model.RateObject] = field(default_factory=dict)
-    syncs: List[model.SyncFact] = field(default_factory=list)
-    node_names: List[model.NodeNameFact] = field(default_factory=list)
+    functions: Dict[str, Function] = field(default_factory=dict)
+    calls: List[Call] = field(default_factory=list)
+    publishers: List[PublisherFact] = field(default_factory=list)
+    subscribers: List[SubscriberFact] = field(default_factory=list)
+    timers: List[TimerFact] = field(default_factory=list)
+    services: List[ServiceFact] = field(default_factory=list)
+    actions: List[ActionFact] = field(default_factory=list)
+    publish_sites: List[PublishSite] = field(default_factory=list)
+    paced_loops: List[PacedLoop] = field(default_factory=list)
+    registrations: List[Registration] = field(default_factory=list)
+    host_events: List[HostEvent] = field(default_factory=list)
+    nodelet_loads: List[NodeletLoad] = field(default_factory=list)
+    rates: Dict[str, RateObject] = field(default_factory=dict)
+    syncs: List[SyncFact] = field(default_factory=list)
+    node_names: List[NodeNameFact] = field(default_factory=list)
     # parameter USR -> the string literals the node's calls pass to it
     string_arguments: Dict[str, set] = field(default_factory=dict)
-    clients: List[model.ClientFact] = field(default_factory=list)
+    clients: List[ClientFact] = field(default_factory=list)
     namespaces: Dict[str, str] = field(default_factory=dict)
     # handle USR -> the handles it may stand for (parameters bound by
     # calls and binds)
     aliases: Dict[str, set] = field(default_factory=dict)
     # variable USR -> the parameter read into it
-    param_reads: Dict[str, model.ParamRead] = field(default_factory=dict)
+    param_reads: Dict[str, ParamRead] = field(default_factory=dict)
     # parameter name -> its default where the node declares/reads it with one
     param_defaults: Dict[str, str] = field(default_factory=dict)
     # a plugin: its host (colcon_rsia.package.plugin_hosts.Host) and the
@@ -100,7 +119,7 @@ def merge_facts(units):
     package's classes derived from the method's class (which one runs is
     the object's dynamic type).
     """
-    merged = model.TuFacts(source='')
+    merged = TuFacts(source='')
     for unit in units:
         merged.extend(unit)
     _link_by_name(merged)
@@ -337,8 +356,8 @@ def topic_param(facts, fact):
     if default is None:
         default = facts.param_defaults.get(name)
     prefix, suffix = getattr(fact, 'topic_affixes', None) or ('', '')
-    return model.TopicParam(name=name, default=default, namespace=namespace,
-                            prefix=prefix, suffix=suffix)
+    return TopicParam(name=name, default=default, namespace=namespace,
+                      prefix=prefix, suffix=suffix)
 
 
 def handles_of(facts, handle):
@@ -382,9 +401,9 @@ def resolve_namespace(facts, marker, depth=0):
         base = resolve_namespace(facts, parent, depth + 1)
         if not sub:
             return base
-        if sub.startswith(('/', model.UNKNOWN_NAMESPACE)) or not base:
+        if sub.startswith(('/', UNKNOWN_NAMESPACE)) or not base:
             return sub
-        if base.startswith(model.UNKNOWN_NAMESPACE):
+        if base.startswith(UNKNOWN_NAMESPACE):
             return base
         return f'{base}/{sub}'
     # a NodeHandle parameter: the handles the callers pass, when they agree

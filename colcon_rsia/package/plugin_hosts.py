@@ -27,7 +27,9 @@ interfaces (``gazebo/common/Plugin.hh``, ``gazebo/common/Events.hh``).
 
 from dataclasses import dataclass
 
-from colcon_rsia import model
+from colcon_rsia.summary.kinds import ROOT_HOST_PERIODIC
+from colcon_rsia.summary.kinds import ROOT_HOST_REQUEST
+from colcon_rsia.summary.kinds import ROOT_HOST_SETUP
 
 
 @dataclass(frozen=True)
@@ -207,9 +209,9 @@ def root_kind(host, method_name):
     if host is None:
         return None
     if method_name in host.periodic:
-        return model.ROOT_HOST_PERIODIC
+        return ROOT_HOST_PERIODIC
     if method_name in host.requests:
-        return model.ROOT_HOST_REQUEST
+        return ROOT_HOST_REQUEST
     if method_name in host.setup:
-        return model.ROOT_HOST_SETUP
+        return ROOT_HOST_SETUP
     return None

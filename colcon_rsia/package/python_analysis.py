@@ -3,7 +3,7 @@
 """Analyse one package's Python nodes: modules -> facts -> nodes -> summary.
 
 The Python counterpart of :func:`colcon_rsia.package.analysis.analyze_package`:
-the same facts (:class:`colcon_rsia.model.TuFacts`, one per module, from
+the same facts (:class:`colcon_rsia.frontend.facts.TuFacts`, one per module, from
 :mod:`colcon_rsia.frontend.python`), the same node selection and labelling
 (:func:`colcon_rsia.package.assembly.build_node`), the same summary.
 Nothing is built, imported or run: the sources are parsed where they are.
@@ -23,14 +23,17 @@ import os
 import time
 
 from colcon_rsia import __version__
-from colcon_rsia import model
 from colcon_rsia.frontend.python import extract_python_facts
 from colcon_rsia.frontend.python import MODULE_FUNCTION
 from colcon_rsia.package import coverage
-from colcon_rsia.package import store
 from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.python_nodes import find_python_nodes
+from colcon_rsia.summary import store
+from colcon_rsia.summary.coverage import Coverage
+from colcon_rsia.summary.kinds import ROOT_MAIN
+from colcon_rsia.summary.nodes import Root
+from colcon_rsia.summary.package_summary import PackageSummary
 
 
 def analyze_python_package(*, name, path, build_base):
@@ -40,7 +43,7 @@ def analyze_python_package(*, name, path, build_base):
     :param str path: the package source directory
     :param str build_base: the package's build directory
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
-    :rtype: colcon_rsia.model.PackageSummary
+    :rtype: colcon_rsia.summary.package_summary.PackageSummary
     """
     started = time.monotonic()
     summary = build_python_summary(name=name, path=path)
@@ -52,7 +55,7 @@ def analyze_python_package(*, name, path, build_base):
 def build_python_summary(*, name, path):
     """The summary of a package's Python nodes (not written anywhere)."""
     path = os.path.abspath(path)
-    summary = model.PackageSummary(
+    summary = PackageSummary(
         package=name, path=path, tool_version=__version__)
     layout = find_python_nodes(path)
     summary.diagnostics.extend(layout.problems)
@@ -99,7 +102,7 @@ def build_python_summary(*, name, path):
         summary.diagnostics.append(line)
     # a module no node loads (a plugin of rqt, a library of another
     # package's scripts) is not this package's nodes' code
-    summary.coverage = model.Coverage(
+    summary.coverage = Coverage(
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=True),
             nodes=summary.nodes, units=list(units.values())))
@@ -188,9 +191,9 @@ def _entry_roots(node, unit, entries):
     present = set()
     for root in node.roots:
         if (root.function, root.location) in wanted:
-            root.kind = model.ROOT_MAIN
+            root.kind = ROOT_MAIN
             present.add((root.function, root.location))
     for function, location in sorted(wanted - present):
         # called by the module body here, but run by the entry point too
-        node.roots.append(model.Root(function, model.ROOT_MAIN, location))
+        node.roots.append(Root(function, ROOT_MAIN, location))
     node.roots.sort(key=lambda r: (r.location, r.function))

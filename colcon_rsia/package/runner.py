@@ -18,10 +18,8 @@ from typing import Optional
 
 from colcon_rsia.environment_variables import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
-from colcon_rsia.model import INDEPENDENT
-from colcon_rsia.model import PackageSummary
+from colcon_rsia.package import build_paths
 from colcon_rsia.package import coverage
-from colcon_rsia.package import store
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
 from colcon_rsia.package.analysis import REPAIR_WHEN_IT_PAYS
@@ -32,6 +30,9 @@ from colcon_rsia.package.workers import check_stop
 from colcon_rsia.package.workers import Interrupted
 from colcon_rsia.safe_files import display
 from colcon_rsia.safe_files import printable
+from colcon_rsia.summary import store
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.package_summary import PackageSummary
 
 # package types whose build produces a compile database
 CPP_PACKAGE_TYPES = frozenset({
@@ -164,7 +165,7 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
     :param bool without_build: analyse a package that has no compile
       database from its sources (else: warn how to get the database)
     """
-    problem = store.name_problem(name)
+    problem = build_paths.name_problem(name)
     if problem:
         return Outcome(display(name), warning=problem)
     try:

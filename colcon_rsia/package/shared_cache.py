@@ -35,10 +35,11 @@ import threading
 import time
 
 from colcon_rsia import __version__
-from colcon_rsia import model
 from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import CACHE_DIR_ENVIRONMENT_VARIABLE
 from colcon_rsia.environment_variables import CACHE_MB_ENVIRONMENT_VARIABLE
+from colcon_rsia.frontend.facts import FACTS_SCHEMA
+from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.package.cache import _frontend_digest
 from colcon_rsia.package.settings import positive_number
 
@@ -267,7 +268,7 @@ class SharedCache:
         # absolute path (recovery/store.py): the same file in every clone
         path_digest = hashlib.sha1(os.path.abspath(entry.file).encode(
             'utf-8', 'surrogateescape')).hexdigest()[:16]
-        key = {'tool': __version__, 'schema': model.FACTS_SCHEMA,
+        key = {'tool': __version__, 'schema': FACTS_SCHEMA,
                'frontend': _frontend_digest(),
                'file': self._name(entry.file),
                'directory': self._name(entry.directory),
@@ -340,7 +341,7 @@ class SharedCache:
             if len(inputs) != len(data['inputs']):
                 raise ValueError('not ours')
             return {'inputs': inputs,
-                    'facts': model.TuFacts.from_dict(data['facts'])}
+                    'facts': TuFacts.from_dict(data['facts'])}
         except (ValueError, KeyError, TypeError, AttributeError,
                 UnicodeDecodeError):
             _remove(path)

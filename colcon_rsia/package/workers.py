@@ -41,11 +41,11 @@ import time
 from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import \
     UNIT_TIMEOUT_ENVIRONMENT_VARIABLE
-from colcon_rsia.package import store
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
 from colcon_rsia.package.settings import positive_number
+from colcon_rsia.summary import wrapper_store
 
 
 class Interrupted(Exception):
@@ -159,7 +159,7 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
       keyword arguments below; analysis._unit_facts)
     :param precompiled_dir: where the model mode's precompiled standard
       headers are kept (None: parse without them)
-    :param wrappers: the model.WrapperSummary of the workspace's other
+    :param wrappers: the WrapperSummary of the workspace's other
       packages, for the calls of functions whose body is out of sight
     :param float timeout: the seconds one unit may take
     :param repair: when the model mode repairs a unit (for unit_facts)
@@ -169,7 +169,7 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     """
     hidden = _unsafe_includes(entries, package_path)
     # (the cached facts of a unit depend on its repairs too)
-    digest = f'{store.wrappers_digest(wrappers)}:{repair}'
+    digest = f'{wrapper_store.wrappers_digest(wrappers)}:{repair}'
     if shared is not None:
         # (libclang sees the hidden files empty: other facts)
         shared = shared.with_hidden(hidden)

@@ -27,7 +27,8 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import __version__
-from colcon_rsia import model
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
 from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import impact_to_json
@@ -86,7 +87,7 @@ def edge_patterns(data):
             text += f' {publisher.rate_hz:g} Hz'
         if text not in patterns:
             patterns.append(text)
-    return patterns or [data.get('label', model.DEPENDENT)]
+    return patterns or [data.get('label', DEPENDENT)]
 
 
 def _propagation(system, changed):
@@ -109,7 +110,7 @@ def _propagation(system, changed):
         for topic in sorted(graph.successors(current)):
             data = graph.edges[current, topic]
             relabelled = current in changed_vertices
-            if data['label'] == model.INDEPENDENT and not relabelled:
+            if data['label'] == INDEPENDENT and not relabelled:
                 stopped[(current[1], topic[1])] = data
                 continue
             crossed.add((current, topic))
@@ -117,7 +118,7 @@ def _propagation(system, changed):
                 crossed.add((topic, subscriber))
                 if subscriber[1] not in via:
                     how = data['label']
-                    if relabelled and how == model.INDEPENDENT:
+                    if relabelled and how == INDEPENDENT:
                         how = 'changed node: relabelled dependent'
                     via[subscriber[1]] = f'{topic[1]} of {current[1]} ({how})'
                 if subscriber not in visited:

@@ -11,11 +11,12 @@ from html import escape
 import json
 import os
 
-from colcon_rsia import model
 from colcon_rsia.report import CHANGED
 from colcon_rsia.report import RATE
 from colcon_rsia.report import TRADITIONAL
 from colcon_rsia.report.layout import BOX_HEIGHT
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
 
 CSP = ("default-src 'none'; style-src 'unsafe-inline'; "
        "script-src 'unsafe-inline'; img-src data:")
@@ -86,7 +87,7 @@ def graph_data(data):
         vertex = ('topic', topic['name'])
         topics[topic['name']] = {
             'pub': [[p, graph.edges[('node', p), vertex].get(
-                'label', model.DEPENDENT)] for p in topic['publishers']],
+                'label', DEPENDENT)] for p in topic['publishers']],
             'sub': topic['subscribers'],
         }
     return {'nodes': nodes, 'topics': topics}
@@ -151,7 +152,7 @@ def graph_svg(data, drawing, *, standalone=False):
         source, target = edge.edge
         classes = ['edge']
         if source[0] == 'node' and data.system.graph.edges[edge.edge].get(
-                'label', model.DEPENDENT) == model.INDEPENDENT:
+                'label', DEPENDENT) == INDEPENDENT:
             classes.append('independent')
         marker = 'arrow'
         if edge.edge in data.crossed:
@@ -344,7 +345,7 @@ def topic_table(data):
         publishers = []
         for node_id in topic['publishers']:
             label = graph.edges[('node', node_id), vertex].get(
-                'label', model.DEPENDENT)
+                'label', DEPENDENT)
             publishers.append(
                 f'<li><code>{_e(node_id)}</code> '
                 f'<span class="label-{_e(label)}">{_e(label)}</span></li>')

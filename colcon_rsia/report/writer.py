@@ -5,12 +5,12 @@
 import json
 import os
 
-from colcon_rsia.package.store import write_text_atomically
 from colcon_rsia.report import build_report
 from colcon_rsia.report.drawing import draw_system
 from colcon_rsia.report.html import graph_svg
 from colcon_rsia.report.html import render_html
 from colcon_rsia.report.markdown import render_summary
+from colcon_rsia.safe_files import write_text_atomically
 from colcon_rsia.system.graph import graph_to_dot
 from colcon_rsia.system.impact import PAPER
 from colcon_rsia.system.rates import predict_rates

@@ -57,11 +57,11 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
                  'failed (for CI)')
 
     def main(self, *, context):  # noqa: D102
-        from colcon_rsia.package import store
         from colcon_rsia.package.coverage import FAILED
         from colcon_rsia.package.coverage import report_to_text
         from colcon_rsia.package.coverage import workspace_report
         from colcon_rsia.safe_files import max_file_mb_problem
+        from colcon_rsia.summary import store
         args = context.args
         if max_file_mb_problem():
             return max_file_mb_problem()

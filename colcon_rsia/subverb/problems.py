@@ -25,10 +25,10 @@ class ProblemsRsiaSubverb(RsiaSubverbExtensionPoint):
             help='Output format (default: text)')
 
     def main(self, *, context):  # noqa: D102
-        from colcon_rsia.package import store
         from colcon_rsia.package.problems import problems_report
         from colcon_rsia.package.problems import problems_to_text
         from colcon_rsia.safe_files import display
+        from colcon_rsia.summary import store
         args = context.args
         selected = [d.descriptor.name for d in get_packages(args)
                     if d.selected]

@@ -17,9 +17,12 @@ from typing import List
 from typing import Optional
 from typing import Tuple
 
-from colcon_rsia import model
 from colcon_rsia.safe_files import printable
 from colcon_rsia.safe_files import printable_lines
+from colcon_rsia.summary.kinds import DEPENDENT
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import TRIGGER_ALL
+from colcon_rsia.summary.nodes import Node
 from colcon_rsia.system.names import join
 from colcon_rsia.system.names import node_fqn
 from colcon_rsia.system.names import resolve
@@ -32,7 +35,7 @@ class Instance:
     """One running node: its analysed model and where it runs."""
 
     id: str                        # node id; with a launch file its full name
-    node: Optional[model.Node]     # None: its package was not analysed
+    node: Optional[Node]     # None: its package was not analysed
     package: str
     executable: str
     name: str                      # the node's base name
@@ -285,13 +288,13 @@ def resolve_triggers(instance, publisher):
       ``service:<name>``, ``action:<name>``, or ``*`` (every input; the
       trigger is None for a summary written before triggers were recorded)
     """
-    if publisher.label == model.INDEPENDENT:
+    if publisher.label == INDEPENDENT:
         return []
     if publisher.triggers is None:
         return [(ALL_INPUTS, None)]
     resolved = []
     for trigger in publisher.triggers:
-        if trigger.kind == model.TRIGGER_ALL:
+        if trigger.kind == TRIGGER_ALL:
             resolved.append((ALL_INPUTS, trigger))
         elif trigger.kind == 'subscriber':
             names = {s['resolved'] for s in instance.subscribers
@@ -312,7 +315,7 @@ def _attach_triggers(system, instance):
     for entry in instance.publishers:
         publisher = entry['publisher']
         entry['triggers'] = resolve_triggers(instance, publisher)
-        if entry['resolved'] is None or publisher.label == model.INDEPENDENT:
+        if entry['resolved'] is None or publisher.label == INDEPENDENT:
             continue
         data = system.graph.edges[vertex, ('topic', entry['resolved'])]
         data.setdefault('triggers', set()).update(
@@ -323,8 +326,8 @@ def _add_publisher_edge(graph, vertex, topic, publisher):
     if graph.has_edge(vertex, topic):
         data = graph.edges[vertex, topic]
         data['publishers'].append(publisher)
-        if publisher.label != model.INDEPENDENT:
-            data['label'] = model.DEPENDENT
+        if publisher.label != INDEPENDENT:
+            data['label'] = DEPENDENT
     else:
         graph.add_edge(vertex, topic, label=publisher.label,
                        publishers=[publisher])
@@ -343,7 +346,7 @@ def _connect_unknown(system, instance):
                            namespace=instance.namespace)
         topic = ('topic', resolved)
         graph.add_edge(topic, vertex, subscribers=[])
-        graph.add_edge(vertex, topic, label=model.DEPENDENT, publishers=[],
+        graph.add_edge(vertex, topic, label=DEPENDENT, publishers=[],
                        triggers={ALL_INPUTS})
 
 
@@ -409,7 +412,7 @@ def graph_to_json(system):
 
 def _triggers_json(entry):
     """The optional ``triggers`` of a dependent publisher in graph@1."""
-    if entry['publisher'].label == model.INDEPENDENT:
+    if entry['publisher'].label == INDEPENDENT:
         return {}
     return {
         'triggers': sorted({name for name, _ in entry['triggers']}),
@@ -463,7 +466,7 @@ def graph_to_dot(system, *, changed=(), rate_impact=(), traditional=(),
     for source, target, data in sorted(system.graph.edges(data=True)):
         attributes = ''
         if source[0] == 'node':
-            if data['label'] == model.INDEPENDENT:
+            if data['label'] == INDEPENDENT:
                 attributes = ' [style=dashed, label="independent"]'
             elif ALL_INPUTS not in data.get('triggers', {ALL_INPUTS}):
                 triggers = ', '.join(sorted(data['triggers']))

@@ -4,7 +4,7 @@
 
 import difflib
 
-from colcon_rsia import model
+from colcon_rsia.summary.kinds import INDEPENDENT
 from colcon_rsia.system.graph import ALL_INPUTS
 
 IMPACT_SCHEMA = 'colcon-rsia/impact@1'
@@ -57,7 +57,7 @@ def crosses(data, via, model_name):
     """
     if via is None or model_name == TRADITIONAL:
         return True
-    if data['label'] == model.INDEPENDENT:
+    if data['label'] == INDEPENDENT:
         return False
     if model_name == PAPER:
         return True
@@ -81,7 +81,7 @@ def _impact(system, changed, model_name, untriggered=None):
             data = graph.edges[current, topic]
             if not crosses(data, via, model_name):
                 if untriggered is not None and \
-                        data['label'] != model.INDEPENDENT:
+                        data['label'] != INDEPENDENT:
                     untriggered.add((current[1], via, topic[1]))
                 continue
             for subscriber in graph.successors(topic):

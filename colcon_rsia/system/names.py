@@ -10,7 +10,7 @@ sides of a remap are resolved in the node's namespace.
 """
 
 from colcon_rsia.launch.common import normalise_ns
-from colcon_rsia.model import UNKNOWN_NAMESPACE
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 
 def join(namespace, name):

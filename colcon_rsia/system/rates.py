@@ -15,8 +15,10 @@ from dataclasses import field
 from typing import List
 from typing import Optional
 
-from colcon_rsia import model
 from colcon_rsia.safe_files import printable_lines
+from colcon_rsia.summary.kinds import INDEPENDENT
+from colcon_rsia.summary.kinds import PATTERN_RATE_LOOP
+from colcon_rsia.summary.kinds import PATTERN_TIMER
 from colcon_rsia.system.graph import ALL_INPUTS
 from colcon_rsia.system.impact import crosses
 from colcon_rsia.system.impact import PAPER
@@ -93,7 +95,7 @@ class _Predictor:
                 continue
             for entry in instance.publishers:
                 if entry['resolved'] == name and \
-                        entry['publisher'].label != model.INDEPENDENT:
+                        entry['publisher'].label != INDEPENDENT:
                     inputs += [trigger for trigger, _ in entry['triggers']
                                if trigger != ALL_INPUTS and ':' not in trigger]
         return inputs
@@ -130,7 +132,7 @@ class _Predictor:
     def _publisher(self, instance, entry):
         publisher = entry['publisher']
         where = f'{instance.id} {publisher.location}'
-        if publisher.label == model.INDEPENDENT:
+        if publisher.label == INDEPENDENT:
             hz = publisher.rate_hz or publisher.paced_rate_hz
             pattern = publisher.paced_by or publisher.pattern
             if hz is None or pattern not in _PACED_SOURCES:
@@ -187,8 +189,8 @@ class _Predictor:
 
 # the pattern of an independent publisher -> the source of its rate
 _PACED_SOURCES = {
-    model.PATTERN_TIMER: 'timer',
-    model.PATTERN_RATE_LOOP: 'Rate loop',
+    PATTERN_TIMER: 'timer',
+    PATTERN_RATE_LOOP: 'Rate loop',
 }
 
 
@@ -242,7 +244,7 @@ def what_if(system, *, set_rates=None, changed=(), model_name=PAPER):
                 data = graph.edges[node, out]
                 if out[1] in moved or crosses(data, name, model_name):
                     continue
-                why = 'independent' if data['label'] == model.INDEPENDENT \
+                why = 'independent' if data['label'] == INDEPENDENT \
                     else f'not triggered by {name}'
                 kept.append({
                     'topic': out[1], 'hz': after[out[1]].hz,

@@ -3,7 +3,7 @@
 """``--since REF``: the changed nodes from the files git says changed.
 
 A changed file maps to every node instance whose ``files`` (the package's
-files its code is read from, :attr:`colcon_rsia.model.Node.files`) hold it;
+files its code is read from, :attr:`colcon_rsia.summary.nodes.Node.files`) hold it;
 a changed launch or parameter file of the ``--launch`` files maps to every
 instance (the launch file may have changed any of them). Committed and
 working-tree changes count (``git diff --name-only REF``); untracked files

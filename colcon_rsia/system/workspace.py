@@ -12,11 +12,11 @@ import os
 import sys
 
 from colcon_core.package_selection import get_packages
-from colcon_rsia.package.store import find_summaries
-from colcon_rsia.package.store import read_failure
-from colcon_rsia.package.store import read_summary
-from colcon_rsia.package.store import SummaryError
 from colcon_rsia.safe_files import printable
+from colcon_rsia.summary.store import find_summaries
+from colcon_rsia.summary.store import read_failure
+from colcon_rsia.summary.store import read_summary
+from colcon_rsia.summary.store import SummaryError
 from colcon_rsia.system.impact import expand_changed
 from colcon_rsia.system.impact import UnknownNodeError
 

@@ -13,7 +13,6 @@ callers' names and callbacks.
 import re
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
@@ -27,6 +26,8 @@ from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.hosted import node_handle_marker
+from colcon_rsia.frontend.facts import ParamBinding
+from colcon_rsia.frontend.facts import StringArgument
 
 CK = ci.CursorKind
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
@@ -126,18 +127,18 @@ class Callbacks:
             if caller is not None and is_string(argument):
                 value, literal = self.topic(argument)
                 if literal:
-                    self.facts.string_arguments.append(model.StringArgument(
+                    self.facts.string_arguments.append(StringArgument(
                         caller=caller, callee=callee, index=index,
                         value=value))
                     continue
             handle = plain_handle(argument)
             if handle is not None and self.in_package(handle):
-                self.facts.bindings.append(model.ParamBinding(
+                self.facts.bindings.append(ParamBinding(
                     callee=callee, index=index, handle=handle.get_usr()))
             elif node_handle_marker(argument) is not None:
                 # a handle made in place (getPrivateNodeHandle(),
                 # ros::NodeHandle("~")): its namespace marker
-                self.facts.bindings.append(model.ParamBinding(
+                self.facts.bindings.append(ParamBinding(
                     callee=callee, index=index,
                     handle=node_handle_marker(argument)))
 

@@ -30,7 +30,6 @@ from dataclasses import dataclass
 import re
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
@@ -44,6 +43,9 @@ from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.facts import Call
+from colcon_rsia.frontend.facts import RateObject
+from colcon_rsia.frontend.facts import TimerFact
 
 CK = ci.CursorKind
 
@@ -106,7 +108,7 @@ class OtherClocks:
         callback = self._slot(arguments, written)
         if callback is None:
             return
-        fact = model.TimerFact(
+        fact = TimerFact(
             function=ctx.function, api=api.label, callback=callback,
             period='', rate_hz=None, location=self.walker.location(cursor))
         self.walker.facts.timers.append(fact)
@@ -159,7 +161,7 @@ class OtherClocks:
         period = self.walker.argument(arguments, api.period_arg)
         seconds = _period_seconds(period, api.period_unit) \
             if period is not None else None
-        self.walker.facts.timers.append(model.TimerFact(
+        self.walker.facts.timers.append(TimerFact(
             function=ctx.function, api=name, callback=method.get_usr(),
             period=expression_text(period) if period is not None else '',
             rate_hz=recorder.rate_of_period(seconds), location=self.walker.location(cursor)))
@@ -193,7 +195,7 @@ class OtherClocks:
         step = _advance(loop, deadline)
         if step is None:
             return  # a deadline that never moves
-        self.walker.facts.rates.append(model.RateObject(
+        self.walker.facts.rates.append(RateObject(
             handle=deadline.get_usr(),
             rate_hz=recorder.rate_of_period(_period_seconds(step, 1.0)),
             expression=expression_text(step),
@@ -210,7 +212,7 @@ class OtherClocks:
             if timer in self._single_shot:
                 # fires once: called from where it is connected
                 facts.timers.remove(fact)
-                facts.calls.append(model.Call(
+                facts.calls.append(Call(
                     caller=fact.function, callee=fact.callback,
                     location=fact.location, loops=[], kind='ref'))
                 continue
@@ -221,7 +223,7 @@ class OtherClocks:
                           other.function in wait.reaches
                           for other in self._waits)
             if not rearmed:
-                facts.calls.append(model.Call(
+                facts.calls.append(Call(
                     caller=wait.function, callee=wait.callback,
                     location=wait.location, loops=wait.loops, kind='ref'))
                 continue
@@ -229,7 +231,7 @@ class OtherClocks:
                 continue
             added.add((wait.timer, wait.callback))
             period, rate_hz = self._period_of(wait.timer)
-            facts.timers.append(model.TimerFact(
+            facts.timers.append(TimerFact(
                 function=wait.function, api=wait.api,
                 callback=wait.callback, period=period, rate_hz=rate_hz,
                 location=wait.location))

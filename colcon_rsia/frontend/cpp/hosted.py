@@ -14,13 +14,14 @@ walker's table like those of :mod:`colcon_rsia.frontend.cpp.roles`:
 """
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.strings import unquote
+from colcon_rsia.frontend.facts import HostEvent
+from colcon_rsia.frontend.facts import NodeletLoad
 
 CK = ci.CursorKind
 
@@ -42,7 +43,7 @@ class HostedRoles:
     def _on_host_event(self, cursor, ctx, stack, api, name, arguments):
         callback, _ = self.walker.resolve_callback(
             self.walker.argument(arguments, api.callback_arg))
-        self.facts.host_events.append(model.HostEvent(
+        self.facts.host_events.append(HostEvent(
             function=ctx.function, api=name, callback=callback,
             location=self.walker.location(cursor)))
 
@@ -51,7 +52,7 @@ class HostedRoles:
             self.walker.argument(arguments, api.name_arg))
         nodelet_type, type_known = self.walker.topic(
             self.walker.argument(arguments, api.type_name_arg))
-        self.facts.nodelet_loads.append(model.NodeletLoad(
+        self.facts.nodelet_loads.append(NodeletLoad(
             function=ctx.function,
             name=nodelet_name if name_known else None,
             type=nodelet_type if type_known else None,

@@ -14,7 +14,6 @@ import dataclasses
 import re
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import hosted
@@ -37,7 +36,22 @@ from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.strings import string_parts
-from colcon_rsia.model import UNKNOWN_NAMESPACE
+from colcon_rsia.frontend.facts import ActionFact
+from colcon_rsia.frontend.facts import ClientFact
+from colcon_rsia.frontend.facts import Function
+from colcon_rsia.frontend.facts import HandleAlias
+from colcon_rsia.frontend.facts import NodeHandleFact
+from colcon_rsia.frontend.facts import NodeNameFact
+from colcon_rsia.frontend.facts import ParamRead
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import PublishSite
+from colcon_rsia.frontend.facts import RateObject
+from colcon_rsia.frontend.facts import Registration
+from colcon_rsia.frontend.facts import ServiceFact
+from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.frontend.facts import SyncFact
+from colcon_rsia.frontend.facts import TimerFact
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
 
@@ -140,7 +154,7 @@ class RosRoles:
                 self.walker.argument(arguments, position))[0]] if callback]
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.publishers.append(model.PublisherFact(
+            self.facts.publishers.append(PublisherFact(
                 handle_name=target.spelling if target is not None else None,
                 status_callbacks=status_callbacks, **common))
         self.walker.string_variables.concatenation(
@@ -162,7 +176,7 @@ class RosRoles:
         target = self.walker.target(cursor, stack)
         handle = first_handle(wrapped)
         if target is not None and handle is not None:
-            self.facts.handle_aliases.append(model.HandleAlias(
+            self.facts.handle_aliases.append(HandleAlias(
                 alias=target.get_usr(), handle=handle.get_usr(),
                 location=self.walker.location(cursor)))
         return True
@@ -295,7 +309,7 @@ class RosRoles:
             target = first_handle(call_object(cursor))
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.subscribers.append(model.SubscriberFact(
+            self.facts.subscribers.append(SubscriberFact(
                 callback=callback, **common))
         self.walker.string_variables.concatenation(
             self.facts.subscribers[-1:], literal,
@@ -358,7 +372,7 @@ class RosRoles:
         if default_argument is not None:
             default, is_literal = self.walker.topic(default_argument)
             default = default if is_literal else None
-        read = model.ParamRead(
+        read = ParamRead(
             function=ctx.function, name=param, default=default,
             handle=target.get_usr() if target is not None else None,
             nh='~' if api.node_private else self._namespace_of(cursor),
@@ -386,7 +400,7 @@ class RosRoles:
             handle = first_handle(self.walker.argument(arguments, api.name_arg))
             if handle is not None and handle.kind == CK.PARM_DECL:
                 name_param = handle.get_usr()
-        self.facts.node_names.append(model.NodeNameFact(
+        self.facts.node_names.append(NodeNameFact(
             function=ctx.function, name=node_name if literal else None,
             namespace=namespace, location=self.walker.location(cursor),
             name_param=name_param))
@@ -405,24 +419,24 @@ class RosRoles:
         location = self.walker.location(cursor)
         # what the real timer calls; the id is unique per object
         callback = f'{api.label}::update@{location}'
-        self.facts.functions.append(model.Function(
+        self.facts.functions.append(Function(
             id=callback, name=f'{api.label}::update', location=location))
         period = self.walker.argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
         rate_hz = recorder.rate_of_period(seconds)
-        self.facts.timers.append(model.TimerFact(
+        self.facts.timers.append(TimerFact(
             function=ctx.function, api=api.label, callback=callback,
             period=expression_text(period) if period is not None
             else str(api.default_period),
             rate_hz=rate_hz, location=location))
-        self.facts.publish_sites.append(model.PublishSite(
+        self.facts.publish_sites.append(PublishSite(
             function=callback, api=api.label, handle=target.get_usr(),
             location=location))
 
     def _on_client(self, cursor, ctx, stack, api, name, arguments):
         service, _ = self.walker.topic(self.walker.argument(arguments, api.name_arg))
-        self.facts.clients.append(model.ClientFact(
+        self.facts.clients.append(ClientFact(
             function=ctx.function, api=name, name=service,
             location=self.walker.location(cursor)))
 
@@ -438,7 +452,7 @@ class RosRoles:
         if made is not None and callback:
             self.walker.stored_then_registered.add(callback)
         period = self.walker.argument(arguments, api.period_arg)
-        self.facts.timers.append(model.TimerFact(
+        self.facts.timers.append(TimerFact(
             function=ctx.function, api=ros_api.api_label(name),
             callback=callback,
             period=expression_text(period) if period is not None else '',
@@ -466,7 +480,7 @@ class RosRoles:
         service, literal = self.walker.topic(argument)
         callback, _ = self.walker.resolve_callback(
             self.walker.argument(arguments, api.callback_arg))
-        fact = model.ServiceFact(
+        fact = ServiceFact(
             function=ctx.function, api=name, name=service,
             callback=callback, location=self.walker.location(cursor))
         self.facts.services.append(fact)
@@ -489,7 +503,7 @@ class RosRoles:
         is_registration = api.name_arg is None
         target = first_handle(call_object(cursor)) if is_registration \
             else self.walker.target(cursor, stack)
-        self.facts.actions.append(model.ActionFact(
+        self.facts.actions.append(ActionFact(
             function=ctx.function, api=ros_api.api_label(name), role=role,
             name=action, callbacks=callbacks,
             handle=target.get_usr() if target is not None else None,
@@ -519,7 +533,7 @@ class RosRoles:
             msg_type = f'{action_type}{suffix.capitalize()}' \
                 if action_type.endswith('Action') and suffix == 'goal' \
                 else 'actionlib_msgs::GoalID' if suffix == 'cancel' else None
-            self.facts.subscribers.append(model.SubscriberFact(
+            self.facts.subscribers.append(SubscriberFact(
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=f'{action}/{suffix}', topic_is_literal=literal,
                 msg_type=msg_type,
@@ -548,7 +562,7 @@ class RosRoles:
                 rate_hz = _period_rate_hz(argument)
             else:
                 rate_hz = evaluate_number(argument)
-        self.facts.rates.append(model.RateObject(
+        self.facts.rates.append(RateObject(
             handle=target.get_usr(), rate_hz=rate_hz,
             expression=expression_text(argument) if argument else '',
             location=self.walker.location(cursor)))
@@ -572,7 +586,7 @@ class RosRoles:
             target = first_handle(call_object(cursor))
         else:
             target = self.walker.target(cursor, stack)
-        self.facts.syncs.append(model.SyncFact(
+        self.facts.syncs.append(SyncFact(
             handle=target.get_usr() if target is not None else None,
             inputs=inputs, location=self.walker.location(cursor)))
 
@@ -581,7 +595,7 @@ class RosRoles:
         callback, _ = self.walker.resolve_callback(
             self.walker.argument(arguments, api.callback_arg))
         handle = first_handle(call_object(cursor))
-        self.facts.registrations.append(model.Registration(
+        self.facts.registrations.append(Registration(
             function=ctx.function,
             handle=handle.get_usr() if handle is not None else None,
             callback=callback, location=self.walker.location(cursor)))
@@ -611,14 +625,14 @@ class RosRoles:
                 variable = first_handle(written[0])
                 namespace = UNKNOWN_NAMESPACE + (namespace or '?')
                 if variable is not None:
-                    fact = model.NodeHandleFact(
+                    fact = NodeHandleFact(
                         handle=target.get_usr(), namespace=namespace)
                     self.walker.string_variables.namespace_from(
                         fact, variable.get_usr())
                     self.facts.node_handles.append(fact)
                     return
         # (ImageTransport(shared_from_this()): a node, not a namespace)
-        self.facts.node_handles.append(model.NodeHandleFact(
+        self.facts.node_handles.append(NodeHandleFact(
             handle=target.get_usr(), namespace=namespace or ''))
 
     def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
@@ -628,20 +642,20 @@ class RosRoles:
         if target is None or not literal:
             return
         parent = self._namespace_of(cursor)
-        self.facts.node_handles.append(model.NodeHandleFact(
+        self.facts.node_handles.append(NodeHandleFact(
             handle=target.get_usr(),
             namespace=f'ref:{parent}|{sub}' if parent else sub))
 
     def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
         target = self.walker.target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(model.NodeHandleFact(
+            self.facts.node_handles.append(NodeHandleFact(
                 handle=target.get_usr(), namespace='~'))
 
     def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
         target = self.walker.target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(model.NodeHandleFact(
+            self.facts.node_handles.append(NodeHandleFact(
                 handle=target.get_usr(), namespace=''))
 
 

@@ -23,7 +23,6 @@ from dataclasses import dataclass
 import re
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -37,9 +36,12 @@ from colcon_rsia.frontend.cpp.token_text import OPENING
 from colcon_rsia.frontend.cpp.token_text import seconds_of
 from colcon_rsia.frontend.cpp.token_text import string_literal
 from colcon_rsia.frontend.cpp.token_text import tokens_of
+from colcon_rsia.frontend.facts import Call
+from colcon_rsia.frontend.facts import Function
+from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 
 CK = ci.CursorKind
-TOKENS = model.ORIGIN_TOKENS
+TOKENS = ORIGIN_TOKENS
 
 # tokens after which a `[` starts a lambda, not a subscript
 _BEFORE_LAMBDA = frozenset({
@@ -77,7 +79,7 @@ def recover_facts(tu, facts, *, definitions, relpath, ros2, resolved_calls,
     read. A clean unit costs nothing here.
 
     :param tu: the parsed unit
-    :param facts: the unit's model.TuFacts, from the AST walk
+    :param facts: the unit's TuFacts, from the AST walk
     :param definitions: {function id: definition cursor} of the package's
       functions the walk met
     :param relpath: the path of a file relative to the package
@@ -352,7 +354,7 @@ class _Reader(CallFacts):
         lambda_id = self._lambda_id(i)
         if lambda_id not in self.known_functions:
             self.known_functions.add(lambda_id)
-            self.facts.functions.append(model.Function(
+            self.facts.functions.append(Function(
                 id=lambda_id,
                 name=f'lambda@{self.function_.relative}:{tokens[i].line}',
                 location=self._location(i), class_id=None))
@@ -764,6 +766,6 @@ class _Reader(CallFacts):
         if any(c.caller == ctx.function and c.callee == callee and
                c.location == location for c in self.facts.calls):
             return
-        self.facts.calls.append(model.Call(
+        self.facts.calls.append(Call(
             caller=ctx.function, callee=callee, location=location,
             loops=ctx.loop_ids(), kind=kind))

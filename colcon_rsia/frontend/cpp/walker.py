@@ -21,7 +21,6 @@ import os
 import re
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import clocks
@@ -74,6 +73,15 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
 from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
 from colcon_rsia.frontend.cpp.strings import unquote
+from colcon_rsia.frontend.facts import Call
+from colcon_rsia.frontend.facts import Function
+from colcon_rsia.frontend.facts import HandleAlias
+from colcon_rsia.frontend.facts import NodeHandleFact
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import PublishSite
+from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.frontend.facts import TuFacts
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
 
@@ -95,9 +103,9 @@ def extract_facts(tu, *, package_path, source, external_wrappers=None):
     :param str source: the TU's main file, relative to the package
     :param external_wrappers: the wrappers.ExternalWrappers of the
       workspace's other packages, for calls of functions with no body here
-    :rtype: colcon_rsia.model.TuFacts
+    :rtype: colcon_rsia.frontend.facts.TuFacts
     """
-    walker = _Walker(package_path, model.TuFacts(source=source),
+    walker = _Walker(package_path, TuFacts(source=source),
                      external_wrappers=external_wrappers)
     walker.walk(tu)
     walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
@@ -323,7 +331,7 @@ class _Walker(Callbacks):
         fid = cursor.get_usr()
         self._definitions[fid] = cursor
         params = [c for c in cursor.get_children() if c.kind == CK.PARM_DECL]
-        self.facts.functions.append(model.Function(
+        self.facts.functions.append(Function(
             id=fid, name=qualified_name(cursor),
             location=self.location(cursor),
             class_id=self._class_id(cursor),
@@ -333,9 +341,9 @@ class _Walker(Callbacks):
                 # a NodeHandle its callers give: their handle's namespace
                 # when the node's calls show it (node_facts), else one the
                 # analysis does not know, never the root's
-                self.facts.node_handles.append(model.NodeHandleFact(
+                self.facts.node_handles.append(NodeHandleFact(
                     handle=param.get_usr(),
-                    namespace=f'{model.UNKNOWN_NAMESPACE}{param.spelling}'))
+                    namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}'))
         parent = cursor.semantic_parent
         owner = parent if parent is not None and \
             parent.kind in CLASS_KINDS else None
@@ -376,10 +384,10 @@ class _Walker(Callbacks):
                     handle=cursor.get_usr(), location=self.location(cursor),
                     class_id=class_id)
                 if api.role == ros_api.DECLARED_PUBLISHER:
-                    self.facts.publishers.append(model.PublisherFact(
+                    self.facts.publishers.append(PublisherFact(
                         handle_name=cursor.spelling, **common))
                 else:
-                    self.facts.subscribers.append(model.SubscriberFact(
+                    self.facts.subscribers.append(SubscriberFact(
                         callback=None, **common))
             return
 
@@ -448,7 +456,7 @@ class _Walker(Callbacks):
         # the package's own handles: not the fields of a message
         if handle is not None and handle != variable and \
                 self.in_package(handle):
-            self.facts.handle_aliases.append(model.HandleAlias(
+            self.facts.handle_aliases.append(HandleAlias(
                 alias=variable.get_usr(), handle=handle.get_usr(),
                 location=self.location(variable)))
 
@@ -458,7 +466,7 @@ class _Walker(Callbacks):
 
     def _lambda(self, cursor, ctx):
         lid = self._lambda_id(cursor)
-        self.facts.functions.append(model.Function(
+        self.facts.functions.append(Function(
             id=lid, name=f'lambda@{self.location(cursor)}',
             location=self.location(cursor),
             class_id=None,
@@ -472,7 +480,7 @@ class _Walker(Callbacks):
                 self._visit(child, inner, [])
 
     def _add_call(self, ctx, callee, cursor, kind='call', virtual=None):
-        self.facts.calls.append(model.Call(
+        self.facts.calls.append(Call(
             caller=ctx.function, callee=callee,
             location=self.location(cursor), loops=ctx.loop_ids(), kind=kind,
             virtual=virtual))
@@ -580,7 +588,7 @@ class _Walker(Callbacks):
                 call_arguments(cursor))))
 
     def publish_site(self, ctx, stack, cursor, api, handle):
-        self.facts.publish_sites.append(model.PublishSite(
+        self.facts.publish_sites.append(PublishSite(
             function=ctx.function, api=api, handle=handle,
             location=self.location(cursor), loops=ctx.loop_ids(),
             every=every_nth(stack + [cursor])))

@@ -31,7 +31,6 @@ from dataclasses import dataclass
 from typing import Optional
 
 import clang.cindex as ci
-from colcon_rsia import model
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import call_arguments
@@ -44,6 +43,9 @@ from colcon_rsia.frontend.cpp.cursors import first_template_argument
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.summary.wrapper_store import WrapperSummary
 
 CK = ci.CursorKind
 
@@ -161,7 +163,7 @@ class Summaries:
                 continue
             if not summary.endpoints and not summary.publishes_members:
                 continue
-            result.append(model.WrapperSummary(
+            result.append(WrapperSummary(
                 usr=function, name=qualified_name(definition),
                 arity=sum(1 for c in definition.get_children()
                           if c.kind == CK.PARM_DECL),
@@ -321,7 +323,7 @@ class Summaries:
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 location=location)
             if endpoint.role == ROLE_PUBLISHER:
-                self.walker.facts.publishers.append(model.PublisherFact(
+                self.walker.facts.publishers.append(PublisherFact(
                     handle_name=target.spelling if target is not None
                     else None, **common))
             else:
@@ -330,7 +332,7 @@ class Summaries:
                 # a message type the wrapper deduces from the callback
                 common['msg_type'] = common['msg_type'] or \
                     callback_msg_type(declaration)
-                self.walker.facts.subscribers.append(model.SubscriberFact(
+                self.walker.facts.subscribers.append(SubscriberFact(
                     callback=callback, **common))
             if endpoint.publishes:
                 self.walker.publish_site(ctx, stack, cursor, name, handle)

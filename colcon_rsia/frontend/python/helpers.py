@@ -23,9 +23,10 @@ same node give a name, that one is dropped too: the name is not known).
 
 import ast
 
-from colcon_rsia import model
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import region
 from colcon_rsia.frontend.python.values import EXT
@@ -68,7 +69,7 @@ class Helpers:
             if value is not None and value.kind == EXT:
                 types[name] = self._msg_type(expr, context)
         for scope, site in sites:
-            facts = model.TuFacts(source=self.facts.source)
+            facts = TuFacts(source=self.facts.source)
             replay = type(self)(self.project, scope.module, facts)
             del used[:]
             with self.project.substituting(substitute):
@@ -80,7 +81,7 @@ class Helpers:
                     continue
                 fact.msg_type = types.get(fact.msg_type, fact.msg_type)
                 (self.facts.publishers if isinstance(
-                    fact, model.PublisherFact) else
+                    fact, PublisherFact) else
                  self.facts.subscribers).append(fact)
 
     def _endpoint_sites(self, function):

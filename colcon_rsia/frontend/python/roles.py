@@ -10,9 +10,21 @@ are the recorder's (:mod:`colcon_rsia.frontend.recorder`).
 
 import ast
 
-from colcon_rsia import model
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
+from colcon_rsia.frontend.facts import ActionFact
+from colcon_rsia.frontend.facts import ClientFact
+from colcon_rsia.frontend.facts import Function
+from colcon_rsia.frontend.facts import HandleAlias
+from colcon_rsia.frontend.facts import NodeNameFact
+from colcon_rsia.frontend.facts import PublisherFact
+from colcon_rsia.frontend.facts import PublishSite
+from colcon_rsia.frontend.facts import RateObject
+from colcon_rsia.frontend.facts import Registration
+from colcon_rsia.frontend.facts import ServiceFact
+from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.frontend.facts import SyncFact
+from colcon_rsia.frontend.facts import TimerFact
 from colcon_rsia.frontend.python.scopes import region
 from colcon_rsia.frontend.python.scopes import SCOPE_NODES
 from colcon_rsia.frontend.python.values import call_argument
@@ -36,7 +48,7 @@ class Roles:
         # name its subclasses pass
         name_param = self.project.handle(written, context.scope) \
             if isinstance(written, ast.Name) else None
-        self.facts.node_names.append(model.NodeNameFact(
+        self.facts.node_names.append(NodeNameFact(
             function=context.function, name=node_name if literal else None,
             namespace=namespace if ns_literal else None,
             location=self.location(node), name_param=name_param))
@@ -83,7 +95,7 @@ class Roles:
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
                 self._topic_source_of(api, argument, context)
-            self.facts.publishers.append(model.PublisherFact(
+            self.facts.publishers.append(PublisherFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 handle_name=handle_name, location=self.location(node),
@@ -109,7 +121,7 @@ class Roles:
         alias, _ = self._target(node, context)
         handle = self._object_handle(wrapped, context)
         if alias is not None and handle is not None:
-            self.facts.handle_aliases.append(model.HandleAlias(
+            self.facts.handle_aliases.append(HandleAlias(
                 alias=alias, handle=handle, location=self.location(node)))
         return True
 
@@ -123,18 +135,18 @@ class Roles:
         location = self.location(node)
         # what the real timer calls; the id is unique per object
         callback = f'{name}.update@{location}'
-        self.facts.functions.append(model.Function(
+        self.facts.functions.append(Function(
             id=callback, name=f'{name}.update', location=location))
         period = call_argument(node, api.period)
         rate_hz = self._rate_hz(period, api.period_unit, context) \
             if period is not None \
             else recorder.rate_of_period(api.default_period)
-        self.facts.timers.append(model.TimerFact(
+        self.facts.timers.append(TimerFact(
             function=context.function, api=name, callback=callback,
             period=self.text(period) if period is not None
             else str(api.default_period),
             rate_hz=rate_hz, location=location))
-        self.facts.publish_sites.append(model.PublishSite(
+        self.facts.publish_sites.append(PublishSite(
             function=callback, api=name, handle=handle, location=location))
 
     def _on_subscriber(self, api, name, node, context):
@@ -158,7 +170,7 @@ class Roles:
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
                 self._topic_source_of(api, argument, context)
-            self.facts.subscribers.append(model.SubscriberFact(
+            self.facts.subscribers.append(SubscriberFact(
                 function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 callback=callback, location=self.location(node),
@@ -168,7 +180,7 @@ class Roles:
         callback, _, _ = self._callback(
             call_argument(node, api.callback), context)
         period = call_argument(node, api.period)
-        self.facts.timers.append(model.TimerFact(
+        self.facts.timers.append(TimerFact(
             function=context.function, api=name, callback=callback,
             period=self.text(period) if period is not None else '',
             rate_hz=self._rate_hz(period, api.period_unit, context),
@@ -178,13 +190,13 @@ class Roles:
         service, _ = self._topic(call_argument(node, api.name), context)
         callback, _, _ = self._callback(
             call_argument(node, api.callback), context)
-        self.facts.services.append(model.ServiceFact(
+        self.facts.services.append(ServiceFact(
             function=context.function, api=name, name=service,
             callback=callback, location=self.location(node)))
 
     def _on_service_client(self, api, name, node, context):
         service, _ = self._topic(call_argument(node, api.name), context)
-        self.facts.clients.append(model.ClientFact(
+        self.facts.clients.append(ClientFact(
             function=context.function, api=name, name=service,
             location=self.location(node)))
 
@@ -214,12 +226,12 @@ class Roles:
             handle, _ = self._target(node, context)
             label = name
             location = self.location(node)
-        self.facts.actions.append(model.ActionFact(
+        self.facts.actions.append(ActionFact(
             function=context.function, api=label, role=role, name=action,
             callbacks=callbacks, handle=handle, location=location))
 
     def _on_publish(self, api, name, node, context):
-        self.facts.publish_sites.append(model.PublishSite(
+        self.facts.publish_sites.append(PublishSite(
             function=context.function, api=name,
             handle=self._receiver(node, context),
             location=self.location(node), loops=context.loop_ids()))
@@ -229,7 +241,7 @@ class Roles:
         if handle is None or handle.startswith('new@'):
             return  # a temporary Rate paces nothing
         argument = call_argument(node, api.period)
-        self.facts.rates.append(model.RateObject(
+        self.facts.rates.append(RateObject(
             handle=handle,
             rate_hz=self._rate_hz(argument, api.period_unit, context),
             expression=self.text(argument) if argument is not None else '',
@@ -275,7 +287,7 @@ class Roles:
             if handle is not None:
                 inputs.append(handle)
         handle, _ = self._target(node, context)
-        self.facts.syncs.append(model.SyncFact(
+        self.facts.syncs.append(SyncFact(
             handle=handle, inputs=inputs, location=self.location(node)))
 
     def _on_register_callback(self, api, name, node, context):
@@ -284,7 +296,7 @@ class Roles:
             if argument is None:
                 continue
             callback, _, _ = self._callback(argument, context)
-            self.facts.registrations.append(model.Registration(
+            self.facts.registrations.append(Registration(
                 function=context.function,
                 handle=self._receiver(node, context), callback=callback,
                 location=self.location(node)))

@@ -1,80 +1,29 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
-"""Summary files under the build base: paths, atomic writes, reading."""
+"""The summaries under the build base: where they are, writing, reading.
 
-from dataclasses import asdict
-import hashlib
+``<build base>/<pkg>/rsia/summary.json`` holds a package's summary, and
+``failure.json`` beside it why its last analysis failed.
+"""
+
 import json
 import os
 
-from colcon_rsia import safe_files
-from colcon_rsia.model import PackageSummary
-from colcon_rsia.model import WrapperSummary
-from colcon_rsia.safe_files import display
 from colcon_rsia.safe_files import max_file_bytes
 from colcon_rsia.safe_files import read_bytes
+from colcon_rsia.safe_files import write_json_atomically
+from colcon_rsia.summary.package_summary import PackageSummary
 
 RSIA_DIRNAME = 'rsia'
 SUMMARY_FILENAME = 'summary.json'
 # why the last analysis of a package failed (removed by the next success)
 FAILURE_FILENAME = 'failure.json'
-CACHE_DIRNAME = 'cache'
 SUMMARY_SIZE_FACTOR = 8
-
-
-def name_problem(name):
-    """Why a package name cannot name a directory under the build base.
-
-    Every path of a package's output is ``<build base>/<name>/…``: a name
-    that is not one plain path component (``../../x``, ``a/b``, ``..``)
-    would put it elsewhere. None when the name is fine.
-    """
-    if not name or name in ('.', '..') or '\0' in name or \
-            any(s and s in name for s in (os.sep, os.altsep)):
-        return (f"the package name '{display(name)}' is not a plain "
-                'directory name: its results would be written outside the '
-                'build base; skipped')
-    return None
 
 
 def summary_path(package_build_base):
     """Return the summary path of a package's build directory."""
     return os.path.join(package_build_base, RSIA_DIRNAME, SUMMARY_FILENAME)
-
-
-def cache_dir(package_build_base):
-    """Return the per-TU cache directory of a package's build directory."""
-    return os.path.join(package_build_base, RSIA_DIRNAME, CACHE_DIRNAME)
-
-
-def precompiled_dir(package_build_base):
-    """Where the model mode's precompiled headers are kept.
-
-    Beside the packages' build directories, shared by them all (they are
-    the same for every package); no package is named with a leading dot.
-    """
-    return os.path.join(
-        os.path.dirname(os.path.abspath(package_build_base)),
-        '.' + RSIA_DIRNAME, 'precompiled')
-
-
-def write_json_atomically(path, data):
-    """Write JSON so that readers see the old file or the new, never half.
-
-    A temp file in the same directory is renamed over the target; a build
-    killed mid-write leaves at most a stray temp file.
-    """
-    write_text_atomically(
-        path, json.dumps(data, indent=1, sort_keys=True) + '\n')
-
-
-def write_text_atomically(path, text):
-    r"""Write a text file whole or not at all (see write_json_atomically).
-
-    Undecodable names (surrogate escapes) are written as ``\\udce9``
-    rather than failing the write.
-    """
-    safe_files.write_text_atomically(path, text, errors='backslashreplace')
 
 
 def write_summary(package_build_base, summary):
@@ -225,64 +174,3 @@ def read_results(build_base, names):
         except SummaryError:
             not_analysed.append(name)
     return summaries, failures, not_analysed
-
-
-# --- the wrappers a package offers the packages analysed after it ---------
-
-WRAPPERS_FILENAME = 'wrappers.json'
-WRAPPERS_SCHEMA = 'colcon-rsia/wrappers@1'
-
-
-def write_wrappers(package_build_base, package_path, wrappers):
-    """Store the summaries of a package's wrapper functions (or none)."""
-    path = os.path.join(package_build_base, RSIA_DIRNAME, WRAPPERS_FILENAME)
-    if not wrappers:
-        try:
-            os.unlink(path)
-        except OSError:
-            pass
-        return
-    write_json_atomically(path, {
-        'schema': WRAPPERS_SCHEMA, 'path': package_path,
-        'wrappers': [asdict(w) for w in wrappers]})
-
-
-def read_workspace_wrappers(package_build_base, package_dirs):
-    """The wrapper summaries the workspace's other packages stored.
-
-    Every package's output is a sibling of this one's under the build base;
-    a file whose package is no longer in the workspace (``package_dirs``)
-    or that cannot be read is left out: its calls give no facts, as before
-    its package was analysed.
-    """
-    build_base = os.path.dirname(os.path.abspath(package_build_base))
-    own = os.path.basename(os.path.abspath(package_build_base))
-    wanted = {os.path.abspath(d) for d in package_dirs}
-    found = []
-    try:
-        names = sorted(os.listdir(build_base))
-    except OSError:
-        return found
-    for name in names:
-        path = os.path.join(build_base, name, RSIA_DIRNAME, WRAPPERS_FILENAME)
-        if name == own or not os.path.isfile(path):
-            continue
-        try:
-            data = json.loads(read_bytes(path).decode('utf-8'))
-            if data.get('schema') != WRAPPERS_SCHEMA or \
-                    data.get('path') not in wanted:
-                continue
-            found.extend(WrapperSummary(**w) for w in data['wrappers'])
-        except (OSError, ValueError, KeyError, TypeError, AttributeError,
-                RecursionError):
-            continue
-    return found
-
-
-def wrappers_digest(wrappers):
-    """A digest of wrapper summaries: the units calling them depend on it."""
-    if not wrappers:
-        return None
-    return hashlib.sha1(json.dumps(
-        sorted((asdict(w) for w in wrappers), key=lambda w: w['usr']),
-        sort_keys=True).encode()).hexdigest()
