@@ -192,3 +192,62 @@ def test_event_handler_analyses_at_a_lower_priority_than_the_build(
     assert seen['worker'] == min(19, build_priority + handler.NICENESS)
     # the build's own thread keeps its priority
     assert os.getpriority(os.PRIO_PROCESS, 0) == build_priority
+
+
+def _catkin_script_package(root):
+    """A catkin package whose one node is a Python script it installs."""
+    package = root / 'talk_pkg'
+    (package / 'scripts').mkdir(parents=True)
+    (package / 'package.xml').write_text(
+        '<package format="2"><name>talk_pkg</name><version>0.1.0</version>'
+        '<description>d</description><maintainer email="m@e.org">m'
+        '</maintainer><license>BSD</license>'
+        '<buildtool_depend>catkin</buildtool_depend></package>')
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.0.2)\n'
+        'project(talk_pkg)\n'
+        'find_package(catkin REQUIRED COMPONENTS rospy)\n'
+        'catkin_package()\n'
+        'catkin_install_python(PROGRAMS scripts/talker.py\n'
+        '  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n')
+    (package / 'scripts' / 'talker.py').write_text(
+        '#!/usr/bin/env python3\n'
+        'import rospy\n'
+        'from std_msgs.msg import String\n'
+        '\n'
+        'if __name__ == "__main__":\n'
+        '    rospy.init_node("talker")\n'
+        '    pub = rospy.Publisher("chatter", String, queue_size=1)\n'
+        '    rate = rospy.Rate(10)\n'
+        '    while not rospy.is_shutdown():\n'
+        '        pub.publish(String(data="hi"))\n'
+        '        rate.sleep()\n')
+    return package
+
+
+def test_each_package_type_has_its_analyser(tmp_path):
+    package = _catkin_script_package(tmp_path / 'src')
+    build_base = tmp_path / 'build' / 'talk_pkg'
+    build_base.mkdir(parents=True)
+
+    def run(package_type):
+        return analyze(name='talk_pkg', package_type=package_type,
+                       path=str(package), build_base=str(build_base))
+
+    # catkin: C++ and the scripts it installs; no C++ here, so the script
+    # is analysed without a compile database
+    catkin = run('ros.catkin')
+    assert catkin.warning is None and catkin.error is None
+    assert [(n.executable, [p.topic for p in n.publishers])
+            for n in catkin.summary.nodes] == [('talker.py', ['chatter'])]
+    # plain CMake: C++ only, which needs the compile database
+    cmake = run('cmake')
+    assert cmake.summary is None
+    assert cmake.warning.startswith('no compile_commands.json; not analysed')
+    # a type no analyser takes: skipped (said by `analyze`, not in a build)
+    for package_type in ('python', 'cargo'):
+        skipped = run(package_type)
+        assert skipped.skipped and skipped.summary is None
+        assert skipped.warning == (
+            f"package type '{package_type}' is not analysed by this "
+            'version; skipped')

@@ -6,6 +6,15 @@ The XML and YAML readers (:mod:`colcon_rsia.launch.ros2`) and the Python
 reader (:mod:`colcon_rsia.launch.python_launch`) produce these; the
 executor (:class:`colcon_rsia.launch.ros2_executor.Ros2Executor`) runs
 them. Plain data: nothing here reads a file or resolves a value.
+
+A class has the name of the ROS 2 launch class (``launch``,
+``launch_ros``) of the same concept, so that a reader of a ``.launch.py``
+file finds the class it builds under the name the file calls. A class
+that stands for several launch classes (:class:`PackagePath`,
+:class:`ThisFile`, :class:`BoolOp`, :class:`SetEnv`) or for none
+(:class:`Opaque`, :class:`Ignored`, :class:`ParamItem`…) has a name of its
+own. :class:`Condition` is the launch ``Condition`` of every kind: its
+``kind`` says which.
 """
 
 from dataclasses import dataclass
@@ -24,7 +33,7 @@ class UnknownValue:
 
 
 @dataclass
-class LaunchConfig:
+class LaunchConfiguration:
     """``LaunchConfiguration('name', default=…)``."""
 
     name: object
@@ -40,7 +49,7 @@ class PackagePath:
 
 
 @dataclass
-class EnvVar:
+class EnvironmentVariable:
     """``EnvironmentVariable(name, default_value=…)``."""
 
     name: object
@@ -48,14 +57,14 @@ class EnvVar:
 
 
 @dataclass
-class PathJoin:
+class PathJoinSubstitution:
     """``PathJoinSubstitution([...])``."""
 
     parts: list
 
 
 @dataclass
-class PyExpr:
+class PythonExpression:
     """``PythonExpression([...])`` (evaluated in the safe subset)."""
 
     parts: list
@@ -87,8 +96,12 @@ class TypedValue:
 
 
 @dataclass
-class Cond:
-    """A launch condition: if/unless a value, or a configuration equality."""
+class Condition:
+    """A launch condition: if/unless a value, or a configuration equality.
+
+    ``IfCondition``, ``UnlessCondition``, ``LaunchConfigurationEquals``,
+    ``LaunchConfigurationNotEquals`` and the ``if``/``unless`` attributes.
+    """
 
     kind: str  # 'if', 'unless', 'equals', 'not_equals', 'unknown'
     operands: list
@@ -107,7 +120,7 @@ class Action:
 
 
 @dataclass
-class DeclareArgument(Action):
+class DeclareLaunchArgument(Action):
     """``<arg>`` / ``DeclareLaunchArgument``."""
 
     name: object = None
@@ -116,7 +129,7 @@ class DeclareArgument(Action):
 
 
 @dataclass
-class SetConfiguration(Action):
+class SetLaunchConfiguration(Action):
     """``<let>`` / ``SetLaunchConfiguration``."""
 
     name: object = None
@@ -141,7 +154,7 @@ class ParamItem:
 
 
 @dataclass
-class ComposableNodeAction(Action):
+class ComposableNode(Action):
     """``<composable_node>`` / ``ComposableNode``."""
 
     package: object = None
@@ -153,8 +166,12 @@ class ComposableNodeAction(Action):
 
 
 @dataclass
-class NodeAction(Action):
-    """``<node>``, ``<node_container>`` / ``Node``, ``ComposableNodeContainer``."""
+class Node(Action):
+    """``<node>``, ``<node_container>`` / ``Node`` and its kinds.
+
+    ``LifecycleNode`` and ``ComposableNodeContainer`` (the launch classes
+    derived from ``Node``) are the kinds ``lifecycle`` and ``container``.
+    """
 
     package: object = None
     executable: object = None
@@ -169,14 +186,14 @@ class NodeAction(Action):
 
 
 @dataclass
-class LoadComposable(Action):
+class LoadComposableNodes(Action):
     """``<load_composable_node>`` / ``LoadComposableNodes``."""
 
     composables: list = field(default_factory=list)
 
 
 @dataclass
-class Include(Action):
+class IncludeLaunchDescription(Action):
     """``<include>`` / ``IncludeLaunchDescription``."""
 
     path: object = None
@@ -184,7 +201,7 @@ class Include(Action):
 
 
 @dataclass
-class Group(Action):
+class GroupAction(Action):
     """``<group>`` / ``GroupAction`` (also timers and event handlers)."""
 
     actions: list = field(default_factory=list)
@@ -194,8 +211,11 @@ class Group(Action):
 
 
 @dataclass
-class PushNamespace(Action):
-    """``<push-ros-namespace>`` / ``PushRosNamespace``."""
+class PushROSNamespace(Action):
+    """``<push-ros-namespace>`` / ``PushROSNamespace``.
+
+    (and ``PushRosNamespace``, the action's older name)
+    """
 
     namespace: object = None
 

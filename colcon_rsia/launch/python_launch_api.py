@@ -10,25 +10,25 @@ last part of its name) into the actions and values of
 from dataclasses import dataclass
 
 from colcon_rsia.launch.ir import BoolOp
-from colcon_rsia.launch.ir import ComposableNodeAction
-from colcon_rsia.launch.ir import Cond
-from colcon_rsia.launch.ir import DeclareArgument
-from colcon_rsia.launch.ir import EnvVar
-from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import ComposableNode
+from colcon_rsia.launch.ir import Condition
+from colcon_rsia.launch.ir import DeclareLaunchArgument
+from colcon_rsia.launch.ir import EnvironmentVariable
+from colcon_rsia.launch.ir import GroupAction
 from colcon_rsia.launch.ir import Ignored
-from colcon_rsia.launch.ir import Include
-from colcon_rsia.launch.ir import LaunchConfig
-from colcon_rsia.launch.ir import LoadComposable
-from colcon_rsia.launch.ir import NodeAction
+from colcon_rsia.launch.ir import IncludeLaunchDescription
+from colcon_rsia.launch.ir import LaunchConfiguration
+from colcon_rsia.launch.ir import LoadComposableNodes
+from colcon_rsia.launch.ir import Node
 from colcon_rsia.launch.ir import Opaque
 from colcon_rsia.launch.ir import PackagePath
 from colcon_rsia.launch.ir import ParamDict
 from colcon_rsia.launch.ir import ParamItem
-from colcon_rsia.launch.ir import PathJoin
-from colcon_rsia.launch.ir import PushNamespace
-from colcon_rsia.launch.ir import PyExpr
-from colcon_rsia.launch.ir import SetConfiguration
+from colcon_rsia.launch.ir import PathJoinSubstitution
+from colcon_rsia.launch.ir import PushROSNamespace
+from colcon_rsia.launch.ir import PythonExpression
 from colcon_rsia.launch.ir import SetEnv
+from colcon_rsia.launch.ir import SetLaunchConfiguration
 from colcon_rsia.launch.ir import SetParameter
 from colcon_rsia.launch.ir import SetRemap
 from colcon_rsia.launch.ir import ThisFile
@@ -81,10 +81,10 @@ def _conditions(interp, args, node):
     condition = args.get(None, 'condition')
     if condition is None:
         return []
-    if isinstance(condition, Cond):
+    if isinstance(condition, Condition):
         return [condition]
-    return [Cond('unknown', [f'{interp.loc(node)}: condition not '
-                             'understood'])]
+    return [Condition('unknown', [f'{interp.loc(node)}: condition not '
+                                  'understood'])]
 
 
 def _common(interp, args, node):
@@ -125,16 +125,16 @@ def _launch_description(interp, args, node):
 
 def _declare(interp, args, node):
     has_default = args.has(1, 'default_value')
-    return DeclareArgument(name=args.get(0, 'name'),
-                           default=_text_value(args.get(1, 'default_value')),
-                           has_default=has_default,
-                           **_common(interp, args, node))
+    return DeclareLaunchArgument(
+        name=args.get(0, 'name'),
+        default=_text_value(args.get(1, 'default_value')),
+        has_default=has_default, **_common(interp, args, node))
 
 
 def _set_configuration(interp, args, node):
-    return SetConfiguration(name=args.get(0, 'name'),
-                            value=_text_value(args.get(1, 'value')),
-                            **_common(interp, args, node))
+    return SetLaunchConfiguration(name=args.get(0, 'name'),
+                                  value=_text_value(args.get(1, 'value')),
+                                  **_common(interp, args, node))
 
 
 def _remappings(interp, value, node):
@@ -167,8 +167,10 @@ def _parameters(interp, value, node):
         elif isinstance(item, _ParameterFile):
             out.append(ParamItem('file', value=item.path,
                                  allow_substs=item.allow_substs))
-        elif isinstance(item, (str, list, PathJoin, LaunchConfig,
-                               PackagePath, EnvVar, PyExpr, ThisFile)):
+        elif isinstance(item, (str, list, PathJoinSubstitution,
+                               LaunchConfiguration, PackagePath,
+                               EnvironmentVariable, PythonExpression,
+                               ThisFile)):
             out.append(ParamItem('file', value=_text_value(item)))
         elif isinstance(item, UnknownValue):
             out.append(ParamItem('unknown', value=item.reason))
@@ -197,7 +199,7 @@ class _ParameterFile:
 def _node(interp, args, node, kind='node'):
     def get(*names):
         return _text_value(args.get(None, *names))
-    action = NodeAction(
+    action = Node(
         package=get('package'),
         executable=get('executable', 'node_executable'),
         name=get('name', 'node_name'),
@@ -236,7 +238,7 @@ def _composables(interp, value, node):
         return []
     out = []
     for item in value:
-        if isinstance(item, ComposableNodeAction):
+        if isinstance(item, ComposableNode):
             out.append(item)
         else:
             interp.note(node, 'a composable node description not '
@@ -247,7 +249,7 @@ def _composables(interp, value, node):
 def _composable(interp, args, node):
     def get(*names):
         return _text_value(args.get(None, *names))
-    return ComposableNodeAction(
+    return ComposableNode(
         package=get('package'), plugin=get('plugin'),
         name=get('name'), namespace=get('namespace'),
         remaps=_remappings(interp, args.get(None, 'remappings'), node),
@@ -256,7 +258,7 @@ def _composable(interp, args, node):
 
 
 def _load_composables(interp, args, node):
-    return LoadComposable(composables=_composables(
+    return LoadComposableNodes(composables=_composables(
         interp, args.get(None, 'composable_node_descriptions'), node),
         **_common(interp, args, node))
 
@@ -265,8 +267,8 @@ def _include(interp, args, node):
     source = args.get(0, 'launch_description_source')
     if isinstance(source, LaunchSource):
         path = source.path
-    elif isinstance(source, (str, list, PathJoin, PackagePath, LaunchConfig,
-                             ThisFile)):
+    elif isinstance(source, (str, list, PathJoinSubstitution, PackagePath,
+                             LaunchConfiguration, ThisFile)):
         path = _text_value(source)
     else:
         return interp.unknown(node, 'included launch description not known '
@@ -287,8 +289,8 @@ def _include(interp, args, node):
                                       _text_value(pair[1])))
                 else:
                     interp.note(node, 'an include argument not understood')
-    return Include(path=path, arguments=arguments,
-                   **_common(interp, args, node))
+    return IncludeLaunchDescription(path=path, arguments=arguments,
+                                    **_common(interp, args, node))
 
 
 def _source_of(interp, args, node):
@@ -304,21 +306,21 @@ def _group(interp, args, node):
             for k, v in raw.items()]
     scoped = args.get(1, 'scoped', default=True)
     forwarding = args.get(2, 'forwarding', default=True)
-    return Group(actions=_entities(interp, args.get(0, 'actions'), node),
-                 scoped=scoped if isinstance(scoped, bool) else True,
-                 forwarding=forwarding is not False,
-                 configurations=configurations,
-                 **_common(interp, args, node))
+    return GroupAction(actions=_entities(interp, args.get(0, 'actions'), node),
+                       scoped=scoped if isinstance(scoped, bool) else True,
+                       forwarding=forwarding is not False,
+                       configurations=configurations,
+                       **_common(interp, args, node))
 
 
 def _timer(interp, args, node):
-    return Group(actions=_entities(interp, args.get(1, 'actions'), node),
-                 scoped=False, **_common(interp, args, node))
+    return GroupAction(actions=_entities(interp, args.get(1, 'actions'), node),
+                       scoped=False, **_common(interp, args, node))
 
 
 def _push_namespace(interp, args, node):
-    return PushNamespace(namespace=_text_value(args.get(0, 'namespace')),
-                         **_common(interp, args, node))
+    return PushROSNamespace(namespace=_text_value(args.get(0, 'namespace')),
+                            **_common(interp, args, node))
 
 
 def _set_remap(interp, args, node):
@@ -373,12 +375,12 @@ def _register_event_handler(interp, args, node):
     common = _common(interp, args, node)
     common['notes'] = common['notes'] + [
         f'{interp.loc(node)}: started by an event handler ({handler.what})']
-    return Group(actions=handler.actions, scoped=False, **common)
+    return GroupAction(actions=handler.actions, scoped=False, **common)
 
 
 def _launch_configuration(interp, args, node):
-    return LaunchConfig(_text_value(args.get(0, 'variable_name')),
-                        _text_value(args.get(1, 'default')))
+    return LaunchConfiguration(_text_value(args.get(0, 'variable_name')),
+                               _text_value(args.get(1, 'default')))
 
 
 def _text_substitution(interp, args, node):
@@ -391,7 +393,7 @@ def _path_join(interp, args, node):
     if not isinstance(parts, (list, tuple)):
         return interp.unknown(node, 'PathJoinSubstitution of a value not '
                               'known statically')
-    return PathJoin([_text_value(p) for p in parts])
+    return PathJoinSubstitution([_text_value(p) for p in parts])
 
 
 def _package_path(kind):
@@ -413,14 +415,14 @@ def _package_directory(kind):
 
 
 def _environment_variable(interp, args, node):
-    return EnvVar(_text_value(args.get(0, 'name')),
-                  _text_value(args.get(1, 'default_value')))
+    return EnvironmentVariable(_text_value(args.get(0, 'name')),
+                               _text_value(args.get(1, 'default_value')))
 
 
 def _python_expression(interp, args, node):
     value = args.get(0, 'expression')
-    return PyExpr(list(value) if isinstance(value, (list, tuple))
-                  else [value])
+    return PythonExpression(list(value) if isinstance(value, (list, tuple))
+                            else [value])
 
 
 def _this_file(directory):
@@ -452,15 +454,16 @@ def _bool_sub(op):
 
 def _condition(kind):
     def build(interp, args, node):
-        return Cond(kind, [_text_value(args.get(0, 'predicate_expression'))])
+        return Condition(
+            kind, [_text_value(args.get(0, 'predicate_expression'))])
     return build
 
 
 def _config_equals(kind):
     def build(interp, args, node):
-        return Cond(kind, [_text_value(args.get(0, 'launch_configuration_'
-                                                'name')),
-                           _text_value(args.get(1, 'expected_value'))])
+        return Condition(kind, [
+            _text_value(args.get(0, 'launch_configuration_name')),
+            _text_value(args.get(1, 'expected_value'))])
     return build
 
 

@@ -12,7 +12,7 @@ of :mod:`colcon_rsia.launch.ir` the launch API built, or an
 import ast
 
 from colcon_rsia.launch.ir import Action
-from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import GroupAction
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.python_launch_values import Bound
@@ -167,8 +167,8 @@ class Expressions:
         if all(isinstance(v, Action) or v is None for v in values):
             self.note(node, f'condition "{text}" not known statically; both '
                       'alternatives are read and marked')
-            return Group(actions=[
-                Group(actions=[v], scoped=False, notes=[note])
+            return GroupAction(actions=[
+                GroupAction(actions=[v], scoped=False, notes=[note])
                 for v, note in zip(values, notes) if v is not None],
                 scoped=False, location=self.loc(node))
         return self.unknown(node, f'value depends on "{text}", which is not '

@@ -21,7 +21,7 @@ from colcon_rsia import python_arithmetic
 from colcon_rsia.launch import safe_eval
 from colcon_rsia.launch.common import location
 from colcon_rsia.launch.ir import Action
-from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import GroupAction
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.python_launch_calls import LibraryCalls
@@ -190,10 +190,10 @@ class Interpreter(Statements, Expressions, LibraryCalls):
         entities = []
         notes = []
         for value, note in conditional:
-            entities.append(Group(actions=value.entities, scoped=False,
-                                  notes=[note], location=self.loc(node)))
+            entities.append(GroupAction(actions=value.entities, scoped=False,
+                                        notes=[note], location=self.loc(node)))
             notes.append(note)
-        entities.append(Group(
+        entities.append(GroupAction(
             actions=final.entities, scoped=False, location=self.loc(node),
             notes=[f'{self.loc(node)}: returned only when an earlier return '
                    f'does not happen ({"; ".join(notes)})']))
@@ -241,8 +241,8 @@ class Interpreter(Statements, Expressions, LibraryCalls):
         """An action, in a group with the note of its unknown branch."""
         if not self.uncertain or not isinstance(item, Action):
             return item
-        return Group(actions=[item], scoped=False,
-                     notes=[self.uncertain[-1]], location=item.location)
+        return GroupAction(actions=[item], scoped=False,
+                           notes=[self.uncertain[-1]], location=item.location)
 
     def truth(self, value):
         """True/False for known values, None otherwise."""

@@ -11,7 +11,7 @@ runs its alternatives from the same state and merges what they leave.
 import ast
 
 from colcon_rsia.launch.ir import Action
-from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import GroupAction
 from colcon_rsia.launch.ir import UnknownValue
 from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.python_launch_values import BranchEnd
@@ -264,11 +264,11 @@ def _alternatives(name, values, notes):
                   for k in kept):
             common += 1
         groups = list(kept[0][:common]) + [
-            Group(actions=k[common:], scoped=False, notes=[note])
+            GroupAction(actions=k[common:], scoped=False, notes=[note])
             for k, note in zip(kept, notes) if k[common:]]
         if any(isinstance(v, list) for v in values):
             return groups
-        return Group(actions=groups, scoped=False)
+        return GroupAction(actions=groups, scoped=False)
     return UnknownValue(f'{name} depends on a condition not known '
                         f'statically ({notes[0]})')
 

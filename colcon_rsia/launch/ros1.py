@@ -23,6 +23,7 @@ from colcon_rsia.launch.common import parse_bool
 from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import resolve_path
 from colcon_rsia.launch.common import UnknownArg
+from colcon_rsia.launch.handlers import HandlerTable
 from colcon_rsia.launch.model import LaunchError
 from colcon_rsia.launch.model import NodeInstance
 from colcon_rsia.launch.notes import shorten
@@ -31,8 +32,9 @@ from colcon_rsia.launch.substitutions import Resolver
 from colcon_rsia.launch.substitutions import Unresolved
 import yaml
 
-# elements that start nothing and change nothing the analysis needs
-_IGNORED = frozenset(('machine', 'env', 'master', 'test'))
+# element -> the method of Ros1Reader reading it, registered by
+# `@_ELEMENTS.handles(tag, ...)`
+_ELEMENTS = HandlerTable('launch element')
 
 
 @dataclass
@@ -158,15 +160,18 @@ class Ros1Reader:
         if condition is False:
             return
         uncertain = [] if condition is True else [condition]
-        if elem.tag in _IGNORED:
-            return
-        handler = _ELEMENT_HANDLERS.get(elem.tag)
+        handler = _ELEMENTS.get(elem.tag)
         if handler is None:
             self.loader.note(f'{self._loc(scope, elem)}: unknown element '
                              f'<{shorten(elem.tag, 40)}> ignored')
             return
         handler(self, elem, scope, depth, uncertain)
 
+    @_ELEMENTS.handles('machine', 'env', 'master', 'test')
+    def _ignored(self, elem, scope, depth, uncertain):
+        """An element that starts nothing and changes nothing we need."""
+
+    @_ELEMENTS.handles('arg')
     def _arg(self, elem, scope, depth, uncertain):
         attrs = elem.attrs
         name = attrs.get('name')
@@ -203,6 +208,7 @@ class Ros1Reader:
             scope.args[name] = UnknownArg(str(e))
             self.loader.note(f'{where}: argument {name}: {e}')
 
+    @_ELEMENTS.handles('group')
     def _group(self, elem, scope, depth, uncertain):
         child = scope.child(notes=uncertain)
         if 'ns' in elem.attrs:
@@ -219,6 +225,7 @@ class Ros1Reader:
             child.notes.extend(notes)
         self._children(elem, child, depth)
 
+    @_ELEMENTS.handles('remap')
     def _remap(self, elem, scope, depth, uncertain, target=None):
         where = self._loc(scope, elem)
         # a launch- or group-level remap applies to the nodes after it
@@ -239,6 +246,7 @@ class Ros1Reader:
             notes.append(f'{where}: remap {source} -> {dest} applies only '
                          'under a condition not known statically')
 
+    @_ELEMENTS.handles('include')
     def _include(self, elem, scope, depth, uncertain):
         where = self._loc(scope, elem)
         notes = list(uncertain)
@@ -315,6 +323,7 @@ class Ros1Reader:
 
     # parameters
 
+    @_ELEMENTS.handles('param')
     def _param(self, elem, scope, depth, uncertain, node=None):
         where = self._loc(scope, elem)
         notes = node.notes if node is not None else []
@@ -387,6 +396,7 @@ class Ros1Reader:
         for key, item in flat.items():
             self.global_params[join_ns('/', key)] = item
 
+    @_ELEMENTS.handles('rosparam')
     def _rosparam(self, elem, scope, depth, uncertain, node=None):
         where = self._loc(scope, elem)
         attrs = elem.attrs
@@ -440,6 +450,7 @@ class Ros1Reader:
 
     # nodes
 
+    @_ELEMENTS.handles('node')
     def _node(self, elem, scope, depth, uncertain):
         attrs = elem.attrs
         where = self._loc(scope, elem)
@@ -522,14 +533,6 @@ class Ros1Reader:
         notes[:] = unique(notes)
         self.loader.result.instances.append(instance)
         self.instances.append((instance, holder.params))
-
-
-# element -> the method of Ros1Reader reading it
-_ELEMENT_HANDLERS = {
-    'arg': Ros1Reader._arg, 'group': Ros1Reader._group,
-    'remap': Ros1Reader._remap, 'param': Ros1Reader._param,
-    'rosparam': Ros1Reader._rosparam, 'node': Ros1Reader._node,
-    'include': Ros1Reader._include}
 
 
 @dataclass

@@ -17,18 +17,19 @@ from colcon_rsia.launch.common import location
 from colcon_rsia.launch.common import MAX_NESTING
 from colcon_rsia.launch.common import parse_xml
 from colcon_rsia.launch.common import typed_value
-from colcon_rsia.launch.ir import ComposableNodeAction
-from colcon_rsia.launch.ir import Cond
-from colcon_rsia.launch.ir import DeclareArgument
-from colcon_rsia.launch.ir import Group
-from colcon_rsia.launch.ir import Include
-from colcon_rsia.launch.ir import LoadComposable
-from colcon_rsia.launch.ir import NodeAction
+from colcon_rsia.launch.handlers import HandlerTable
+from colcon_rsia.launch.ir import ComposableNode
+from colcon_rsia.launch.ir import Condition
+from colcon_rsia.launch.ir import DeclareLaunchArgument
+from colcon_rsia.launch.ir import GroupAction
+from colcon_rsia.launch.ir import IncludeLaunchDescription
+from colcon_rsia.launch.ir import LoadComposableNodes
+from colcon_rsia.launch.ir import Node
 from colcon_rsia.launch.ir import Opaque
 from colcon_rsia.launch.ir import ParamItem
-from colcon_rsia.launch.ir import PushNamespace
-from colcon_rsia.launch.ir import SetConfiguration
+from colcon_rsia.launch.ir import PushROSNamespace
 from colcon_rsia.launch.ir import SetEnv
+from colcon_rsia.launch.ir import SetLaunchConfiguration
 from colcon_rsia.launch.ir import SetParameter
 from colcon_rsia.launch.ir import SetRemap
 from colcon_rsia.launch.ir import UnknownValue
@@ -93,7 +94,9 @@ def _sv(value, where=''):
     return UnknownValue(f'a {type(value).__name__} where text was expected')
 
 
-_PUSH = ('push-ros-namespace', 'push_ros_namespace')
+# element tag (XML spelling, and YAML's where it differs) -> the _Builder
+# method reading it, registered by `@_ELEMENTS.handles(tag, ...)`
+_ELEMENTS = HandlerTable('launch element')
 
 
 class _Builder:
@@ -121,88 +124,103 @@ class _Builder:
         conditions = []
         for attr in ('if', 'unless'):
             if attr in elem.attrs:
-                conditions.append(Cond(attr, [_sv(elem.attrs[attr])]))
+                conditions.append(Condition(attr, [_sv(elem.attrs[attr])]))
         return conditions
 
     def action(self, elem, depth):
         """The IR action of one element, through the table of its tag."""
         common = {'location': self.loc(elem),
                   'conditions': self.conditions(elem)}
-        build = _ACTIONS.get(elem.tag)
+        build = _ELEMENTS.get(elem.tag)
         if build is None:
             return Opaque(note=f'unknown element <{shorten(elem.tag, 40)}> '
                           'ignored', **common)
         return build(self, elem, common, depth)
 
-    # --- one method per element kind (see _ACTIONS) ------------------------
+    # --- one method per element kind, registered in _ELEMENTS --------------
 
+    @_ELEMENTS.handles('arg')
     def _declare_argument(self, elem, common, depth):
         attrs = elem.attrs
-        return DeclareArgument(name=_sv(attrs.get('name')),
-                               default=_sv(attrs.get('default')),
-                               has_default='default' in attrs, **common)
+        return DeclareLaunchArgument(
+            name=_sv(attrs.get('name')), default=_sv(attrs.get('default')),
+            has_default='default' in attrs, **common)
 
+    @_ELEMENTS.handles('let')
     def _set_configuration(self, elem, common, depth):
-        return SetConfiguration(name=_sv(elem.attrs.get('name')),
-                                value=_sv(elem.attrs.get('value')), **common)
+        return SetLaunchConfiguration(
+            name=_sv(elem.attrs.get('name')),
+            value=_sv(elem.attrs.get('value')), **common)
 
+    @_ELEMENTS.handles('load_composable_node')
     def _load_composable(self, elem, common, depth):
-        return LoadComposable(composables=self.composables(elem), **common)
+        return LoadComposableNodes(composables=self.composables(elem),
+                                   **common)
 
+    @_ELEMENTS.handles('include')
     def _include(self, elem, common, depth):
         arguments = [(_sv(c.attrs.get('name')),
                       _sv(c.attrs.get('value', c.attrs.get('default'))))
                      for c in elem.children if c.tag == 'arg']
-        return Include(path=_sv(elem.attrs.get('file')), arguments=arguments,
-                       **common)
+        return IncludeLaunchDescription(
+            path=_sv(elem.attrs.get('file')), arguments=arguments, **common)
 
+    @_ELEMENTS.handles('group', 'timer')
     def _group(self, elem, common, depth):
         attrs = elem.attrs
         actions = self.actions(elem.children, depth + 1)
         ns = attrs.get('namespace', attrs.get('ns'))
         if ns is not None:
-            actions.insert(0, PushNamespace(
+            actions.insert(0, PushROSNamespace(
                 namespace=_sv(ns), location=self.loc(elem)))
         # (a timer's actions run later, unscoped)
         scoped = _sv(attrs.get('scoped', 'true')) if elem.tag == 'group' \
             else False
         forwarding = str(attrs.get('forwarding', 'true')).lower() != 'false'
-        return Group(actions=actions, scoped=scoped, forwarding=forwarding,
-                     **common)
+        return GroupAction(actions=actions, scoped=scoped,
+                           forwarding=forwarding, **common)
 
+    @_ELEMENTS.handles('push-ros-namespace', 'push_ros_namespace')
     def _push_namespace(self, elem, common, depth):
-        return PushNamespace(
+        return PushROSNamespace(
             namespace=_sv(elem.attrs.get('namespace', elem.attrs.get('ns'))),
             **common)
 
+    @_ELEMENTS.handles('set_remap', 'set-remap')
     def _set_remap(self, elem, common, depth):
         return SetRemap(source=_sv(elem.attrs.get('from')),
                         target=_sv(elem.attrs.get('to')), **common)
 
+    @_ELEMENTS.handles('set_parameter', 'set-parameter')
     def _set_parameter(self, elem, common, depth):
         return SetParameter(name=_sv(elem.attrs.get('name')),
                             value=_param_text(elem.attrs.get('value')),
                             **common)
 
+    @_ELEMENTS.handles('set_env', 'set-env')
     def _set_env(self, elem, common, depth):
         return SetEnv(name=_sv(elem.attrs.get('name')),
                       value=_sv(elem.attrs.get('value', '')), **common)
 
+    @_ELEMENTS.handles('unset_env', 'unset-env')
     def _unset_env(self, elem, common, depth):
         return SetEnv(name=_sv(elem.attrs.get('name')), value=None, **common)
 
+    @_ELEMENTS.handles('log', 'declare_launch_argument_doc')
     def _nothing(self, elem, common, depth):
         return None  # (documentation and logging: no effect on the graph)
 
+    @_ELEMENTS.handles('executable')
     def _executable(self, elem, common, depth):
         return Opaque(note='<executable> runs a process that is not a ROS '
                       'node description; not analysed', **common)
 
+    @_ELEMENTS.handles('node', 'node_container', 'lifecycle_node')
     def node(self, elem, common, depth):
         attrs = elem.attrs
         kind = {'node_container': 'container',
                 'lifecycle_node': 'lifecycle'}.get(elem.tag, 'node')
-        action = NodeAction(
+        action = Node(
             package=_sv(attrs.get('pkg', attrs.get('package'))),
             executable=_sv(attrs.get('exec', attrs.get('executable'))),
             name=_sv(attrs.get('name')),
@@ -262,7 +280,7 @@ class _Builder:
             if child.tag != 'composable_node':
                 continue
             attrs = child.attrs
-            action = ComposableNodeAction(
+            action = ComposableNode(
                 package=_sv(attrs.get('pkg', attrs.get('package'))),
                 plugin=_sv(attrs.get('plugin')),
                 name=_sv(attrs.get('name')),
@@ -352,23 +370,3 @@ class _YamlConverter:
             else:
                 elem.attrs[key] = value
         return elem
-
-
-# element tag (XML spelling, and YAML's where it differs) -> _Builder method
-_ACTIONS = {
-    'arg': _Builder._declare_argument,
-    'let': _Builder._set_configuration,
-    'node': _Builder.node, 'node_container': _Builder.node,
-    'lifecycle_node': _Builder.node,
-    'load_composable_node': _Builder._load_composable,
-    'include': _Builder._include,
-    'group': _Builder._group, 'timer': _Builder._group,
-    **{tag: _Builder._push_namespace for tag in _PUSH},
-    'set_remap': _Builder._set_remap, 'set-remap': _Builder._set_remap,
-    'set_parameter': _Builder._set_parameter,
-    'set-parameter': _Builder._set_parameter,
-    'set_env': _Builder._set_env, 'set-env': _Builder._set_env,
-    'unset_env': _Builder._unset_env, 'unset-env': _Builder._unset_env,
-    'log': _Builder._nothing, 'declare_launch_argument_doc': _Builder._nothing,
-    'executable': _Builder._executable,
-}

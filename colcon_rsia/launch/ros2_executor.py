@@ -25,19 +25,20 @@ from colcon_rsia.launch.common import resolve_path
 from colcon_rsia.launch.common import ros2_param_sections
 from colcon_rsia.launch.common import ros_arguments
 from colcon_rsia.launch.common import UnknownArg
+from colcon_rsia.launch.handlers import HandlerTable
 from colcon_rsia.launch.ir import Action
-from colcon_rsia.launch.ir import ComposableNodeAction
-from colcon_rsia.launch.ir import DeclareArgument
-from colcon_rsia.launch.ir import Group
+from colcon_rsia.launch.ir import ComposableNode
+from colcon_rsia.launch.ir import DeclareLaunchArgument
+from colcon_rsia.launch.ir import GroupAction
 from colcon_rsia.launch.ir import Ignored
-from colcon_rsia.launch.ir import Include
-from colcon_rsia.launch.ir import LoadComposable
-from colcon_rsia.launch.ir import NodeAction
+from colcon_rsia.launch.ir import IncludeLaunchDescription
+from colcon_rsia.launch.ir import LoadComposableNodes
+from colcon_rsia.launch.ir import Node
 from colcon_rsia.launch.ir import Opaque
 from colcon_rsia.launch.ir import ParamDict
-from colcon_rsia.launch.ir import PushNamespace
-from colcon_rsia.launch.ir import SetConfiguration
+from colcon_rsia.launch.ir import PushROSNamespace
 from colcon_rsia.launch.ir import SetEnv
+from colcon_rsia.launch.ir import SetLaunchConfiguration
 from colcon_rsia.launch.ir import SetParameter
 from colcon_rsia.launch.ir import SetRemap
 from colcon_rsia.launch.ir import UnknownValue
@@ -52,6 +53,10 @@ from colcon_rsia.launch.substitutions import Unresolved
 # launch actions executed in one load: real systems have a few thousand;
 # actions shared in nested Python lists must not multiply without bound
 MAX_ACTIONS = 200000
+
+# the type of an action -> the Ros2Executor method executing it, registered
+# by `@_ACTIONS.handles(type, ...)`
+_ACTIONS = HandlerTable('launch action type')
 
 
 # execution
@@ -174,7 +179,7 @@ class Ros2Executor:
         if condition is False:
             return
         uncertain = [] if condition is True else [condition]
-        handler = _ACTION_HANDLERS[type(action)]
+        handler = _ACTIONS[type(action)]
         handler(self, action, ctx, depth, uncertain + action.notes)
 
     def condition(self, action, ctx):
@@ -216,6 +221,7 @@ class Ros2Executor:
                              f'({e})')
             return None
 
+    @_ACTIONS.handles(DeclareLaunchArgument)
     def _declare_argument(self, action, ctx, depth, uncertain):
         name = self._configuration_name(action, ctx, 'argument')
         if name is None:
@@ -237,6 +243,7 @@ class Ros2Executor:
             ctx.configs[name] = UnknownArg(str(e))
             self.loader.note(f'{action.location}: argument {name}: {e}')
 
+    @_ACTIONS.handles(SetLaunchConfiguration)
     def _set_configuration(self, action, ctx, depth, uncertain):
         name = self._configuration_name(action, ctx, 'configuration')
         if name is None:
@@ -249,6 +256,7 @@ class Ros2Executor:
         except Unresolved as e:
             ctx.configs[name] = UnknownArg(str(e))
 
+    @_ACTIONS.handles(GroupAction)
     def _group(self, action, ctx, depth, uncertain):
         scoped = action.scoped
         if not isinstance(scoped, bool):
@@ -274,12 +282,14 @@ class Ros2Executor:
                 if note in inner.notes:
                     inner.notes.remove(note)
 
+    @_ACTIONS.handles(IncludeLaunchDescription)
     def _include(self, action, ctx, depth, uncertain):
         if uncertain:
             ctx = ctx.copy()
             ctx.notes.extend(uncertain)
         self.include(action, ctx, depth)
 
+    @_ACTIONS.handles(PushROSNamespace)
     def _push_namespace(self, action, ctx, depth, uncertain):
         try:
             ns = self.text(action.namespace, ctx, ctx.notes)
@@ -291,6 +301,7 @@ class Ros2Executor:
         if uncertain:
             ctx.notes.extend(uncertain)
 
+    @_ACTIONS.handles(SetRemap)
     def _set_remap(self, action, ctx, depth, uncertain):
         try:
             pair = (self.text(action.source, ctx, ctx.notes),
@@ -304,6 +315,7 @@ class Ros2Executor:
             ctx.notes.append(f'{action.location}: remap {pair[0]} -> '
                              f'{pair[1]} applies only when: {note}')
 
+    @_ACTIONS.handles(SetParameter)
     def _set_parameter(self, action, ctx, depth, uncertain):
         try:
             name = self.text(action.name, ctx, ctx.notes)
@@ -317,6 +329,7 @@ class Ros2Executor:
             ctx.notes.append(f'{action.location}: parameter {name} is set '
                              f'only when: {note}')
 
+    @_ACTIONS.handles(SetEnv)
     def _set_env(self, action, ctx, depth, uncertain):
         try:
             name = self.text(action.name, ctx, [])
@@ -330,19 +343,23 @@ class Ros2Executor:
         except Unresolved:
             ctx.environ.pop(name, None)
 
+    @_ACTIONS.handles(Opaque)
     def _opaque(self, action, ctx, depth, uncertain):
         self.loader.note(f'{action.location}: {action.note}')
 
+    @_ACTIONS.handles(ComposableNode)
     def _stray_composable(self, action, ctx, depth, uncertain):
         # launch itself rejects it: a component runs only in a container
         self.loader.note(
             f'{action.location}: a ComposableNode outside a container '
             '(ComposableNodeContainer, LoadComposableNodes) starts nothing')
 
+    @_ACTIONS.handles(LoadComposableNodes)
     def _load_composable(self, action, ctx, depth, uncertain):
         for composable in action.composables:
             self._component(composable, ctx, uncertain)
 
+    @_ACTIONS.handles(Node)
     def _node(self, action, ctx, depth, uncertain):
         notes = unique(ctx.notes + uncertain)
         where = action.location
@@ -528,19 +545,3 @@ class Ros2Executor:
     def param_value(self, value, ctx, notes):
         """A parameter value: typed as launch_ros types text values."""
         return self.values(ctx, notes).parameter(value)
-
-
-_ACTION_HANDLERS = {
-    DeclareArgument: Ros2Executor._declare_argument,
-    SetConfiguration: Ros2Executor._set_configuration,
-    Group: Ros2Executor._group,
-    Include: Ros2Executor._include,
-    PushNamespace: Ros2Executor._push_namespace,
-    SetRemap: Ros2Executor._set_remap,
-    SetParameter: Ros2Executor._set_parameter,
-    SetEnv: Ros2Executor._set_env,
-    Opaque: Ros2Executor._opaque,
-    LoadComposable: Ros2Executor._load_composable,
-    ComposableNodeAction: Ros2Executor._stray_composable,
-    NodeAction: Ros2Executor._node,
-}

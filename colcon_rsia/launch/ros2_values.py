@@ -14,12 +14,13 @@ import os
 from colcon_rsia.launch.common import argument_text
 from colcon_rsia.launch.common import parse_bool
 from colcon_rsia.launch.common import typed_value
+from colcon_rsia.launch.handlers import HandlerTable
 from colcon_rsia.launch.ir import BoolOp
-from colcon_rsia.launch.ir import EnvVar
-from colcon_rsia.launch.ir import LaunchConfig
+from colcon_rsia.launch.ir import EnvironmentVariable
+from colcon_rsia.launch.ir import LaunchConfiguration
 from colcon_rsia.launch.ir import PackagePath
-from colcon_rsia.launch.ir import PathJoin
-from colcon_rsia.launch.ir import PyExpr
+from colcon_rsia.launch.ir import PathJoinSubstitution
+from colcon_rsia.launch.ir import PythonExpression
 from colcon_rsia.launch.ir import ThisFile
 from colcon_rsia.launch.ir import TypedValue
 from colcon_rsia.launch.ir import UnknownValue
@@ -42,8 +43,13 @@ MAX_VALUE_DEPTH = 200
 
 # the values that are substitutions: a parameter list holding one of them
 # is one text (launch_ros joins it), not a list of values
-SUBSTITUTIONS = (Text, Concat, Call, LaunchConfig, PackagePath, EnvVar,
-                 PathJoin, PyExpr, ThisFile, BoolOp, UnknownValue)
+SUBSTITUTIONS = (Text, Concat, Call, LaunchConfiguration, PackagePath,
+                 EnvironmentVariable, PathJoinSubstitution, PythonExpression,
+                 ThisFile, BoolOp, UnknownValue)
+
+# the type of a value -> the ValueResolver method resolving it, registered
+# by `@_VALUES.handles(type, ...)`
+_VALUES = HandlerTable('launch value type')
 
 
 class ValueResolver:
@@ -122,18 +128,23 @@ class ValueResolver:
 
     # one handler per type of value
 
+    @_VALUES.handles(str)
     def _literal(self, value, depth):
         return value
 
+    @_VALUES.handles(bool)
     def _boolean(self, value, depth):
         return 'true' if value else 'false'
 
+    @_VALUES.handles(int, float)
     def _number(self, value, depth):
         return str(value)
 
+    @_VALUES.handles(Text, Concat, Call)
     def _substitution(self, value, depth):
         return self.substitutions.resolve(value)
 
+    @_VALUES.handles(list, tuple)
     def _parts(self, value, depth):
         parts = []
         size = 0
@@ -145,19 +156,23 @@ class ValueResolver:
             parts.append(part)
         return ''.join(parts)
 
+    @_VALUES.handles(UnknownValue)
     def _unknown(self, value, depth):
         raise Unresolved(value.reason)
 
+    @_VALUES.handles(LaunchConfiguration)
     def _launch_config(self, value, depth):
         name = self.resolve(value.name, depth)
         if name not in self.configs and value.default is not None:
             return self.resolve(value.default, depth)
         return self.argument(name)
 
+    @_VALUES.handles(PackagePath)
     def _package_path(self, value, depth):
         package = self.resolve(value.package, depth)
         return self.find_package(package, value.kind)
 
+    @_VALUES.handles(EnvironmentVariable)
     def _env_var(self, value, depth):
         name = self.resolve(value.name, depth)
         if name in self.environ:
@@ -166,21 +181,26 @@ class ValueResolver:
             return self.resolve(value.default, depth)
         raise Unresolved(f'environment variable {name} is not set')
 
+    @_VALUES.handles(PathJoinSubstitution)
     def _path_join(self, value, depth):
         parts = [self.resolve(p, depth) for p in value.parts]
         return os.path.join(*parts) if parts else ''
 
+    @_VALUES.handles(PythonExpression)
     def _python_expression(self, value, depth):
         expression = self.resolve(value.parts, depth)
         return to_text(evaluate(expression, lookup=self.argument))
 
+    @_VALUES.handles(ThisFile)
     def _this_file(self, value, depth):
         path = os.path.abspath(self.current_file)
         return os.path.dirname(path) if value.directory else path
 
+    @_VALUES.handles(TypedValue)
     def _typed(self, value, depth):
         return self.resolve(value.value, depth)
 
+    @_VALUES.handles(BoolOp)
     def _bool_op(self, value, depth):
         texts = [self.resolve(v, depth) for v in value.operands]
         op = value.op
@@ -207,35 +227,13 @@ class ValueResolver:
         return 'true' if result else 'false'
 
 
-_HANDLERS = {
-    str: ValueResolver._literal,
-    bool: ValueResolver._boolean,
-    int: ValueResolver._number,
-    float: ValueResolver._number,
-    Text: ValueResolver._substitution,
-    Concat: ValueResolver._substitution,
-    Call: ValueResolver._substitution,
-    list: ValueResolver._parts,
-    tuple: ValueResolver._parts,
-    UnknownValue: ValueResolver._unknown,
-    LaunchConfig: ValueResolver._launch_config,
-    PackagePath: ValueResolver._package_path,
-    EnvVar: ValueResolver._env_var,
-    PathJoin: ValueResolver._path_join,
-    PyExpr: ValueResolver._python_expression,
-    ThisFile: ValueResolver._this_file,
-    BoolOp: ValueResolver._bool_op,
-    TypedValue: ValueResolver._typed,
-}
-
-
 def _handler(value_type):
     """The handler of a type of value or of its nearest base; None if none.
 
     The nearest base: a subclass of str is text, as ``isinstance`` has it.
     """
     for cls in value_type.__mro__:
-        handler = _HANDLERS.get(cls)
+        handler = _VALUES.get(cls)
         if handler is not None:
             return handler
     return None

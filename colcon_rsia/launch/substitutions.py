@@ -13,6 +13,7 @@ import os
 from typing import List
 from typing import Optional
 
+from colcon_rsia.launch.handlers import HandlerTable
 from colcon_rsia.launch.notes import shorten
 from colcon_rsia.launch.safe_eval import evaluate
 from colcon_rsia.launch.safe_eval import to_text
@@ -218,6 +219,15 @@ def _limit(value):
     return value
 
 
+# the parts of a parsed tree (their types) and the substitutions of each
+# dialect (their names) -> the Resolver method resolving them, registered by
+# `@_TREE.handles(type)`, `@_ROS1.handles(name)`, `@_ROS2.handles(name)`
+_TREE = HandlerTable('substitution part type')
+_ROS1 = HandlerTable('ROS 1 substitution')
+_ROS2 = HandlerTable('ROS 2 substitution')
+_DIALECTS = {'ros1': _ROS1, 'ros2': _ROS2}
+
+
 class Resolver:
     """Resolve substitutions over what is known statically.
 
@@ -248,11 +258,13 @@ class Resolver:
 
     def resolve(self, sub):
         """The text of a parsed substitution tree."""
-        return _TREE_HANDLERS[type(sub)](self, sub)
+        return _TREE[type(sub)](self, sub)
 
+    @_TREE.handles(Text)
     def _text(self, sub):
         return sub.value
 
+    @_TREE.handles(Concat)
     def _concat(self, sub):
         total = []
         size = 0
@@ -264,10 +276,11 @@ class Resolver:
             total.append(value)
         return ''.join(total)
 
+    @_TREE.handles(Call)
     def _call(self, sub):
         if sub.name == 'eval':
             return _limit(self._eval(sub))
-        handler = _HANDLERS[self.dialect].get(sub.name)
+        handler = _DIALECTS[self.dialect].get(sub.name)
         if handler is None:
             raise Unresolved(f'unknown substitution {shorten(sub.source)}')
         args = [self.resolve(a) for a in sub.args]
@@ -275,11 +288,15 @@ class Resolver:
 
     # ROS 1 and ROS 2 handlers
 
+    @_ROS1.handles('arg')
+    @_ROS2.handles('var')
     def _arg(self, args, sub):
         if len(args) != 1:
             raise Unresolved(f'{sub.source} needs exactly one name')
         return self.lookup_arg(args[0])
 
+    @_ROS1.handles('env')
+    @_ROS2.handles('env')
     def _env(self, args, sub):
         if len(args) == 1 or (self.dialect == 'ros2' and len(args) == 2):
             value = self.environ.get(args[0])
@@ -291,6 +308,7 @@ class Resolver:
                              f'({sub.source})')
         raise Unresolved(f'{sub.source}: wrong number of arguments')
 
+    @_ROS1.handles('optenv')
     def _optenv(self, args, sub):
         if not args:
             raise Unresolved(f'{sub.source} needs a variable name')
@@ -299,6 +317,8 @@ class Resolver:
             return value
         return ' '.join(args[1:])
 
+    @_ROS1.handles('find')
+    @_ROS2.handles('find-pkg-share', 'find-pkg-prefix')
     def _find(self, args, sub):
         if len(args) != 1:
             raise Unresolved(f'{sub.source} needs exactly one package')
@@ -306,12 +326,17 @@ class Resolver:
                 'find-pkg-prefix': 'prefix'}[sub.name]
         return self.find_package(args[0], kind)
 
+    @_ROS1.handles('dirname')
+    @_ROS2.handles('dirname')
     def _dirname(self, args, sub):
         return os.path.dirname(os.path.abspath(self.current_file))
 
+    @_ROS2.handles('filename')
     def _filename(self, args, sub):
         return os.path.abspath(self.current_file)
 
+    @_ROS1.handles('anon')
+    @_ROS2.handles('anon')
     def _anon(self, args, sub):
         if len(args) != 1:
             raise Unresolved(f'{sub.source} needs exactly one name')
@@ -322,6 +347,7 @@ class Resolver:
             self.notes.append(note)
         return placeholder
 
+    @_ROS2.handles('find-exec', 'exec-in-pkg', 'command', 'param')
     def _not_static(self, args, sub):
         raise Unresolved(f'{shorten(sub.source)} is only known at run time')
 
@@ -369,35 +395,3 @@ def _unquote(body):
             body[0] not in body[1:-1]:
         return body[1:-1]
     return body
-
-
-# the parts of a parsed tree
-_TREE_HANDLERS = {
-    Text: Resolver._text,
-    Concat: Resolver._concat,
-    Call: Resolver._call,
-}
-
-_HANDLERS = {
-    'ros1': {
-        'arg': Resolver._arg,
-        'env': Resolver._env,
-        'optenv': Resolver._optenv,
-        'find': Resolver._find,
-        'dirname': Resolver._dirname,
-        'anon': Resolver._anon,
-    },
-    'ros2': {
-        'var': Resolver._arg,
-        'env': Resolver._env,
-        'find-pkg-share': Resolver._find,
-        'find-pkg-prefix': Resolver._find,
-        'dirname': Resolver._dirname,
-        'filename': Resolver._filename,
-        'anon': Resolver._anon,
-        'find-exec': Resolver._not_static,
-        'exec-in-pkg': Resolver._not_static,
-        'command': Resolver._not_static,
-        'param': Resolver._not_static,
-    },
-}

@@ -34,14 +34,6 @@ from colcon_rsia.summary import store
 from colcon_rsia.summary.kinds import INDEPENDENT
 from colcon_rsia.summary.package_summary import PackageSummary
 
-# package types whose build produces a compile database
-CPP_PACKAGE_TYPES = frozenset({
-    'cmake', 'ros.catkin', 'ros.cmake', 'ros.ament_cmake'})
-# package types whose nodes are Python only
-PYTHON_PACKAGE_TYPES = frozenset({'ros.ament_python'})
-# package types that may also install Python nodes (scripts)
-MIXED_PACKAGE_TYPES = frozenset({'ros.catkin', 'ros.ament_cmake'})
-
 EXPORT_FLAG = '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON'
 
 # the header mode unless asked otherwise: on the test workspaces the model
@@ -225,23 +217,49 @@ def build_base_problem(build_base):
     return None
 
 
-def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
-             header_mode, workspace_package_dirs, without_build, repair):
+def _analyze(*, package_type, **request):
+    """Analyse a package with the analyser of its type (or skip it)."""
+    analyser = PACKAGE_TYPE_ANALYSERS.get(package_type)
+    if analyser is None:
+        return Outcome(
+            request['name'],
+            warning=f"package type '{package_type}' is not analysed "
+                    'by this version; skipped', skipped=True)
+    return analyser(**request)
+
+
+# the analysers of the package types (below): each takes the arguments of
+# `analyze` but the package type, and returns an Outcome
+
+
+def _analyze_python(*, name, path, build_base, **_):
+    """A package whose nodes are Python only."""
+    # imported here: most colcon calls never analyse anything
+    from colcon_rsia.package.python_analysis import analyze_python_package
+    return Outcome(name, summary=analyze_python_package(
+        name=name, path=path, build_base=build_base))
+
+
+def _analyze_cpp_and_scripts(**request):
+    """A package of C++ that may also install Python nodes (scripts)."""
+    return _analyze_cpp(scripts=True, **request)
+
+
+def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
+                 workspace_package_dirs, without_build, repair,
+                 scripts=False):
+    """A package whose build produces a compile database.
+
+    :param bool scripts: whether the package may also install Python
+      nodes (scripts) besides its C++ ones
+    """
     # imported here: most colcon calls never analyse anything
     from colcon_rsia.package.python_analysis import analyze_python_package
     from colcon_rsia.package.python_analysis import build_python_summary
     from colcon_rsia.package.python_nodes import find_python_nodes
-    if package_type in PYTHON_PACKAGE_TYPES:
-        return Outcome(name, summary=analyze_python_package(
-            name=name, path=path, build_base=build_base))
-    if package_type not in CPP_PACKAGE_TYPES:
-        return Outcome(
-            name, warning=f"package type '{package_type}' is not analysed "
-                          'by this version; skipped', skipped=True)
     # the package's time includes CMake's configure of an unbuilt package
     started = time.monotonic()
-    has_python = package_type in MIXED_PACKAGE_TYPES and \
-        bool(find_python_nodes(path).nodes)
+    has_python = scripts and bool(find_python_nodes(path).nodes)
     has_database = os.path.isfile(
         os.path.join(build_base, COMPILE_DB_FILENAME))
     exported = exports_compile_commands(build_base)
@@ -269,7 +287,7 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
                                key=lambda n: n.id)
         summary.diagnostics += python.diagnostics
         summary.coverage.call_sites += python.coverage.call_sites
-    elif package_type in MIXED_PACKAGE_TYPES:
+    elif scripts:
         # scripts nothing installs as a node (tools, tests, examples): their
         # call sites are in code no node runs, said as such, not as misses
         summary.coverage.call_sites += coverage.call_site_coverage(
@@ -279,3 +297,14 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
     check_stop()
     store.write_summary(build_base, summary)
     return Outcome(name, summary=summary)
+
+
+# package type (as colcon's package identification names it) -> its
+# analyser; a package of a type missing here is skipped (Outcome.skipped)
+PACKAGE_TYPE_ANALYSERS = {
+    'cmake': _analyze_cpp,
+    'ros.cmake': _analyze_cpp,
+    'ros.catkin': _analyze_cpp_and_scripts,
+    'ros.ament_cmake': _analyze_cpp_and_scripts,
+    'ros.ament_python': _analyze_python,
+}
