@@ -5,7 +5,8 @@
 Build time (``package``, reading code through ``frontend``) and query time
 (``system``, reading launch files through ``launch``) meet only in the
 package summary (``model`` and ``package.store``); the colcon glue
-(``verb``, ``subverb``, ``event_handler``) and ``report`` sit on top.
+(``verb``, ``subverb``, ``event_handler``), ``render`` (the output of
+the queries) and ``report`` sit on top.
 """
 
 import ast
@@ -32,9 +33,12 @@ ALLOWED = {
     'launch': {'safe_files', 'python_arithmetic'},
     'package': {'model', 'frontend', 'environment_variables', 'safe_files'},
     'system': {'model', 'launch', 'package.store', 'safe_files'},
-    'report': {'model', 'system', 'package.store', 'safe_files'},
-    'event_handler': {'package', 'safe_files'},
-    'subverb': {'model', 'package', 'system', 'report',
+    # the output of the queries: from system's results, never from the
+    # build-time code (a result it renders is a document of its own)
+    'render': {'model', 'system', 'safe_files'},
+    'report': {'model', 'system', 'render', 'package.store', 'safe_files'},
+    'event_handler': {'package', 'render', 'safe_files'},
+    'subverb': {'model', 'package', 'system', 'render', 'report',
                 'environment_variables', 'safe_files'},
     'verb': {'subverb'},
 }

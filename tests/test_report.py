@@ -19,13 +19,13 @@ import time
 from colcon_rsia import model
 from colcon_rsia.package.store import find_summaries
 from colcon_rsia.package.store import read_summary
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.report import build_report
 from colcon_rsia.report.html import CSP
 from colcon_rsia.report.html import render_html
 from colcon_rsia.report.layout import layered_layout
 from colcon_rsia.report.markdown import render_summary
 from colcon_rsia.report.writer import write_report
-from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 from colcon_rsia.system.since import changed_since
 from colcon_rsia.system.since import ChangeError

@@ -28,7 +28,7 @@ from typing import Optional
 
 from colcon_rsia import __version__
 from colcon_rsia import model
-from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import impact_to_json
 from colcon_rsia.system.impact import PAPER
