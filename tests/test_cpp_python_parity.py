@@ -9,7 +9,7 @@ as written here by hand.
 """
 
 from colcon_rsia.package.runner import analyze
-from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 import pytest
 

@@ -4,9 +4,9 @@
 
 import json
 
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.summary.store import find_summaries
 from colcon_rsia.summary.store import read_summary
-from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.impact import expand_changed
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import impact_to_json

@@ -6,8 +6,8 @@ Build time (``package``, reading code through ``frontend``) and query time
 (``system``, reading launch files through ``launch``) meet only in the
 package summary (``summary``: its data classes and files), which imports
 neither; ``system`` and ``report`` import nothing of ``package``. The
-colcon glue (``verb``, ``subverb``, ``event_handler``) and ``report`` sit
-on top.
+colcon glue (``verb``, ``subverb``, ``event_handler``), ``render`` (the
+output of the queries) and ``report`` sit on top.
 """
 
 import ast
@@ -34,9 +34,12 @@ ALLOWED = {
     'launch': {'safe_files', 'python_arithmetic'},
     'package': {'summary', 'frontend', 'environment_variables', 'safe_files'},
     'system': {'summary', 'launch', 'safe_files'},
-    'report': {'summary', 'system', 'safe_files'},
-    'event_handler': {'package', 'safe_files'},
-    'subverb': {'summary', 'package', 'system', 'report',
+    # the output of the queries: from system's results, never from the
+    # build-time code (a result it renders is a document of its own)
+    'render': {'summary', 'system', 'safe_files'},
+    'report': {'summary', 'system', 'render', 'safe_files'},
+    'event_handler': {'package', 'render', 'safe_files'},
+    'subverb': {'summary', 'package', 'system', 'render', 'report',
                 'environment_variables', 'safe_files'},
     'verb': {'subverb'},
 }

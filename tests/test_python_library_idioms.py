@@ -7,7 +7,7 @@ scripts and the libraries' documented behaviour.
 """
 
 from colcon_rsia.package.python_analysis import analyze_python_package
-from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 import pytest
 

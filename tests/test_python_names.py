@@ -3,7 +3,7 @@
 """Python topic names from parameters, constants and string building."""
 
 from colcon_rsia.package.python_analysis import analyze_python_package
-from colcon_rsia.system.graph import graph_to_json
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 import pytest
 

@@ -20,8 +20,8 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.recovery import kinds
 from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
-from colcon_rsia.package.coverage import report_to_text
 from colcon_rsia.package.coverage import workspace_report
+from colcon_rsia.render.coverage import coverage_to_text
 from conftest import analyse_source
 import pytest
 
@@ -191,7 +191,7 @@ def test_a_model_class_answers_what_the_users_version_has(tmp_path):
     assert 'kDefaultFlags' not in (
         Path(MODEL_HEADERS_DIR) / 'tf2_ros' / 'buffer.h').read_text()
     # `colcon rsia coverage --repairs` says which rule repaired what, where
-    text = report_to_text(workspace_report([summary]), repairs=True)
+    text = coverage_to_text(workspace_report([summary]), repairs=True)
     assert '  repair model-overload: model-member:function ' \
         'rclcpp::QoS::reliability (src/newer.cpp)' in text.splitlines()
     assert 'repairs by rule: member-of-class 1, model-overload 1, ' \

@@ -16,6 +16,7 @@ import shutil
 import subprocess
 import time
 
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.report import build_report
 from colcon_rsia.report.html import CSP
 from colcon_rsia.report.html import render_html
@@ -31,7 +32,6 @@ from colcon_rsia.summary.nodes import NodeSubscriber
 from colcon_rsia.summary.package_summary import PackageSummary
 from colcon_rsia.summary.store import find_summaries
 from colcon_rsia.summary.store import read_summary
-from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 from colcon_rsia.system.since import changed_since
 from colcon_rsia.system.since import ChangeError

@@ -5,8 +5,8 @@
 import json
 import re
 
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.summary.store import read_summary
-from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.load import load_system
 from conftest import run_colcon
 from conftest import WORKSPACES

@@ -188,8 +188,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             print(statistics_line(), flush=True)
         if not analysed:
             return
-        from colcon_rsia.package.coverage import total_line
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.render.coverage import total_line
         print(total_line(workspace_report(
             [o.summary for o in analysed],
             {o.package: o.error for o in self._outcomes

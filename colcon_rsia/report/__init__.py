@@ -27,9 +27,9 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import __version__
+from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.summary.kinds import DEPENDENT
 from colcon_rsia.summary.kinds import INDEPENDENT
-from colcon_rsia.system.graph import graph_to_json
 from colcon_rsia.system.impact import impact_all
 from colcon_rsia.system.impact import impact_to_json
 from colcon_rsia.system.impact import PAPER

@@ -2,16 +2,16 @@
 # Licensed under the Apache License, Version 2.0
 """Write the report's files (see :mod:`colcon_rsia.report`)."""
 
-import json
 import os
 
+from colcon_rsia.render import json_text
+from colcon_rsia.render.graph import graph_to_dot
 from colcon_rsia.report import build_report
 from colcon_rsia.report.drawing import draw_system
 from colcon_rsia.report.html import graph_svg
 from colcon_rsia.report.html import render_html
 from colcon_rsia.report.markdown import render_summary
 from colcon_rsia.safe_files import write_text_atomically
-from colcon_rsia.system.graph import graph_to_dot
 from colcon_rsia.system.impact import PAPER
 from colcon_rsia.system.rates import predict_rates
 
@@ -48,11 +48,10 @@ def write_report(system, output, *, changed=None, reasons=None, since=None,
         rate_impact=set(impact.get('rate_impact', ())),
         traditional=set(impact.get('traditional_impact', ())),
         rates=predict_rates(system)))
-    write('graph.json', json.dumps(data.graph, indent=2, sort_keys=True) + '\n')
+    write('graph.json', json_text(data.graph))
     stale = []
     if data.impact is not None:
-        write('impact.json',
-              json.dumps(data.impact, indent=2, sort_keys=True) + '\n')
+        write('impact.json', json_text(data.impact))
     else:
         stale.append('impact.json')
     write('summary.md', render_summary(data))

@@ -65,13 +65,13 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
     def main(self, *, context):  # noqa: D102
         # imported here: every colcon call loads this module, only
         # `colcon rsia analyze` needs the analysis
-        from colcon_rsia.package.coverage import total_line
         from colcon_rsia.package.coverage import workspace_report
         from colcon_rsia.package import shared_cache
         from colcon_rsia.package import workers
         from colcon_rsia.package.environment import environment_problems
         from colcon_rsia.package.runner import analyze
         from colcon_rsia.package.runner import build_base_problem
+        from colcon_rsia.render.coverage import total_line
         from colcon_rsia.safe_files import printable
         args = context.args
         problems = environment_problems()

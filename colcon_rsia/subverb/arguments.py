@@ -6,6 +6,7 @@ from colcon_core.argument_default import wrap_default_value
 from colcon_core.argument_type import get_cwd_path_resolver
 from colcon_core.package_selection import add_arguments \
     as add_packages_arguments
+from colcon_rsia.render import FORMATS
 from colcon_rsia.system.impact import MODELS
 from colcon_rsia.system.impact import PAPER
 
@@ -51,3 +52,13 @@ def add_since_argument(group):
         help='The changed nodes are those whose files (or whose launch '
              'files) changed since the git revision REF: committed and '
              'working-tree changes, as `git diff --name-only REF`')
+
+
+def add_format_argument(parser, formats=FORMATS):
+    """Add ``--format`` with the formats the subverb's result renders to.
+
+    :param formats: the choices (``colcon_rsia.render``), the default first
+    """
+    parser.add_argument(
+        '--format', choices=formats, default=formats[0],
+        help=f'Output format (default: {formats[0]})')

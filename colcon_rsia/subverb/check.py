@@ -1,13 +1,13 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
-import json
 import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.safe_files import printable
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_since_argument
 from colcon_rsia.subverb.arguments import add_system_arguments
@@ -50,15 +50,13 @@ class CheckRsiaSubverb(RsiaSubverbExtensionPoint):
             '--fail-on-unexpected', action='store_true',
             help='Exit with code 2 (after the normal output) when a topic '
                  'changed that the model did not predict')
-        parser.add_argument(
-            '--format', choices=('text', 'json'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser)
 
     def main(self, *, context):  # noqa: D102
+        from colcon_rsia.render.check import render_check
         from colcon_rsia.system.bags import BagError
         from colcon_rsia.system.bags import measure_bag
         from colcon_rsia.system.check import check_one
-        from colcon_rsia.system.check import check_to_text
         from colcon_rsia.system.check import check_two
         from colcon_rsia.system.check import DEFAULT_TOLERANCE
         args = context.args
@@ -90,10 +88,7 @@ class CheckRsiaSubverb(RsiaSubverbExtensionPoint):
                                tolerance=tolerance, model_name=args.model)
         else:
             result = check_one(system, measured[0], tolerance=tolerance)
-        if args.format == 'json':
-            print(json.dumps(result, indent=2, sort_keys=True))
-        else:
-            print(check_to_text(result), end='')
+        print(render_check(result, args.format), end='')
         if args.fail_on_unexpected and result['unexpected_changes']:
             sys.stdout.flush()
             print(printable(

@@ -2,7 +2,6 @@
 # Licensed under the Apache License, Version 2.0
 
 import argparse
-import json
 import math
 import os
 
@@ -10,6 +9,7 @@ from colcon_core.logging import colcon_logger
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 logger = colcon_logger.getChild(__name__)
@@ -40,9 +40,7 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def add_arguments(self, *, parser):  # noqa: D102
         add_workspace_arguments(parser)
-        parser.add_argument(
-            '--format', choices=('text', 'json'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser)
         parser.add_argument(
             '--missed', action='store_true',
             help='List every call site without a fact (text format)')
@@ -58,8 +56,8 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def main(self, *, context):  # noqa: D102
         from colcon_rsia.package.coverage import FAILED
-        from colcon_rsia.package.coverage import report_to_text
         from colcon_rsia.package.coverage import workspace_report
+        from colcon_rsia.render.coverage import render_coverage
         from colcon_rsia.safe_files import max_file_mb_problem
         from colcon_rsia.summary import store
         args = context.args
@@ -71,11 +69,8 @@ class CoverageRsiaSubverb(RsiaSubverbExtensionPoint):
         summaries, failures, not_analysed = store.read_results(
             build_base, selected)
         report = workspace_report(summaries, failures, not_analysed)
-        if args.format == 'json':
-            print(json.dumps(report, indent=2, sort_keys=True))
-        else:
-            print(report_to_text(report, missed=args.missed,
-                                 repairs=args.repairs), end='')
+        print(render_coverage(report, args.format, missed=args.missed,
+                              repairs=args.repairs), end='')
         if args.fail_under is not None and (
                 report['total']['percent'] < args.fail_under or
                 any(p['status'] == FAILED for p in report['packages'])):

@@ -1,15 +1,13 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
-import json
-
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.render.graph import FORMATS
+from colcon_rsia.render.graph import render_graph
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_system_arguments
-from colcon_rsia.system.graph import graph_to_dot
-from colcon_rsia.system.graph import graph_to_json
-from colcon_rsia.system.graph import graph_to_text
 from colcon_rsia.system.workspace import load_system_from_args
 
 logger = colcon_logger.getChild(__name__)
@@ -25,19 +23,12 @@ class GraphRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def add_arguments(self, *, parser):  # noqa: D102
         add_system_arguments(parser)
-        parser.add_argument(
-            '--format', choices=('text', 'json', 'dot'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser, FORMATS)
 
     def main(self, *, context):  # noqa: D102
         args = context.args
         system, error = load_system_from_args(args, logger)
         if error:
             return error
-        if args.format == 'json':
-            print(json.dumps(graph_to_json(system), indent=2, sort_keys=True))
-        elif args.format == 'dot':
-            print(graph_to_dot(system), end='')
-        else:
-            print(graph_to_text(system), end='')
+        print(render_graph(system, args.format), end='')
         return 0

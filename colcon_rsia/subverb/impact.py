@@ -1,14 +1,15 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
-import json
 import sys
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
+from colcon_rsia.render.impact import render_impact
+from colcon_rsia.render.impact import render_impact_all
 from colcon_rsia.safe_files import printable
-from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_since_argument
 from colcon_rsia.subverb.arguments import add_system_arguments
@@ -58,9 +59,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             help='Exit with code 2 (after the normal output) when the '
                  'rate-aware impact set contains any of these nodes '
                  '(names as for --changed)')
-        parser.add_argument(
-            '--format', choices=('text', 'json'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser)
 
     def main(self, *, context):  # noqa: D102
         args = context.args
@@ -73,10 +72,7 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             if args.fail_on:
                 return '--fail-on needs --changed or --since, not --all'
             result = impact_all(system, args.model)
-            if args.format == 'json':
-                print(json.dumps(result, indent=2, sort_keys=True))
-            else:
-                print(_all_text(result), end='')
+            print(render_impact_all(result, args.format), end='')
             return 0
         try:
             fail_on = expand_changed(system, args.fail_on or [])
@@ -86,10 +82,8 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
         if error:
             return error
         result = impact_to_json(system, changed, args.model)
-        if args.format == 'json':
-            print(json.dumps(result, indent=2, sort_keys=True))
-        else:
-            print(_impact_text(result, args.traditional), end='')
+        print(render_impact(result, args.format,
+                            traditional=args.traditional), end='')
         hit = sorted(set(fail_on) & set(result['rate_impact']))
         if hit:
             sys.stdout.flush()
@@ -106,63 +100,3 @@ class ImpactRsiaSubverb(RsiaSubverbExtensionPoint):
             print(stale, file=sys.stderr)
             return FAIL_ON_EXIT_CODE
         return 0
-
-
-def _impact_text(result, traditional):
-    rate = result['rate_impact']
-    data = result['traditional_impact']
-    lines = [
-        f"changed: {', '.join(result['changed']) or '(none)'}",
-        f"rate impact: {len(rate)} node{'s' if len(rate) != 1 else ''}; "
-        f'traditional: {len(data)} '
-        f"({result['model']} model; paper {len(result['paper_impact'])}, "
-        f"trigger {len(result['trigger_impact'])})"]
-    lines += [f'  {node_id}' for node_id in rate]
-    if traditional:
-        lines.append('traditional impact:')
-        lines += [f'  {node_id}' for node_id in data]
-    paper_only = sorted(
-        set(result['paper_impact']) - set(result['trigger_impact']))
-    if paper_only:
-        lines.append(f"paper model only: {', '.join(paper_only)}")
-    lines += not_triggered_text(result['not_triggered'])
-    return printable_lines(lines)
-
-
-def not_triggered_text(edges):
-    """Lines saying where the trigger model stops and the paper's not."""
-    lines = []
-    if edges:
-        lines.append('the trigger model stops at (the paper model crosses):')
-    for edge in edges:
-        triggers = ', '.join(
-            f"{t['trigger']} ({t['evidence']})" for t in edge['triggers'])
-        lines.append(
-            f"  {edge['node']}: {edge['via']} does not trigger "
-            f"{edge['topic']}; triggered by {triggers or 'nothing'}")
-    return lines
-
-
-def _all_text(result):
-    rows = result['nodes']
-    width = max([len(r['id']) for r in rows] + [4])
-    lines = [f"{'node':<{width}}  traditional  paper  trigger"]
-    for row in rows:
-        lines.append(
-            f"{row['id']:<{width}}  {row['traditional_impact']:>11}  "
-            f"{row['paper_impact']:>5}  {row['trigger_impact']:>7}")
-    lines.append(
-        f"average: traditional {result['average_traditional_impact']:g}, "
-        f"paper {result['average_paper_impact']:g}, trigger "
-        f"{result['average_trigger_impact']:g} over {len(rows)} nodes")
-    lines.append(
-        f"ratio to traditional: paper {result['paper_ratio']:g}, trigger "
-        f"{result['trigger_ratio']:g}; trigger / paper "
-        f"{result['trigger_to_paper']:g}")
-    for row in rows:
-        if row.get('not_triggered'):
-            lines.append(f"{row['id']}: trigger {row['trigger_impact']} < "
-                         f"paper {row['paper_impact']}:")
-            lines += ['  ' + line for line in
-                      not_triggered_text(row['not_triggered'])[1:]]
-    return printable_lines(lines)

@@ -1,12 +1,12 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
-import json
 import os
 
 from colcon_core.package_selection import get_packages
 from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_workspace_arguments
 
 
@@ -20,13 +20,13 @@ class ProblemsRsiaSubverb(RsiaSubverbExtensionPoint):
 
     def add_arguments(self, *, parser):  # noqa: D102
         add_workspace_arguments(parser)
-        parser.add_argument(
-            '--format', choices=('text', 'json'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser)
 
     def main(self, *, context):  # noqa: D102
         from colcon_rsia.package.problems import problems_report
         from colcon_rsia.package.problems import problems_to_text
+        from colcon_rsia.render import JSON
+        from colcon_rsia.render import json_text
         from colcon_rsia.safe_files import display
         from colcon_rsia.summary import store
         args = context.args
@@ -34,8 +34,10 @@ class ProblemsRsiaSubverb(RsiaSubverbExtensionPoint):
                     if d.selected]
         report = problems_report(*store.read_results(
             os.path.abspath(args.build_base), selected))
-        if args.format == 'json':
-            print(json.dumps(report, indent=2, sort_keys=True))
+        # the text form of a problem is the build's too (the first problem
+        # in the line of each package): it stays beside split_problem
+        if args.format == JSON:
+            print(json_text(report), end='')
         else:
             print(display(problems_to_text(report)), end='')
         return 0

@@ -1,12 +1,12 @@
 # Copyright 2026 colcon-rsia contributors
 # Licensed under the Apache License, Version 2.0
 
-import json
 import math
 
 from colcon_core.logging import colcon_logger
 from colcon_core.plugin_system import satisfies_version
 from colcon_rsia.subverb import RsiaSubverbExtensionPoint
+from colcon_rsia.subverb.arguments import add_format_argument
 from colcon_rsia.subverb.arguments import add_model_argument
 from colcon_rsia.subverb.arguments import add_system_arguments
 from colcon_rsia.system.workspace import load_system_from_args
@@ -34,13 +34,11 @@ class RatesRsiaSubverb(RsiaSubverbExtensionPoint):
             help='What if these nodes changed: their topics may publish '
                  'at any rate')
         add_model_argument(parser)
-        parser.add_argument(
-            '--format', choices=('text', 'json'), default='text',
-            help='Output format (default: text)')
+        add_format_argument(parser)
 
     def main(self, *, context):  # noqa: D102
+        from colcon_rsia.render.rates import render_rates
         from colcon_rsia.system.rates import rates_to_json
-        from colcon_rsia.system.rates import rates_to_text
         args = context.args
         set_rates, error = parse_set_rates(args.set_rate)
         if error:
@@ -58,10 +56,7 @@ class RatesRsiaSubverb(RsiaSubverbExtensionPoint):
         result = rates_to_json(
             system, set_rates=set_rates, changed=changed or (),
             model_name=args.model)
-        if args.format == 'json':
-            print(json.dumps(result, indent=2, sort_keys=True))
-        else:
-            print(rates_to_text(result), end='')
+        print(render_rates(result, args.format), end='')
         return 0
 
 

@@ -15,7 +15,6 @@ from dataclasses import field
 from typing import List
 from typing import Optional
 
-from colcon_rsia.safe_files import printable_lines
 from colcon_rsia.summary.kinds import INDEPENDENT
 from colcon_rsia.summary.kinds import PATTERN_RATE_LOOP
 from colcon_rsia.summary.kinds import PATTERN_TIMER
@@ -270,27 +269,3 @@ def rates_to_json(system, *, set_rates=None, changed=(), model_name=PAPER):
             system, set_rates=set_rates, changed=changed,
             model_name=model_name)
     return result
-
-
-def rates_to_text(result):
-    """The readable form of :func:`rates_to_json`'s result."""
-    topics = result['topics']
-    width = max([len(t['name']) for t in topics] + [5])
-    lines = []
-    for topic in topics:
-        lines.append(f"{topic['name']:<{width}}  {_fmt(topic['hz']):>10}  "
-                     f"{topic['source']}")
-        if topic['hz'] is None and topic['chain']:
-            lines.append(f"{'':<{width}}  {'':>10}  ({topic['chain'][-1]})")
-    if 'changes' in result:
-        lines.append('what if: ' + ', '.join(
-            [f'{name}={hz:g} Hz' for name, hz in result['set_rates'].items()]
-            + [f'{name} changed' for name in result['changed']]))
-        for change in result['changes']:
-            to = 'may change' if change['may_change'] else _fmt(change['to'])
-            lines.append(f"  {change['topic']}: {_fmt(change['from'])} -> "
-                         + to)
-        for keep in result['kept']:
-            lines.append(f"  {keep['topic']} keeps {_fmt(keep['hz'])}: "
-                         f"{keep['edge']} stops {keep['via']}")
-    return printable_lines(lines)
