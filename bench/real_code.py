@@ -37,7 +37,7 @@ The recall counts a call site with a fact anywhere in the package's units;
 node until plugins are analysed as nodes).
 
 Usage: python3 bench/real_code.py WS [--colcon EXE] [--jobs N]
-  [--build-base DIR] [--base-paths P ...] [--missed]
+  [--build-base DIR] [--base-paths P ...] [--repair POLICY] [--missed]
 """
 
 import argparse
@@ -66,8 +66,10 @@ from colcon_rsia.summary.store import SummaryError  # noqa: E402
 CXX_SOURCES = ('.cpp', '.cc', '.cxx', '.c++', '.C')
 
 
-def _analyze(ws, build_base, colcon_exe, jobs, base_paths):
+def _analyze(ws, build_base, colcon_exe, jobs, base_paths, repair=None):
     args = [colcon_exe, 'rsia', 'analyze', '--build-base', str(build_base)]
+    if repair:
+        args += ['--repair', repair]
     if base_paths:
         args += ['--base-paths'] + base_paths
     if jobs:
@@ -226,6 +228,9 @@ def main():
     parser.add_argument(
         '--base-paths', nargs='+', default=None,
         help="passed on to colcon (default: colcon's, the workspace root)")
+    parser.add_argument(
+        '--repair', choices=('when-it-pays', 'always'), default=None,
+        help="passed on to analyze (default: analyze's)")
     parser.add_argument('--missed', action='store_true',
                         help='list every call site without a fact')
     args = parser.parse_args()
@@ -236,7 +241,8 @@ def main():
         shutil.rmtree(build_base)
     build_base.mkdir(parents=True)
     elapsed, peak_mb, output = _analyze(
-        ws, build_base, args.colcon or colcon(), args.jobs, args.base_paths)
+        ws, build_base, args.colcon or colcon(), args.jobs, args.base_paths,
+        args.repair)
     failed = [line for line in output.splitlines()
               if 'analysis failed' in line]
     internal = [line for line in failed if 'internal error' in line]

@@ -131,12 +131,17 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     resource_dir = find_resource_dir()
     if resource_dir is None and entries:
         raise AnalysisError(RESOURCE_DIR_HINT)
-    precompiled_dir = None
+    precompiled_dir = shared_repairs = None
     if header_mode == 'model':
         entries = _model_entries(
             entries, path, workspace_package_dirs,
             os.path.join(build_base, store.RSIA_DIRNAME, 'stubs'))
         precompiled_dir = build_paths.precompiled_dir(build_base)
+        if entries:
+            from colcon_rsia.frontend.cpp.model_mode import recovery
+            shared_repairs = recovery.workspace_repairs(
+                build_paths.workspace_repairs_file(build_base),
+                workspace_package_dirs)
 
     try:
         shared = shared_cache.SharedCache.from_environment(
@@ -150,7 +155,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         resource_dir=resource_dir, precompiled_dir=precompiled_dir,
         cache=build_paths.cache_dir(build_base) if use_cache else None,
         jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
-        shared=shared, wrappers=wrapper_store.read_workspace_wrappers(
+        shared=shared, shared_repairs=shared_repairs,
+        wrappers=wrapper_store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units,
@@ -356,13 +362,15 @@ def _inside(file, directory):
 
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
                 wrappers=(), wrappers_digest=None, precompiled_dir=None,
-                repair=REPAIR_WHEN_IT_PAYS, shared=None):
+                repair=REPAIR_WHEN_IT_PAYS, shared=None, shared_repairs=None):
     """Facts of one TU, parsed (in a worker process: see workers.py).
 
     :param hidden: {file: why} of files libclang is given as empty
     :param wrappers: the other packages' wrapper summaries (parse_units),
       and ``wrappers_digest`` theirs (wrapper_store.wrappers_digest)
     :param shared: the shared_cache.SharedCache the facts are kept in too
+    :param shared_repairs: the model mode's repairs every package's units
+      share (recovery.workspace_repairs), or None
     """
     hidden = hidden or {}
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
@@ -411,7 +419,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
             unrecorded=(lambda tu, facts: _unrecorded_calls(
                 tu, facts, package_path))
             if repair == REPAIR_WHEN_IT_PAYS else None,
-            check_stop=check_stop)
+            check_stop=check_stop, workspace_repairs=shared_repairs)
     except ci.TranslationUnitLoadError as e:
         return None, [f'{relative}: libclang could not parse it ({e})']
     tu, facts, rounds = parsed.tu, parsed.facts, parsed.rounds

@@ -39,3 +39,13 @@ def precompiled_dir(package_build_base):
     return os.path.join(
         os.path.dirname(os.path.abspath(package_build_base)),
         '.' + RSIA_DIRNAME, 'precompiled')
+
+
+def workspace_repairs_file(package_build_base):
+    """Where the model mode's repairs every package may need are kept.
+
+    Beside the precompiled headers: one file for the workspace.
+    """
+    return os.path.join(
+        os.path.dirname(precompiled_dir(package_build_base)), 'repairs',
+        'workspace.json')

@@ -148,7 +148,7 @@ class WorkersUnavailable(Exception):
 
 def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
                 jobs, timeout, wrappers=(), precompiled_dir=None,
-                repair=None, shared=None):
+                repair=None, shared=None, shared_repairs=None):
     """Facts of a package's TUs; return (facts by file, messages).
 
     The units whose facts are cached are read here; the others are parsed
@@ -165,6 +165,8 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     :param repair: when the model mode repairs a unit (for unit_facts)
     :param shared: the shared_cache.SharedCache looked in after ``cache``
       (and given to unit_facts, which stores the facts it makes), or None
+    :param shared_repairs: the model mode's repairs the workspace's units
+      share (for unit_facts), or None
     :raises Interrupted: when :func:`request_stop` was called
     """
     hidden = _unsafe_includes(entries, package_path)
@@ -181,7 +183,8 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
             unit_facts=unit_facts, package_path=package_path,
             resource_dir=resource_dir, cache=cache, hidden=hidden,
             wrappers=wrappers, wrappers_digest=digest,
-            precompiled_dir=precompiled_dir, repair=repair, shared=shared),
+            precompiled_dir=precompiled_dir, repair=repair, shared=shared,
+            shared_repairs=shared_repairs),
         jobs=jobs, timeout=timeout, cleanup_dirs=[cache, precompiled_dir])
     if shared is not None and todo:
         shared.evict()  # what the workers added may pass the size limit

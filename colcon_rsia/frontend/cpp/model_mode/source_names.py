@@ -46,8 +46,11 @@ _RESULT_MEMBER = re.compile(
 _RESULT_VARIABLE = re.compile(
     r'\bauto\s*&{0,2}\s*([A-Za-z_]\w*)\s*=[^;]*?(?:\.|->)\s*'
     r'([A-Za-z_]\w*)\s*\(\s*\)\s*;')
-# `Type::NAME`, also in the kName style (`ILogger::Severity::kINFO`)
-_CONSTANT = re.compile(r'\b[A-Z]\w*\s*::\s*([A-Z][A-Z0-9_]*|k[A-Z]\w*)\b')
+# `Type::NAME`, also in the kName style (`ILogger::Severity::kINFO`), and
+# of a lower-case scope (a generated header of constants only, read as a
+# message: `distortion_models::PLUMB_BOB`)
+_CONSTANT = re.compile(
+    r'\b[A-Za-z_]\w*\s*::\s*([A-Z][A-Z0-9_]*|k[A-Z]\w*)\b')
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
 _FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')

@@ -308,7 +308,11 @@ def _message_stub(package, name, *, includes=(), typedefs=(), kind='message',
         ['// a message the model mode cannot read: its name, template shape and',
          '// pointer typedefs are those of a generated message header, its',
          '// fields the catch-all rsia_model::Fields'],
-        ['#include <rsia_model/message.h>'] +
+        # (as a generated header: the traits code specialises to make its
+        # own types messages)
+        ['#include <rsia_model/message.h>', '#include <ros/message_traits.h>',
+         '#include <ros/serialization.h>',
+         '#include <ros/message_operations.h>'] +
         [f'#include <{i}>' for i in includes], body)
 
 

@@ -24,11 +24,13 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.loop import \
     MAX_REPAIR_ROUNDS
 from colcon_rsia.frontend.cpp.model_mode.recovery.loop import parse_unit
 from colcon_rsia.frontend.cpp.model_mode.recovery.loop import ParsedUnit
+from colcon_rsia.frontend.cpp.model_mode.recovery.loop import \
+    workspace_repairs
 from colcon_rsia.frontend.cpp.model_mode.recovery.store import \
     ensure_repair_header
 from colcon_rsia.frontend.cpp.model_mode.recovery.store import repair_header
 
 __all__ = [
     'MAX_REPAIR_ROUNDS', 'ParsedUnit', 'ensure_repair_header', 'parse_unit',
-    'repair_header',
+    'repair_header', 'workspace_repairs',
 ]

@@ -56,7 +56,8 @@ class ParsedUnit:
 
 
 def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
-               facts_of=None, unrecorded=None, check_stop=lambda: None):
+               facts_of=None, unrecorded=None, check_stop=lambda: None,
+               workspace_repairs=None):
     """Parse a unit; in model mode, repair it while that pays.
 
     The model mode (a repair header among the unit's `-include`s) parses
@@ -74,6 +75,8 @@ def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
       are errors
     :param check_stop: raises when the analysis should end (a round is one
       more parse)
+    :param workspace_repairs: a store.WorkspaceRepairs: the unit starts
+      with what the workspace's other units needed, and offers its own
     :rtype: ParsedUnit
     """
     header = _repair_header_of(entry.arguments)
@@ -83,7 +86,7 @@ def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
     return _Repairing(
         index, entry, parse=parse, header=header, package_path=package_path,
         relative=relative, facts_of=facts_of, unrecorded=unrecorded,
-        check_stop=check_stop).run()
+        check_stop=check_stop, workspace=workspace_repairs).run()
 
 
 def _repair_header_of(arguments):
@@ -102,8 +105,9 @@ class _Repairing:
     """The rounds of one unit's repairs."""
 
     def __init__(self, index, entry, *, parse, header, package_path,  # noqa: D107
-                 relative, facts_of, unrecorded, check_stop):
+                 relative, facts_of, unrecorded, check_stop, workspace):
         self.entry = entry
+        self.workspace = workspace
         self.parse_with = parse
         self.header = header
         self.package_path = package_path
@@ -183,8 +187,10 @@ class _Repairing:
         if not store.read_repairs(self.header):
             # a unit never repaired starts with what its package's other
             # units needed (their names, unless this package declares them)
+            # and the workspace's (names the workspace declares nowhere)
             store.seed_repairs(self.header, self.relative,
-                               _package_declarations(self.package_path))
+                               package_declarations(self.package_path),
+                               self.workspace)
         tu, facts, missing = self.parse()
         errors = self.own_errors(tu)
         records = store.read_records(self.header)
@@ -211,7 +217,7 @@ class _Repairing:
             # parses of the unit do not pay for it
             store.write_records(self.header, self.relative, records)
         if best_round:
-            store.share_repairs(self.header, set(records))
+            store.share_repairs(self.header, set(records), self.workspace)
         return ParsedUnit(tu, facts, rounds, records,
                           lost_calls if self.unrecorded else None)
 
@@ -285,7 +291,7 @@ _declarations = {}
 _declarations_lock = threading.Lock()
 
 
-def _package_declarations(package_path):
+def package_declarations(package_path):
     """The names a package's own C++ files declare (read once)."""
     with _declarations_lock:
         if package_path not in _declarations:
@@ -302,3 +308,11 @@ def _package_declarations(package_path):
                             pass  # named by the checks before the parse
             _declarations[package_path] = declared_names(texts)
         return _declarations[package_path]
+
+
+def workspace_repairs(path, package_dirs):
+    """The store.WorkspaceRepairs of a workspace, kept in `path`."""
+    declared = set()
+    for directory in package_dirs:
+        declared |= package_declarations(os.path.abspath(directory))
+    return store.WorkspaceRepairs(path, declared)

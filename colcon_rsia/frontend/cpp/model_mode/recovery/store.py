@@ -113,7 +113,8 @@ def write_records(path, source, records):
 
 # what one unit needed that any unit of the package may need: qualified
 # names, macros and standard headers (shared through this file, so that the
-# units parsed later start with them and need fewer parses)
+# units parsed later start with them and need fewer parses; see also
+# WorkspaceRepairs)
 SHARED_REPAIRS = 'package.repairs.json'
 _shared_lock = threading.Lock()
 
@@ -128,23 +129,57 @@ def _shareable(repair):
                           '::' in name.rsplit('::', 1)[0]))
 
 
-def share_repairs(header, repairs):
-    """Offer a unit's repairs to the units of its package parsed later."""
-    path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
-    # the units of a package are parsed in several processes
+class WorkspaceRepairs:
+    """What the units of every package of a workspace share.
+
+    A header of one package is included by the units of many: the names
+    one unit needed from it, the next unit of any package needs too. Only
+    names the workspace's own code declares nowhere are shared this way
+    (a unit of another package may include the real declaration).
+
+    :param path: the file they are kept in (beside the packages' outputs)
+    :param declared: the names the workspace's C++ files declare
+    """
+
+    def __init__(self, path, declared):  # noqa: D107
+        self.path = path
+        self.declared = frozenset(declared)
+
+
+def share_repairs(header, repairs, workspace=None):
+    """Offer a unit's repairs to the units parsed later.
+
+    To those of its package, and, when `workspace` (a WorkspaceRepairs)
+    is given, those of every package.
+    """
+    offered = {r for r in repairs if _shareable(r)}
+    _offer(os.path.join(os.path.dirname(header), SHARED_REPAIRS), offered)
+    if workspace is not None:
+        _offer(workspace.path, {
+            r for r in offered if r[0] in INCLUDES or
+            not is_declared(r[1], workspace.declared)})
+
+
+def _offer(path, offered):
+    # the units are parsed in several processes (and packages, at the same
+    # time, under a parallel build)
     with _shared_lock, safe_files.directory_lock(os.path.dirname(path)):
         known = _read_shared(path)
-        offered = {r for r in repairs if _shareable(r)}
         if not offered <= known:
             write_atomically(path, json.dumps(sorted(
                 [kind, name] for kind, name in known | offered)) + '\n')
 
 
-def seed_repairs(header, source, declared):
-    """Start a unit's (empty) repairs with its package's."""
+def seed_repairs(header, source, declared, workspace=None):
+    """Start a unit's (empty) repairs with its package's (and workspace's).
+
+    :param workspace: a WorkspaceRepairs, or None
+    """
     path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
     with _shared_lock:
         shared = _read_shared(path)
+        if workspace is not None:
+            shared |= _read_shared(workspace.path)
     # a unit may include the model header or the package header that
     # another unit lacked: only names declared in neither are seeded
     declared = set(declared) | model_declarations()

@@ -1,0 +1,124 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""What the model mode learns in one unit, the units parsed later start with.
+
+A header of an unmodelled library is included by the units of many
+packages; the declarations one unit's repairs made for it are offered to
+every later unit of the workspace, so that those parse cleanly at once.
+Names the workspace's own code declares are never offered that way: a unit
+of another package may include the real declaration.
+"""
+
+from pathlib import Path
+
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
+from colcon_rsia.package import analysis
+from colcon_rsia.package.build_paths import workspace_repairs_file
+import pytest
+
+# a library no model header and no package of the workspace provides, its
+# header included by some other header
+USES_UNKNOWN_LIBRARY = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class {name} : public rclcpp::Node
+{{
+public:
+  {name}() : Node("{name}")
+  {{
+    // a namespace and a macro that no included header mentions: only the
+    // parse's errors show them
+    zoom_ = optics::calibrated_zoom(2);
+#if OPTICS_VERSION_GTE(1, 2, 0)
+    zoom_ *= 2;
+#endif
+    publisher_ = create_publisher<std_msgs::msg::String>("{topic}", 10);
+  }}
+
+private:
+  double zoom_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr publisher_;
+}};
+
+int main(int argc, char ** argv)
+{{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<{name}>());
+  return 0;
+}}
+"""
+
+
+def _package(root, name, topic):
+    package = root / 'src' / name
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / f'{name}.cpp').write_text(
+        USES_UNKNOWN_LIBRARY.format(name=name, topic=topic))
+    (package / 'CMakeLists.txt').write_text(
+        f'cmake_minimum_required(VERSION 3.8)\nproject({name})\n'
+        f'add_executable({name} src/{name}.cpp)\n')
+    return package
+
+
+def _analyze(root, package, workspace):
+    return analysis.analyze_package(
+        name=package.name, path=str(package),
+        build_base=str(root / 'build' / package.name), jobs=1,
+        header_mode='model', workspace_package_dirs=[str(p) for p in workspace],
+        repair=analysis.REPAIR_ALWAYS)
+
+
+@pytest.fixture(scope='module')
+def two_packages(tmp_path_factory):
+    root = tmp_path_factory.mktemp('shared_repairs')
+    first = _package(root, 'viewer', 'view')
+    second = _package(root, 'recorder', 'record')
+    return root, first, second
+
+
+def test_a_second_package_starts_with_what_the_first_needed(two_packages):
+    root, first, second = two_packages
+    workspace = [first, second]
+    [unit] = _analyze(root, first, workspace).coverage.units
+    # optics::calibrated_zoom and OPTICS_VERSION_GTE are nowhere: repaired
+    assert unit.repair_rounds >= 1
+    assert unit.package_errors == 0
+
+    summary = _analyze(root, second, workspace)
+    [unit] = summary.coverage.units
+    assert (unit.package_errors, unit.repair_rounds) == (0, 0)
+    # the repairs it started with say where they came from
+    assert unit.repairs
+    assert {rule for rule, _, _ in unit.repairs} == {store.SEEDED}
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['record']
+
+
+def test_names_the_workspace_declares_are_not_offered_to_it(tmp_path):
+    header = tmp_path / 'pkg' / 'rsia_model' / 'repair' / 'unit.h'
+    header.parent.mkdir(parents=True)
+    workspace = store.WorkspaceRepairs(
+        # (the names the workspace's code declares: namespaces and classes)
+        str(tmp_path / 'workspace.json'), {'gizmo', 'Lens'})
+    store.share_repairs(str(header), {
+        ('type', 'gizmo::Lens'), ('type', 'gizmo::Focus')}, workspace)
+
+    other = tmp_path / 'other' / 'rsia_model' / 'repair' / 'unit.h'
+    other.parent.mkdir(parents=True)
+    store.ensure_repair_header(str(other), 'src/other.cpp')
+    store.seed_repairs(str(other), 'src/other.cpp', set(), workspace)
+    seeded = store.read_repairs(str(other))
+    assert ('type', 'gizmo::Focus') in seeded
+    assert ('type', 'gizmo::Lens') not in seeded
+    # its own package's units are offered everything shareable
+    same = header.parent / 'second.h'
+    store.ensure_repair_header(str(same), 'src/second.cpp')
+    store.seed_repairs(str(same), 'src/second.cpp', set())
+    assert ('type', 'gizmo::Lens') in store.read_repairs(str(same))
+
+
+def test_the_workspace_file_lies_beside_the_packages_outputs(tmp_path):
+    path = Path(workspace_repairs_file(str(tmp_path / 'build' / 'viewer')))
+    assert path.is_relative_to(tmp_path / 'build')
+    assert not path.is_relative_to(tmp_path / 'build' / 'viewer')
