@@ -279,6 +279,44 @@ def read_workspace_wrappers(package_build_base, package_dirs):
     return found
 
 
+def missing_dependency_analyses(package_build_base, dependencies):
+    """The dependencies whose analysis of these sources is not here.
+
+    A package's C++ analysis reads the wrappers of the workspace's other
+    packages from its siblings under the build base
+    (:func:`read_workspace_wrappers`); a dependency with no summary there,
+    or one made from another source tree, offers none, and the calls into
+    its libraries give no facts. (A summary without ``wrappers.json`` is a
+    dependency with no wrappers: nothing is missing.)
+
+    :param dependencies: ``(name, source directory)`` of the workspace's
+      packages the package depends on, whose analysis may offer wrappers
+    :returns: the names of those missing, sorted
+    """
+    build_base = os.path.dirname(os.path.abspath(package_build_base))
+    missing = []
+    for name, path in sorted(dependencies):
+        if name_problem(name):
+            continue
+        try:
+            summary = read_summary(summary_path(os.path.join(build_base, name)))
+        except SummaryError:
+            missing.append(name)
+            continue
+        if os.path.abspath(summary.path) != os.path.abspath(path):
+            missing.append(name)
+    return missing
+
+
+def missing_dependency_message(name):
+    """The diagnostic of a dependency :func:`missing_dependency_analyses` names."""
+    return (f'the dependency {name} has no analysis of its sources in this '
+            'build base: calls into its libraries give no facts here. '
+            'Analyse it in the same run (e.g. with '
+            "--packages-up-to) or merge its results in first ('colcon rsia "
+            "merge'), then analyse this package again")
+
+
 def wrappers_digest(wrappers):
     """A digest of wrapper summaries: the units calling them depend on it."""
     if not wrappers:
