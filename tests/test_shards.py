@@ -8,7 +8,8 @@ perception and navigation (expected.yaml); its packages depend on none of
 each other. test_workspaces/ros2: rsia_ros2_wrapped depends on
 rsia_ros2_common and calls helpers compiled into its library, whose
 summaries it reads from rsia_ros2_common's analysis (the relay's topics
-are in test_workspaces/ros2/expected/rsia_ros2_wrapped.yaml).
+are in test_workspaces/ros2/expected/rsia_ros2_wrapped.yaml). Last, the
+build handler on two plain CMake packages, one depending on the other.
 """
 
 import json
@@ -131,3 +132,44 @@ def test_a_dependency_merged_in_first_gives_the_full_facts(
                 'relay_status'} <= publishers
         assert subscribers == {'cmd_vel_in', 'graph_updates'}
     assert _relay(root, 'stage2') == _relay(root, 'up_to')
+
+
+LIBRARY_CMAKE = """cmake_minimum_required(VERSION 3.10)
+project(liba CXX)
+add_library(a a.cpp)
+install(TARGETS a DESTINATION lib)
+"""
+APP_CMAKE = """cmake_minimum_required(VERSION 3.10)
+project(appb CXX)
+find_package(liba QUIET)
+add_executable(b b.cpp)
+install(TARGETS b DESTINATION bin)
+"""
+
+
+def test_the_build_handler_says_a_dependency_was_not_analysed(tmp_path):
+    # plain CMake packages: appb depends on liba (its find_package)
+    (tmp_path / 'src' / 'liba').mkdir(parents=True)
+    (tmp_path / 'src' / 'liba' / 'CMakeLists.txt').write_text(LIBRARY_CMAKE)
+    (tmp_path / 'src' / 'liba' / 'a.cpp').write_text('int a() { return 1; }\n')
+    (tmp_path / 'src' / 'appb').mkdir(parents=True)
+    (tmp_path / 'src' / 'appb' / 'CMakeLists.txt').write_text(APP_CMAKE)
+    (tmp_path / 'src' / 'appb' / 'b.cpp').write_text('int main() {}\n')
+    handler = ['--event-handlers', 'rsia+',
+               '--cmake-args', '-DCMAKE_EXPORT_COMPILE_COMMANDS=ON']
+
+    def build(package, *args):
+        run_colcon(['build', '--packages-select', package, *args],
+                   cwd=tmp_path, check=True)
+        return json.loads((tmp_path / 'build' / package / 'rsia' /
+                           'summary.json').read_text())['diagnostics'] \
+            if args else None
+
+    build('liba')  # without the analysis
+    assert build('appb', *handler) == [
+        'the dependency liba has no analysis of its sources in this build '
+        'base: calls into its libraries give no facts here. Analyse it in '
+        'the same run (e.g. with --packages-up-to) or merge its results in '
+        "first ('colcon rsia merge'), then analyse this package again"]
+    build('liba', *handler)
+    assert build('appb', *handler) == []
