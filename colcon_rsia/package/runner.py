@@ -283,10 +283,8 @@ def _analyze(*, name, package_type, path, build_base, cmake_args, jobs,
         repair=repair)
     # the wrappers of dependencies analysed elsewhere were not read: say so
     # rather than give other facts than a run that analysed them first
-    summary.diagnostics += [
-        store.missing_dependency_message(missing)
-        for missing in store.missing_dependency_analyses(
-            build_base, cpp_dependencies(dependencies))]
+    summary.diagnostics += store.dependency_problems(
+        build_base, cpp_dependencies(dependencies))
     if has_python:
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,

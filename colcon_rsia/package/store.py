@@ -279,8 +279,8 @@ def read_workspace_wrappers(package_build_base, package_dirs):
     return found
 
 
-def missing_dependency_analyses(package_build_base, dependencies):
-    """The dependencies whose analysis of these sources is not here.
+def dependency_problems(package_build_base, dependencies):
+    """Say which dependencies have no analysis of their sources here.
 
     A package's C++ analysis reads the wrappers of the workspace's other
     packages from its siblings under the build base
@@ -291,30 +291,53 @@ def missing_dependency_analyses(package_build_base, dependencies):
 
     :param dependencies: ``(name, source directory)`` of the workspace's
       packages the package depends on, whose analysis may offer wrappers
-    :returns: the names of those missing, sorted
+    :returns: one diagnostic per dependency missing, by name
     """
     build_base = os.path.dirname(os.path.abspath(package_build_base))
-    missing = []
+    problems = []
     for name, path in sorted(dependencies):
         if name_problem(name):
             continue
-        try:
-            summary = read_summary(summary_path(os.path.join(build_base, name)))
-        except SummaryError:
-            missing.append(name)
+        package_build = os.path.join(build_base, name)
+        if _summary_source(summary_path(package_build)) == \
+                os.path.abspath(path):
             continue
-        if os.path.abspath(summary.path) != os.path.abspath(path):
-            missing.append(name)
-    return missing
+        failure = read_failure(package_build)
+        if failure is not None:
+            problems.append(
+                f'the analysis of the dependency {name} failed ({failure}): '
+                'calls into its libraries give no facts here')
+        else:
+            problems.append(
+                f'the dependency {name} has no analysis of its sources in '
+                'this build base: calls into its libraries give no facts '
+                'here. Analyse it in the same run (e.g. with '
+                "--packages-up-to) or merge its results in first ('colcon "
+                "rsia merge'), then analyse this package again")
+    return problems
 
 
-def missing_dependency_message(name):
-    """The diagnostic of a dependency :func:`missing_dependency_analyses` names."""
-    return (f'the dependency {name} has no analysis of its sources in this '
-            'build base: calls into its libraries give no facts here. '
-            'Analyse it in the same run (e.g. with '
-            "--packages-up-to) or merge its results in first ('colcon rsia "
-            "merge'), then analyse this package again")
+# summary path -> ((modification time, size), its source directory): a
+# package's dependencies are asked about for every package depending on them
+_summary_sources = {}
+
+
+def _summary_source(path):
+    """The source directory a usable summary names, or None."""
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return None
+    key = (stat.st_mtime_ns, stat.st_size)
+    known = _summary_sources.get(path)
+    if known is not None and known[0] == key:
+        return known[1]
+    try:
+        source = os.path.abspath(read_summary(path).path)
+    except SummaryError:
+        source = None
+    _summary_sources[path] = (key, source)
+    return source
 
 
 def wrappers_digest(wrappers):
