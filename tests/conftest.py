@@ -37,9 +37,10 @@ SLOW_MODULES = frozenset({
     'test_ci_recipe', 'test_cmake_configure', 'test_cmake_sandbox',
     'test_colcon_script', 'test_cross_package_wrappers', 'test_faults',
     'test_hardening', 'test_hardening_round2', 'test_hosted',
-    'test_launch_fuzz', 'test_precompiled', 'test_report_page',
-    'test_ros2_analysis', 'test_shared_cache', 'test_system',
-    'test_workers', 'test_workspace_layouts'})
+    'test_launch_fuzz', 'test_merge', 'test_precompiled',
+    'test_report_page', 'test_ros2_analysis', 'test_shards',
+    'test_shared_cache', 'test_system', 'test_workers',
+    'test_workspace_layouts'})
 
 
 def pytest_collection_modifyitems(items):

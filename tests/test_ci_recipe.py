@@ -102,3 +102,71 @@ def test_the_report_is_uploaded_from_where_it_is_written():
     [report] = [s for s in steps if 'colcon rsia report' in s.get('run', '')]
     assert f"--output {upload['with']['path']}" in report['run']
     assert upload.get('if') == report.get('if')
+
+
+SHARDS_WORKFLOW = REPO / 'docs' / 'ci' / 'rate-impact-shards.yml'
+
+
+def test_the_sharded_workflow_on_a_pull_request(pull_request, tmp_path):
+    """The shard jobs one after another in the same checkout, then the last.
+
+    The artifacts are the shards' tar files, put where the download step
+    puts them (`shards/<artifact name>/`); each shard's `build` is removed
+    before the next, as a fresh runner has none.
+    """
+    # a fresh clone: no build base of another test
+    repo = tmp_path / 'repo'
+    shutil.copytree(pull_request, repo, ignore=shutil.ignore_patterns(
+        'build', 'install', 'log', 'rsia-report'))
+    workflow = yaml.safe_load(SHARDS_WORKFLOW.read_text())
+    analyse, rate_impact = workflow['jobs']['analyse'], \
+        workflow['jobs']['rate-impact']
+    assert rate_impact['needs'] == 'analyse'
+    env = dict(
+        os.environ, **workflow['env'],
+        GITHUB_BASE_REF='main',
+        GITHUB_STEP_SUMMARY=str(tmp_path / 'step_summary.md'),
+        COLCON_HOME=str(tmp_path / 'colcon_home'),
+        PATH=f'{Path(sys.executable).parent}{os.pathsep}{os.environ["PATH"]}')
+    env['RSIA_FAIL_ON'] = 'sysbot_navigation/planner'
+    # this workspace's shards: sysbot_perception in both
+    shards = {'sensing': 'sysbot_drivers sysbot_perception',
+              'navigation': 'sysbot_navigation sysbot_perception'}
+    [upload] = [s for s in analyse['steps']
+                if s.get('uses', '').startswith('actions/upload-artifact')]
+    artifact = upload['with']['path']
+    for name, packages in shards.items():
+        for step in analyse['steps']:
+            if 'run' not in step or 'Install' in step['name']:
+                continue
+            step_env = dict(env, **{
+                k: v.replace('${{ matrix.shard.packages }}', packages)
+                for k, v in step.get('env', {}).items()})
+            result = _run_step(step, repo, step_env)
+            assert result.returncode == 0, (step['name'], result.stdout,
+                                            result.stderr)
+        shard = repo / 'shards' / f'rsia-shard-{name}'
+        shard.mkdir(parents=True)
+        shutil.move(str(repo / artifact), str(shard / artifact))
+        shutil.rmtree(repo / 'build')
+    ran = {}
+    for step in rate_impact['steps']:
+        if 'colcon rsia' in step.get('run', ''):
+            ran[step['name']] = _run_step(step, repo, env)
+    merge, impact, report = ran.values()
+    assert merge.returncode == 0, merge.stdout + merge.stderr
+    assert 'rsia: merged 3 packages' in merge.stdout
+    assert impact.returncode == 2, impact.stdout + impact.stderr
+    assert '  sysbot_navigation/planner\n  sysbot_perception/scan_filter\n' \
+        in impact.stdout
+    assert report.returncode == 0, report.stderr
+    # only the analysis results travelled: no fact cache, no stand-ins
+    merged = repo / 'build'
+    files = sorted(str(p.relative_to(merged)) for p in merged.rglob('*')
+                   if p.is_file())
+    assert [f for f in files if f.endswith('/rsia/summary.json')] == [
+        f'{package}/rsia/summary.json' for package in (
+            'sysbot_drivers', 'sysbot_navigation', 'sysbot_perception')]
+    assert all(f.split('/')[1:] in (['rsia', 'summary.json'],
+                                    ['rsia', 'wrappers.json'])
+               for f in files), files

@@ -50,7 +50,7 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._pending = []
         self._outcomes = []
         self._started = None
-        self._package_dirs = None
+        self._packages = None
         self._interrupted = False
         # a bad environment variable: said once, nothing analysed
         self._refused = False
@@ -99,7 +99,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             analyze, name=pkg.name, package_type=pkg.type,
             path=str(pkg.path), build_base=args.build_base,
             cmake_args=getattr(args, 'cmake_args', None),
-            workspace_package_dirs=self._workspace_package_dirs(pkg)))
+            workspace_package_dirs=self._workspace_package_dirs(pkg),
+            dependencies=self._dependencies(job)))
 
     def _interrupt(self):
         # Ctrl-C: colcon stops its jobs; analyse nothing more, and end the
@@ -111,18 +112,29 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         for future in self._pending:
             future.cancel()  # those not started yet
 
-    def _workspace_package_dirs(self, pkg):
+    def _workspace_packages(self):
         # discovered once, on the first package analysed, with the build's
         # own arguments
-        from colcon_rsia.package.runner import workspace_package_dirs
-        if self._package_dirs is None:
+        from colcon_rsia.package.runner import workspace_packages
+        if self._packages is None:
             try:
-                self._package_dirs = workspace_package_dirs(self.context.args)
+                self._packages = workspace_packages(self.context.args)
             except Exception:  # noqa: B902
                 # discovery has already succeeded once for this build; if
                 # it fails now, each package still has its own headers
-                self._package_dirs = []
-        return sorted(set(self._package_dirs) | {os.path.abspath(str(pkg.path))})
+                self._packages = {}
+        return self._packages
+
+    def _workspace_package_dirs(self, pkg):
+        return sorted({path for _, path in self._workspace_packages().values()}
+                      | {os.path.abspath(str(pkg.path))})
+
+    def _dependencies(self, job):
+        # the workspace's packages the job's package depends on
+        # (recursively), as colcon ordered the build by them
+        packages = self._workspace_packages()
+        names = getattr(job.task_context, 'dependencies', None) or {}
+        return [(name, *packages[name]) for name in names if name in packages]
 
     @classmethod
     def _lower_priority(cls):

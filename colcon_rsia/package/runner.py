@@ -23,6 +23,7 @@ from colcon_rsia.package import coverage
 from colcon_rsia.package.analysis import AnalysisError
 from colcon_rsia.package.analysis import analyze_package
 from colcon_rsia.package.analysis import REPAIR_WHEN_IT_PAYS
+from colcon_rsia.package.dependencies import dependency_problems
 from colcon_rsia.package.nodes import find_executables
 from colcon_rsia.package.problems import problem_to_text
 from colcon_rsia.package.problems import split_problem
@@ -129,8 +130,8 @@ def default_header_mode():
         DEFAULT_HEADER_MODE
 
 
-def workspace_package_dirs(args):
-    """Source directories of every package colcon discovers with `args`.
+def workspace_packages(args):
+    """``{name: (package type, source directory)}`` colcon discovers with `args`.
 
     Selected or not: a package may include another's headers. Their
     directories, not the base paths, are the workspace's sources: the
@@ -142,20 +143,26 @@ def workspace_package_dirs(args):
         get_package_identification_extensions
     descriptors = discover_packages(
         args, get_package_identification_extensions())
-    return sorted({os.path.abspath(str(d.path)) for d in descriptors})
+    return {d.name: (d.type, os.path.abspath(str(d.path)))
+            for d in descriptors}
 
 
 def analyze(*, name, package_type, path, build_base, cmake_args=None,
             jobs=None, header_mode=None, workspace_package_dirs=(),
-            without_build=False, repair=REPAIR_WHEN_IT_PAYS):
+            without_build=False, repair=REPAIR_WHEN_IT_PAYS,
+            dependencies=()):
     """Analyse one package; return an :class:`Outcome`, never raise.
 
     :param header_mode: 'model' or 'exact'; None: :func:`default_header_mode`
     :param repair: when the model mode repairs a unit (see analyze_package)
     :param workspace_package_dirs: the source directories of all the
-      workspace's packages (see :func:`workspace_package_dirs`)
+      workspace's packages (see :func:`workspace_packages`)
     :param bool without_build: analyse a package that has no compile
       database from its sources (else: warn how to get the database)
+    :param dependencies: ``(name, package type, source directory)`` of the
+      workspace's packages this one depends on (recursively): a C++
+      package's analysis reads their wrappers, and says which have no
+      analysis in the build base (:func:`cpp_dependencies`)
     """
     problem = build_paths.name_problem(name)
     if problem:
@@ -166,7 +173,8 @@ def analyze(*, name, package_type, path, build_base, cmake_args=None,
             build_base=build_base, cmake_args=cmake_args, jobs=jobs,
             header_mode=header_mode,
             workspace_package_dirs=workspace_package_dirs,
-            without_build=without_build, repair=repair)
+            without_build=without_build, repair=repair,
+            dependencies=dependencies)
     except Interrupted:
         # nothing to say, nothing written: the build says it was interrupted
         return Outcome(display(name), skipped=True)
@@ -217,6 +225,17 @@ def build_base_problem(build_base):
     return None
 
 
+def cpp_dependencies(dependencies):
+    """``(name, path)`` of the dependencies that may offer wrappers.
+
+    Only a C++ package's analysis writes wrappers (``wrappers.json``).
+
+    :param dependencies: ``(name, package type, source directory)``
+    """
+    return [(name, path) for name, package_type, path in dependencies
+            if PACKAGE_TYPE_ANALYSERS.get(package_type) in _CPP_ANALYSERS]
+
+
 def _analyze(*, package_type, **request):
     """Analyse a package with the analyser of its type (or skip it)."""
     analyser = PACKAGE_TYPE_ANALYSERS.get(package_type)
@@ -246,7 +265,7 @@ def _analyze_cpp_and_scripts(**request):
 
 
 def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
-                 workspace_package_dirs, without_build, repair,
+                 workspace_package_dirs, without_build, repair, dependencies,
                  scripts=False):
     """A package whose build produces a compile database.
 
@@ -281,6 +300,10 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         nothing_compiled=exported and not has_database,
         header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
         repair=repair)
+    # the wrappers of dependencies analysed elsewhere were not read: say so
+    # rather than give other facts than a run that analysed them first
+    summary.diagnostics += dependency_problems(
+        build_base, cpp_dependencies(dependencies))
     if has_python:
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,
@@ -308,3 +331,5 @@ PACKAGE_TYPE_ANALYSERS = {
     'ros.ament_cmake': _analyze_cpp_and_scripts,
     'ros.ament_python': _analyze_python,
 }
+# the analysers that write wrappers (``wrappers.json``)
+_CPP_ANALYSERS = (_analyze_cpp, _analyze_cpp_and_scripts)

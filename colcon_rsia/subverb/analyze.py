@@ -84,6 +84,7 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
         decorators = [d for d in packages if d.selected]
         package_dirs = sorted({
             os.path.abspath(str(d.descriptor.path)) for d in packages})
+        by_name = {d.descriptor.name: d.descriptor for d in packages}
         build_base = os.path.abspath(args.build_base)
         started = time.monotonic()
         analysed = 0
@@ -101,7 +102,12 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
                     build_base=os.path.join(build_base, pkg.name),
                     jobs=args.jobs, header_mode=args.header_mode,
                     repair=args.repair,
-                    workspace_package_dirs=package_dirs, without_build=True)
+                    workspace_package_dirs=package_dirs, without_build=True,
+                    dependencies=[
+                        (n, by_name[n].type,
+                         os.path.abspath(str(by_name[n].path)))
+                        for n in decorator.recursive_dependencies or ()
+                        if n in by_name])
                 print(outcome.line(), flush=True)
                 analysed += outcome.summary is not None
                 if outcome.summary is not None:
