@@ -141,6 +141,8 @@ def _job(tmp_path, name='pkg', package_type='ros.catkin', cmake_args=None):
     job.task_context.pkg.path = str(tmp_path / 'src' / name)
     job.task_context.args.build_base = str(tmp_path / 'build' / name)
     job.task_context.args.cmake_args = cmake_args
+    # colcon's TaskContext: the package's dependencies, by name
+    job.task_context.dependencies = {}
     return job
 
 
