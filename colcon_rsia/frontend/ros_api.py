@@ -32,6 +32,9 @@ REGISTER_CALLBACK = 'register_callback'      # message_filters callbacks
 ACTION_SERVER = 'action_server'
 ACTION_CLIENT = 'action_client'
 NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
+# returns its name argument resolved as the node (or handle) resolves it
+# (``nh.resolveName("out")``): as a topic, that name in that namespace
+NAME_RESOLVE = 'name_resolve'
 PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
 PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
 PARAM_READ = 'param_read'          # reads a parameter into a variable
@@ -202,6 +205,12 @@ CALLS = {
     'ros::service::createClient': Api(CLIENT, name_arg=0),
     'ros::init': Api(NODE_NAME, name_arg=2),
     NH + 'NodeHandle': Api(NODE_HANDLE),
+    NH + 'resolveName': Api(NAME_RESOLVE, name_arg=0),
+    # expand_topic_or_service_name(name, node_name, namespace_,
+    # is_service): the name in the namespace passed (the node's own)
+    'rclcpp::expand_topic_or_service_name': Api(NAME_RESOLVE, name_arg=0),
+    'rclcpp::node_interfaces::NodeTopicsInterface::resolve_topic_name': Api(
+        NAME_RESOLVE, name_arg=0),
     NH + 'param': Api(PARAM_READ, name_arg=0),
     NH + 'getParam': Api(PARAM_READ, name_arg=0),
     NH + 'getParamCached': Api(PARAM_READ, name_arg=0),
@@ -451,6 +460,15 @@ FORWARDING_FACTORIES = frozenset({
 })
 FORWARDING_FACTORY_NAMES = frozenset(
     name.rsplit('::', 1)[1] for name in FORWARDING_FACTORIES)
+
+# methods returning the topic name of the publisher or subscription they
+# are called on: a string set to one holds the name that endpoint was made
+# with (as the middleware resolved it)
+TOPIC_NAME_GETTERS = frozenset({
+    'ros::Publisher::getTopic', 'ros::Subscriber::getTopic',
+    'rclcpp::PublisherBase::get_topic_name',
+    'rclcpp::SubscriptionBase::get_topic_name',
+})
 
 # functions that are roots of a node by their name alone
 MAIN_FUNCTION = 'main'

@@ -331,6 +331,8 @@ def topic_param(facts, fact):
     else:
         read = facts.param_reads.get(marker) if marker else None
         if read is None:
+            read = _read_passed(facts, marker)
+        if read is None:
             return None
         name, default = read.name, read.default
         namespace = resolve_namespace(facts, read.nh)
@@ -339,6 +341,23 @@ def topic_param(facts, fact):
     prefix, suffix = getattr(fact, 'topic_affixes', None) or ('', '')
     return model.TopicParam(name=name, default=default, namespace=namespace,
                             prefix=prefix, suffix=suffix)
+
+
+def _read_passed(facts, parameter):
+    """The parameter read whose variable every caller passes, or None.
+
+    ``Saver(node, map_name_)`` where ``map_name_ = declare_parameter(
+    "map_name", ...)`` and the saver's topic is its ``map_name``
+    parameter (held in a member set only to it, frontend/cpp/strings.py).
+    """
+    if not parameter or facts.string_arguments.get(parameter):
+        return None
+    passed = facts.aliases.get(parameter, set())
+    # (a parameter passing on its own callers' values is no value itself)
+    values = {h for h in passed if h not in facts.aliases}
+    if len(values) != 1:
+        return None
+    return facts.param_reads.get(next(iter(values)))
 
 
 def handles_of(facts, handle):

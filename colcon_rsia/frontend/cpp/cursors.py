@@ -136,6 +136,26 @@ def first_handle(cursor):
     return None
 
 
+def handle_marker(obj):
+    """The NodeHandle an object expression is: USR or namespace marker.
+
+    ``getPrivateNodeHandle()`` is '~', ``getNodeHandle()`` '' (the node's
+    namespace), a variable its USR (its namespace is resolved later);
+    None when the expression names no handle.
+    """
+    if obj is None:
+        return None
+    for current in [obj] + list(walk_preorder(obj)):
+        if current.kind == CK.CALL_EXPR and current.referenced is not None:
+            api = ros_api.lookup_call(qualified_name(current.referenced))
+            if api is not None and api.role == ros_api.PRIVATE_HANDLE:
+                return '~'
+            if api is not None and api.role == ros_api.PUBLIC_HANDLE:
+                return ''
+    handle = first_handle(obj)
+    return handle.get_usr() if handle is not None else None
+
+
 # a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace
 _NODE_HANDLE_TYPE = re.compile(r'^(?:const )?ros::NodeHandle(?: ?[&*]+)?$')
 

@@ -27,6 +27,7 @@ from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
+from colcon_rsia.frontend.cpp.cursors import handle_marker
 from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
 from colcon_rsia.frontend.cpp.cursors import is_node_handle
@@ -77,6 +78,8 @@ class RosRoles:
             ros_api.NODE_NAME: self._on_node_name,
             ros_api.SUB_NODE: self._on_sub_node,
             ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
+            # the value is read where it is stored (strings.py)
+            ros_api.NAME_RESOLVE: self._on_name_resolve,
             # gzserver's events, nodelets loaded in code
             **hosted.HostedRoles(self.walker).handlers(),
         }
@@ -107,17 +110,7 @@ class RosRoles:
         if api is not None and api.nh_arg is not None and \
                 api.nh_arg < len(arguments):
             obj = arguments[api.nh_arg]
-        if obj is None:
-            return None
-        for current in [obj] + list(walk_preorder(obj)):
-            if current.kind == CK.CALL_EXPR and current.referenced is not None:
-                api = ros_api.lookup_call(qualified_name(current.referenced))
-                if api is not None and api.role == ros_api.PRIVATE_HANDLE:
-                    return '~'
-                if api is not None and api.role == ros_api.PUBLIC_HANDLE:
-                    return ''
-        handle = first_handle(obj)
-        return handle.get_usr() if handle is not None else None
+        return handle_marker(obj)
 
     # --- roles (named after ros_api roles) ----------------------------------
 
@@ -368,6 +361,13 @@ class RosRoles:
             if default_argument is not None and default is None else None
         if parts and len(parts) == 1 and parts[0][0] == 'variable':
             self.walker.string_variables.default_from(read, parts[0][1])
+
+    def _on_name_resolve(self, cursor, ctx, stack, api, name, arguments):
+        """``nh.resolveName("out")``: a value, read where it is stored.
+
+        The call makes no fact; the string variable set to it takes the
+        name in the namespace of the handle (StringVariables.assignment).
+        """
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
         node_name, literal = self.walker.topic(

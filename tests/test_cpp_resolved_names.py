@@ -1,0 +1,245 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""C++ topic names the running node resolves from what the code shows.
+
+A parameter's default held in a member passed on to a helper class, a
+member's default initialiser overwritten only by the topic name of the
+publisher it made, and names resolved by the ROS API (``resolveName``,
+``expand_topic_or_service_name``). Expectations written by hand from the
+code below: the node runs once, unnamespaced, under its default name.
+"""
+
+from colcon_rsia.system.graph import build_graph
+from conftest import analyse_source
+
+PASSED_TO_A_HELPER = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+#include <string>
+
+class Saver
+{
+public:
+  Saver(rclcpp::Node::SharedPtr node, const std::string & map_name)
+  : node_(node), map_name_(map_name)
+  {
+    sub_ = node_->create_subscription<std_msgs::msg::String>(
+      map_name_, 1, [](std_msgs::msg::String::ConstSharedPtr) {});
+  }
+
+private:
+  rclcpp::Node::SharedPtr node_;
+  std::string map_name_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+
+class Mapper : public rclcpp::Node
+{
+public:
+  Mapper() : Node("mapper") {}
+
+  void setup()
+  {
+    map_name_ = std::string("/map");
+    map_name_ = this->declare_parameter("map_name", map_name_);
+    map_pub_ = create_publisher<std_msgs::msg::String>(map_name_, 1);
+    meta_pub_ = create_publisher<std_msgs::msg::String>(
+      map_name_ + "_metadata", 1);
+    // by const reference: the helper cannot change map_name_
+    saver_ = std::make_unique<Saver>(shared_from_this(), map_name_);
+  }
+
+private:
+  std::string map_name_;
+  std::unique_ptr<Saver> saver_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr map_pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr meta_pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<Mapper>();
+  node->setup();
+  rclcpp::spin(node);
+}
+"""
+
+
+def _resolved(summary):
+    system = build_graph([summary])
+    [instance] = system.instances.values()
+    return {e['publisher'].location: e['resolved']
+            for e in instance.publishers}, \
+        {e['subscriber'].location: e['resolved']
+         for e in instance.subscribers}
+
+
+def test_a_parameter_default_passed_to_a_helper_names_its_topics(tmp_path):
+    summary = analyse_source(tmp_path, 'mapper', PASSED_TO_A_HELPER)
+    [node] = summary.nodes
+    params = {e.location: (e.topic_param.name, e.topic_param.default,
+                           e.topic_param.suffix)
+              for e in node.publishers + node.subscribers if e.topic_param}
+    # map_name_ = "/map" then declare_parameter("map_name", map_name_);
+    # handing map_name_ to Saver by const reference sets nothing
+    assert params['src/mapper.cpp:32'] == ('map_name', '/map', '')
+    assert params['src/mapper.cpp:33'] == ('map_name', '/map', '_metadata')
+    # Saver's map_name_ is its map_name parameter, which Mapper gives
+    assert params['src/mapper.cpp:13'] == ('map_name', '/map', '')
+    publishers, subscribers = _resolved(summary)
+    assert publishers == {'src/mapper.cpp:32': '/map',
+                          'src/mapper.cpp:33': '/map_metadata'}
+    assert subscribers == {'src/mapper.cpp:13': '/map'}
+
+
+MEMBER_DEFAULTS = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <nav_msgs/msg/odometry.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+#include <string>
+
+class PoseReporterPrivate
+{
+public:
+  void OnUpdate() { pub_->publish(nav_msgs::msg::Odometry()); }
+
+  rclcpp::Node::SharedPtr ros_node_;
+  rclcpp::Publisher<nav_msgs::msg::Odometry>::SharedPtr pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr status_pub_;
+  std::string topic_name_{"odom"};
+  std::string status_name_{"status"};
+};
+
+class PoseReporter
+{
+public:
+  PoseReporter() : impl_(std::make_unique<PoseReporterPrivate>()) {}
+
+  void Load(rclcpp::Node::SharedPtr node)
+  {
+    impl_->ros_node_ = node;
+    impl_->pub_ = impl_->ros_node_->create_publisher<nav_msgs::msg::Odometry>(
+      impl_->topic_name_, 1);
+    // the name the publisher was made with, as the middleware resolved it
+    impl_->topic_name_ = impl_->pub_->get_topic_name();
+    impl_->status_pub_ = node->create_publisher<std_msgs::msg::String>(
+      impl_->status_name_, 1);
+    // the name of another publisher: no longer the member's default
+    impl_->status_name_ = impl_->pub_->get_topic_name();
+  }
+
+  std::unique_ptr<PoseReporterPrivate> impl_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = rclcpp::Node::make_shared("pose_reporter");
+  PoseReporter reporter;
+  reporter.Load(node);
+  rclcpp::TimerBase::SharedPtr timer = node->create_wall_timer(
+    std::chrono::milliseconds(100),
+    [&reporter]() { reporter.impl_->OnUpdate(); });
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_a_member_default_overwritten_by_its_own_topic_name(tmp_path):
+    summary = analyse_source(tmp_path, 'reporter', MEMBER_DEFAULTS)
+    publishers, _ = _resolved(summary)
+    # topic_name_{"odom"} is set again only to the name of the publisher
+    # made with it; status_name_ to the name of another one: unknown
+    assert publishers == {'src/reporter.cpp:28': '/odom',
+                          'src/reporter.cpp:32': None}
+
+
+EXPANDED_NAMES = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+#include <string>
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = rclcpp::Node::make_shared("relay");
+  std::string in_topic = rclcpp::expand_topic_or_service_name(
+    "in", node->get_name(), node->get_namespace());
+  std::string out_topic = rclcpp::expand_topic_or_service_name(
+    "out", node->get_name(), node->get_namespace());
+  std::string echo_topic =
+    node->get_node_topics_interface()->resolve_topic_name("~/echo");
+  auto pub = node->create_publisher<std_msgs::msg::String>(out_topic, 1);
+  auto echo = node->create_publisher<std_msgs::msg::String>(echo_topic, 1);
+  auto sub = node->create_subscription<std_msgs::msg::String>(
+    in_topic, 1,
+    [&pub](std_msgs::msg::String::ConstSharedPtr msg) { pub->publish(*msg); });
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_names_expanded_by_rclcpp_are_the_names_expanded(tmp_path):
+    summary = analyse_source(tmp_path, 'relay', EXPANDED_NAMES)
+    publishers, subscribers = _resolved(summary)
+    assert publishers == {'src/relay.cpp:17': '/out',
+                          'src/relay.cpp:18': '/relay/echo'}
+    assert subscribers == {'src/relay.cpp:19': '/in'}
+
+
+RESOLVED_BY_HANDLES = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+class Republisher
+{
+public:
+  Republisher() : cloud_topic_("cloud"), pnh_("~")
+  {
+    // resolved in place: still the name "cloud" of nh_
+    cloud_topic_ = nh_.resolveName(cloud_topic_);
+  }
+
+  void start()
+  {
+    cloud_pub_ = nh_.advertise<std_msgs::String>(cloud_topic_, 1);
+  }
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle pnh_;
+  std::string cloud_topic_;
+  ros::Publisher cloud_pub_;
+};
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "republish");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  std::string in_topic = nh.resolveName("in");
+  std::string out_topic = nh.resolveName("out");
+  // resolved by the private handle, used by the public one: private
+  std::string debug_topic = pnh.resolveName("debug");
+  ros::Publisher pub = nh.advertise<std_msgs::String>(out_topic, 1);
+  ros::Publisher debug = nh.advertise<std_msgs::String>(debug_topic, 1);
+  ros::Subscriber sub = nh.subscribe<std_msgs::String>(
+      in_topic, 1, [&pub](const std_msgs::String::ConstPtr& m) { pub.publish(m); });
+  Republisher republisher;
+  republisher.start();
+  ros::spin();
+}
+"""
+
+
+def test_names_a_nodehandle_resolves_are_names_of_that_handle(tmp_path):
+    summary = analyse_source(tmp_path, 'republish', RESOLVED_BY_HANDLES)
+    publishers, subscribers = _resolved(summary)
+    assert publishers == {'src/republish.cpp:17': '/cloud',
+                          'src/republish.cpp:35': '/out',
+                          'src/republish.cpp:36': '/republish/debug'}
+    assert subscribers == {'src/republish.cpp:37': '/in'}
