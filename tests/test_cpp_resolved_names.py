@@ -243,3 +243,102 @@ def test_names_a_nodehandle_resolves_are_names_of_that_handle(tmp_path):
                           'src/republish.cpp:35': '/out',
                           'src/republish.cpp:36': '/republish/debug'}
     assert subscribers == {'src/republish.cpp:37': '/in'}
+
+
+NAMED_AFTER_THE_NODE = r"""
+#include <ros/ros.h>
+#include <actionlib/server/simple_action_server.h>
+#include <actionlib_tutorials/FibonacciAction.h>
+#include <std_msgs/String.h>
+#include <string>
+
+class FibonacciServer
+{
+public:
+  FibonacciServer(std::string name)
+  : as_(nh_, name, false), status_name_(name)
+  {
+    as_.registerGoalCallback([this]() { onGoal(); });
+    as_.start();
+    status_pub_ = nh_.advertise<std_msgs::String>(status_name_ + "/status", 1);
+    // "/fibonacci" + "_count": no ROS name says that
+    count_pub_ = nh_.advertise<std_msgs::String>(status_name_ + "_count", 1);
+  }
+
+  void onGoal()
+  {
+    as_.acceptNewGoal();
+    status_pub_.publish(std_msgs::String());
+  }
+
+  ros::NodeHandle nh_;
+  actionlib::SimpleActionServer<actionlib_tutorials::FibonacciAction> as_;
+  std::string status_name_;
+  ros::Publisher status_pub_;
+  ros::Publisher count_pub_;
+};
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "fibonacci");
+  FibonacciServer server(ros::this_node::getName());
+  ros::spin();
+}
+"""
+
+
+def test_the_node_name_names_what_is_under_it(tmp_path):
+    summary = analyse_source(tmp_path, 'fibonacci', NAMED_AFTER_THE_NODE)
+    publishers, _ = _resolved(summary)
+    [instance] = build_graph([summary]).instances.values()
+    # ros::this_node::getName() is /fibonacci: the action's goal and
+    # cancel topics, and status_name_ + "/status", are under it
+    assert sorted((e['subscriber'].location, e['resolved'])
+                  for e in instance.subscribers) == [
+        ('src/fibonacci.cpp:12', '/fibonacci/cancel'),
+        ('src/fibonacci.cpp:12', '/fibonacci/goal')]
+    assert publishers == {'src/fibonacci.cpp:16': '/fibonacci/status',
+                          'src/fibonacci.cpp:18': None}
+
+
+SET_BY_A_HELPER = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <string>
+
+void withPrefix(std::string & name, const std::string & prefix)
+{
+  name = prefix + name;
+}
+
+class Mapper : public rclcpp::Node
+{
+public:
+  Mapper(const std::string & prefix) : Node("mapper")
+  {
+    map_name_ = std::string("/map");
+    map_name_ = this->declare_parameter("map_name", map_name_);
+    // by non-const reference: the helper may change map_name_
+    withPrefix(map_name_, prefix);
+    map_pub_ = create_publisher<std_msgs::msg::String>(map_name_, 1);
+  }
+
+private:
+  std::string map_name_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr map_pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Mapper>(argv[1]));
+}
+"""
+
+
+def test_a_variable_a_helper_may_set_keeps_no_default(tmp_path):
+    summary = analyse_source(tmp_path, 'mapper', SET_BY_A_HELPER)
+    [publisher] = summary.nodes[0].publishers
+    assert publisher.topic_param is None or \
+        publisher.topic_param.default is None
+    assert _resolved(summary)[0] == {'src/mapper.cpp:20': None}

@@ -35,6 +35,9 @@ NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
 # returns its name argument resolved as the node (or handle) resolves it
 # (``nh.resolveName("out")``): as a topic, that name in that namespace
 NAME_RESOLVE = 'name_resolve'
+# returns the node's fully qualified name (``ros::this_node::getName()``):
+# as a name, the node's private namespace ``~``
+NODE_FQN = 'node_fqn'
 PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
 PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
 PARAM_READ = 'param_read'          # reads a parameter into a variable
@@ -211,6 +214,11 @@ CALLS = {
     'rclcpp::expand_topic_or_service_name': Api(NAME_RESOLVE, name_arg=0),
     'rclcpp::node_interfaces::NodeTopicsInterface::resolve_topic_name': Api(
         NAME_RESOLVE, name_arg=0),
+    'ros::this_node::getName': Api(NODE_FQN),
+    'rclcpp::Node::get_fully_qualified_name': Api(NODE_FQN),
+    'rclcpp_lifecycle::LifecycleNode::get_fully_qualified_name': Api(NODE_FQN),
+    'rclcpp::node_interfaces::NodeBaseInterface::get_fully_qualified_name':
+        Api(NODE_FQN),
     NH + 'param': Api(PARAM_READ, name_arg=0),
     NH + 'getParam': Api(PARAM_READ, name_arg=0),
     NH + 'getParamCached': Api(PARAM_READ, name_arg=0),
@@ -523,6 +531,16 @@ def methods_named(method):
     """The qualified APIs of the table whose method is called `method`."""
     return [name for name in CALLS if name.rsplit('::', 1)[-1] == method
             and name.count('::') >= 2]
+
+
+def joins_after_node_name(value, rest):
+    """Whether `rest` may follow `value` in a name joined by the code.
+
+    A string holding the node's own name (``~``, role NODE_FQN) makes
+    ``/ns/node`` + ``_x``: no ROS name says that (``~_x`` is
+    ``/ns/node/_x``); only ``/x`` or nothing may follow.
+    """
+    return value != '~' or not rest or rest.startswith('/')
 
 
 def lookup_call(qualified_name):

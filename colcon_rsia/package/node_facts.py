@@ -17,6 +17,7 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import model
+from colcon_rsia.frontend import ros_api
 
 
 @dataclass
@@ -285,11 +286,15 @@ def _named_by_callers(endpoints, facts):
     named = []
     for endpoint in endpoints:
         values = facts.string_arguments.get(endpoint.topic_handle) \
-            if not endpoint.topic_is_literal and endpoint.topic_handle and \
-            not endpoint.topic_affixes else None
-        if values is not None and len(values) == 1:
-            endpoint = replace(endpoint, topic=next(iter(values)),
-                               topic_is_literal=True, topic_handle=None)
+            if not endpoint.topic_is_literal and endpoint.topic_handle \
+            else None
+        prefix, suffix = endpoint.topic_affixes or ('', '')
+        if values is not None and len(values) == 1 and \
+                ros_api.joins_after_node_name(next(iter(values)), suffix):
+            # (joined with what the code adds: `name + "/goal"`)
+            endpoint = replace(
+                endpoint, topic=prefix + next(iter(values)) + suffix,
+                topic_is_literal=True, topic_handle=None, topic_affixes=None)
         named.append(endpoint)
     return named
 

@@ -80,6 +80,7 @@ class RosRoles:
             ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
             # the value is read where it is stored (strings.py)
             ros_api.NAME_RESOLVE: self._on_name_resolve,
+            ros_api.NODE_FQN: self._on_name_resolve,
             # gzserver's events, nodelets loaded in code
             **hosted.HostedRoles(self.walker).handlers(),
         }
@@ -363,10 +364,12 @@ class RosRoles:
             self.walker.string_variables.default_from(read, parts[0][1])
 
     def _on_name_resolve(self, cursor, ctx, stack, api, name, arguments):
-        """``nh.resolveName("out")``: a value, read where it is stored.
+        """``nh.resolveName("out")``: a value, read where it is used.
 
         The call makes no fact; the string variable set to it takes the
         name in the namespace of the handle (StringVariables.assignment).
+        So does ``ros::this_node::getName()``: the name ``~`` (walker.topic,
+        strings.string_parts).
         """
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
@@ -515,6 +518,10 @@ class RosRoles:
         action_type = first_template_argument(self._object_type(
             cursor, name)) or ''
         action_type = re.sub(r'_<.*', '', action_type)
+        # a name held in a variable (a parameter, what the callers pass):
+        # the inputs are that name joined with their own
+        handle, affixes = self._topic_handle(arguments, api, literal)
+        prefix, rest = affixes or ('', '')
         for suffix in api.action_inputs:
             msg_type = f'{action_type}{suffix.capitalize()}' \
                 if action_type.endswith('Action') and suffix == 'goal' \
@@ -527,7 +534,10 @@ class RosRoles:
                 # (cancel runs the preempt callback, registered apart)
                 callback=callbacks[0] if callbacks and suffix == 'goal'
                 else None,
-                location=self.walker.location(cursor), nh=nh))
+                location=self.walker.location(cursor), nh=nh,
+                topic_handle=handle,
+                topic_affixes=[prefix, f'{rest}/{suffix}'] if handle
+                else None))
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))

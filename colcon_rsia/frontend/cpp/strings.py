@@ -184,6 +184,10 @@ class StringVariables:
             values = [text if kind == 'literal' else
                       value(text) if self._marker(text) is None else None
                       for kind, text in parts]
+            if any(kind == 'variable' and not ros_api.joins_after_node_name(
+                    values[i], ''.join(v or '' for v in values[i + 1:]))
+                   for i, (kind, _) in enumerate(parts)):
+                continue
             if None not in values:
                 fact.topic = ''.join(values)
                 fact.topic_is_literal = True
@@ -307,6 +311,19 @@ def _resolving_marker(call, api):
     if not qualified_name(call.referenced).startswith(_ROS1_HANDLE):
         return ''  # a free function or a ROS 2 interface: the node's
     return handle_marker(call_object(call))
+
+
+def is_node_fqn(expression):
+    """Whether an expression is the node's fully qualified name.
+
+    ``ros::this_node::getName()``, ``node->get_fully_qualified_name()``:
+    as a name, the node's private namespace ``~``.
+    """
+    call = _calls_in(expression)
+    if call is None:
+        return False
+    api = ros_api.lookup_call(qualified_name(call.referenced))
+    return api is not None and api.role == ros_api.NODE_FQN
 
 
 def _echoed_endpoint(expression):
