@@ -342,3 +342,49 @@ def test_a_variable_a_helper_may_set_keeps_no_default(tmp_path):
     assert publisher.topic_param is None or \
         publisher.topic_param.default is None
     assert _resolved(summary)[0] == {'src/mapper.cpp:20': None}
+
+
+PARAMETER_EVENTS = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+
+class Tuner : public rclcpp::Node
+{
+public:
+  Tuner() : Node("tuner")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("changes", 1);
+    client_ = std::make_shared<rclcpp::AsyncParametersClient>(this);
+    auto on_event =
+      [this](const rcl_interfaces::msg::ParameterEvent::SharedPtr) {
+        pub_->publish(std_msgs::msg::String());
+      };
+    events_ = client_->on_parameter_event(on_event);
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::AsyncParametersClient::SharedPtr client_;
+  rclcpp::Subscription<rcl_interfaces::msg::ParameterEvent>::SharedPtr events_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Tuner>());
+}
+"""
+
+
+def test_a_parameter_client_subscribes_to_parameter_events(tmp_path):
+    summary = analyse_source(tmp_path, 'tuner', PARAMETER_EVENTS)
+    [node] = summary.nodes
+    [subscriber] = node.subscribers
+    assert (subscriber.topic, subscriber.location) == (
+        '/parameter_events', 'src/tuner.cpp:17')
+    assert subscriber.msg_type == 'rcl_interfaces::msg::ParameterEvent'
+    # the lambda the variable holds runs per event, and publishes
+    assert subscriber.callback == 'lambda@src/tuner.cpp:14'
+    [publisher] = node.publishers
+    assert publisher.label == 'dependent'

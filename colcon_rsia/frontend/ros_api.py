@@ -214,6 +214,14 @@ CALLS = {
     'rclcpp::expand_topic_or_service_name': Api(NAME_RESOLVE, name_arg=0),
     'rclcpp::node_interfaces::NodeTopicsInterface::resolve_topic_name': Api(
         NAME_RESOLVE, name_arg=0),
+    # the clients of another node's parameters: on_parameter_event
+    # subscribes the client's node to /parameter_events
+    **{client + '::on_parameter_event': Api(
+        SUBSCRIBER, callback_arg=FIRST_CALLABLE,
+        msg_type='rcl_interfaces::msg::ParameterEvent',
+        implicit_topics=('/parameter_events',))
+       for client in ('rclcpp::AsyncParametersClient',
+                      'rclcpp::SyncParametersClient')},
     'ros::this_node::getName': Api(NODE_FQN),
     'rclcpp::Node::get_fully_qualified_name': Api(NODE_FQN),
     'rclcpp_lifecycle::LifecycleNode::get_fully_qualified_name': Api(NODE_FQN),

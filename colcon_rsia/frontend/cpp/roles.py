@@ -271,6 +271,10 @@ class RosRoles:
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
         typed, api, arguments = self._with_options(cursor, api, arguments)
         topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        if api.name_arg is None and len(api.implicit_topics) == 1:
+            # a subscription to the one topic the API names
+            # (on_parameter_event: /parameter_events)
+            topic, literal = api.implicit_topics[0], True
         if topic is None:
             return  # a default-constructed message_filters::Subscriber
         callback, declaration = self.walker.resolve_callback(
