@@ -1208,7 +1208,6 @@ public:
   const char * get_name() const;
   const char * get_namespace() const;
   const char * get_fully_qualified_name() const;
-  const char * get_fully_qualified_name() const;
   Logger get_logger() const;
   CallbackGroup::SharedPtr create_callback_group(
     CallbackGroupType group_type,
