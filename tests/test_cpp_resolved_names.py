@@ -388,3 +388,44 @@ def test_a_parameter_client_subscribes_to_parameter_events(tmp_path):
     assert subscriber.callback == 'lambda@src/tuner.cpp:14'
     [publisher] = node.publishers
     assert publisher.label == 'dependent'
+
+
+HANDLES_OF_ANOTHER_LIBRARY = r"""
+#include <ros/ros.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.h>
+#include <std_msgs/String.h>
+#include <lazy_tools/lazy_nodelet.h>
+
+namespace demo
+{
+// pnh_ comes from a base class of a library the unit cannot read
+class Reader : public lazy_tools::LazyNodelet
+{
+public:
+  void onInit()
+  {
+    LazyNodelet::onInit();
+    pub_ = pnh_->advertise<std_msgs::String>("output", 1);
+    sub_ = pnh_->subscribe("input", 1, &Reader::cb, this);
+    absolute_ = pnh_->advertise<std_msgs::String>("/absolute", 1);
+  }
+  void cb(const std_msgs::String::ConstPtr& m) { pub_.publish(m); }
+  ros::Publisher pub_;
+  ros::Publisher absolute_;
+  ros::Subscriber sub_;
+};
+}
+PLUGINLIB_EXPORT_CLASS(demo::Reader, nodelet::Nodelet)
+"""
+
+
+def test_a_handle_of_another_library_has_no_namespace_known(tmp_path):
+    summary = analyse_source(tmp_path, 'reader', HANDLES_OF_ANOTHER_LIBRARY)
+    publishers, subscribers = _resolved(summary)
+    # relative to a namespace the library's code gives pnh_: not the root
+    assert publishers == {'src/reader.cpp:17': None,
+                          'src/reader.cpp:19': '/absolute'}
+    assert subscribers == {'src/reader.cpp:18': None}
+    assert any("'output' is relative to the NodeHandle namespace 'pnh_'"
+               in note for note in summary.diagnostics)

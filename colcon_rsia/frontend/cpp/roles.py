@@ -23,6 +23,7 @@ from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
+from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
@@ -107,11 +108,19 @@ class RosRoles:
         For an API that takes the NodeHandle as an argument
         (``message_filters::Subscriber(nh, topic, 1)``), that argument.
         """
-        obj = call_object(call)
+        obj = call_object(call) or _wrapped_call_object(call)
         if api is not None and api.nh_arg is not None and \
                 api.nh_arg < len(arguments):
             obj = arguments[api.nh_arg]
-        return handle_marker(obj)
+        return handle_marker(obj, self._foreign_handle)
+
+    def _foreign_handle(self, member):
+        """A ROS 1 NodeHandle member of a class of another library.
+
+        (``pnh_`` of a nodelet base class the package derives from): its
+        namespace is whatever that library's code gives it.
+        """
+        return not self.walker.ros2 and not self.walker.in_package(member)
 
     # --- roles (named after ros_api roles) ----------------------------------
 
@@ -657,6 +666,24 @@ class RosRoles:
         if target is not None:
             self.facts.node_handles.append(model.NodeHandleFact(
                 handle=target.get_usr(), namespace=''))
+
+
+def _wrapped_call_object(call):
+    """The object of a member call whose callee clang wrapped.
+
+    ``pnh_->advertise<M>(...)`` on what the model mode's repairs declared
+    (a name no header of the unit declares): the member reference sits
+    under a conversion.
+    """
+    children = child_cursors(call)
+    callee = children[0] if children else None
+    if callee is None or callee.kind != CK.UNEXPOSED_EXPR:
+        return None
+    inner = child_cursors(callee)
+    if len(inner) != 1 or inner[0].kind != CK.MEMBER_REF_EXPR:
+        return None
+    return next((c for c in child_cursors(inner[0]) if c.kind not in (
+        CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF)), None)
 
 
 def _camera_info(topic):

@@ -108,7 +108,8 @@ class StringVariables:
             # `nh.resolveName("out")`: the name "out" in the handle's
             # namespace, when the handle is known
             call, api = resolving
-            marker = _resolving_marker(call, api)
+            marker = _resolving_marker(
+                call, api, lambda member: not self.walker.in_package(member))
             expression = self.walker.argument(
                 list(call.get_arguments()), api.name_arg)
             if marker is None or expression is None:
@@ -301,7 +302,7 @@ def _name_resolving_call(expression):
     return call, api
 
 
-def _resolving_marker(call, api):
+def _resolving_marker(call, api, foreign):
     """The handle a name-resolving call resolves in, or None (unknown).
 
     A ROS 1 NodeHandle's ``resolveName``: that handle. ``rclcpp::
@@ -310,7 +311,7 @@ def _resolving_marker(call, api):
     """
     if not qualified_name(call.referenced).startswith(_ROS1_HANDLE):
         return ''  # a free function or a ROS 2 interface: the node's
-    return handle_marker(call_object(call))
+    return handle_marker(call_object(call), foreign)
 
 
 def is_node_fqn(expression):
