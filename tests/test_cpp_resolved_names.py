@@ -227,6 +227,7 @@ int main(int argc, char** argv)
   std::string debug_topic = pnh.resolveName("debug");
   ros::Publisher pub = nh.advertise<std_msgs::String>(out_topic, 1);
   ros::Publisher debug = nh.advertise<std_msgs::String>(debug_topic, 1);
+  ros::Publisher direct = nh.advertise<std_msgs::String>(pnh.resolveName("direct"), 1);
   ros::Subscriber sub = nh.subscribe<std_msgs::String>(
       in_topic, 1, [&pub](const std_msgs::String::ConstPtr& m) { pub.publish(m); });
   Republisher republisher;
@@ -241,8 +242,9 @@ def test_names_a_nodehandle_resolves_are_names_of_that_handle(tmp_path):
     publishers, subscribers = _resolved(summary)
     assert publishers == {'src/republish.cpp:17': '/cloud',
                           'src/republish.cpp:35': '/out',
-                          'src/republish.cpp:36': '/republish/debug'}
-    assert subscribers == {'src/republish.cpp:37': '/in'}
+                          'src/republish.cpp:36': '/republish/debug',
+                          'src/republish.cpp:37': '/republish/direct'}
+    assert subscribers == {'src/republish.cpp:38': '/in'}
 
 
 NAMED_AFTER_THE_NODE = r"""

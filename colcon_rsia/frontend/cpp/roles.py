@@ -198,7 +198,15 @@ class RosRoles:
         """The fields shared by publisher and subscriber facts, per topic.
 
         image_transport's camera APIs also make `<dirname>/camera_info`.
+        A name resolved in place (``advertise(nh.resolveName("out"), 1)``)
+        is that name in the resolving handle's namespace.
         """
+        nh = self._namespace_of(cursor, api, arguments)
+        resolved = None if literal or api.name_arg is None else \
+            self.walker.string_variables.resolved_in_place(
+                self.walker.argument(arguments, api.name_arg))
+        if resolved is not None:
+            topic, literal, nh = resolved[0], True, resolved[1]
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic),
@@ -211,8 +219,7 @@ class RosRoles:
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
-                location=self.walker.location(cursor),
-                nh=self._namespace_of(cursor, api, arguments))
+                location=self.walker.location(cursor), nh=nh)
 
     def _object_type(self, cursor, name):
         """The class type a constructor or method belongs to.

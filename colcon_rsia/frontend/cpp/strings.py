@@ -97,6 +97,24 @@ class StringVariables:
         (self._passed_writable if writable else self._passed_read_only).add(
             handle.get_usr())
 
+    def resolved_in_place(self, expression):
+        """(name, handle marker) of ``nh.resolveName("out")``, or None.
+
+        A name-resolving call with a literal name, given straight to an
+        API: the literal in the namespace of the resolving handle.
+        """
+        resolving = _name_resolving_call(expression)
+        if resolving is None:
+            return None
+        call, api = resolving
+        marker = _resolving_marker(
+            call, api, lambda member: not self.walker.in_package(member))
+        name, literal = self.walker.topic(self.walker.argument(
+            list(call.get_arguments()), api.name_arg))
+        if marker is None or not literal:
+            return None
+        return name, marker
+
     def assignment(self, variable, expression):
         """Note what a string variable/field is set to."""
         if not is_string(variable):
