@@ -10,6 +10,7 @@ code below: the node runs once, unnamespaced, under its default name.
 """
 
 from colcon_rsia.system.graph import build_graph
+from colcon_rsia.system.graph import Instance
 from conftest import analyse_source
 
 PASSED_TO_A_HELPER = r"""
@@ -92,6 +93,16 @@ def test_a_parameter_default_passed_to_a_helper_names_its_topics(tmp_path):
     assert publishers == {'src/mapper.cpp:32': '/map',
                           'src/mapper.cpp:33': '/map_metadata'}
     assert subscribers == {'src/mapper.cpp:13': '/map'}
+    # a launch file's value of map_name wins over the default, everywhere
+    launched = Instance(
+        id='/mapper', node=node, package=node.package,
+        executable=node.executable, name='mapper',
+        params={'map_name': 'slam_map'})
+    [instance] = build_graph([summary], instances=[launched]) \
+        .instances.values()
+    assert sorted(e['resolved'] for e in
+                  instance.publishers + instance.subscribers) == [
+        '/slam_map', '/slam_map', '/slam_map_metadata']
 
 
 MEMBER_DEFAULTS = r"""
@@ -431,3 +442,49 @@ def test_a_handle_of_another_library_has_no_namespace_known(tmp_path):
     assert subscribers == {'src/reader.cpp:18': None}
     assert any("'output' is relative to the NodeHandle namespace 'pnh_'"
                in note for note in summary.diagnostics)
+
+
+MEMBER_HELD_DEFAULTS = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <memory>
+#include <string>
+
+class Echo : public rclcpp::Node
+{
+public:
+  Echo() : Node("echo"), in_("chatter")
+  {
+    this->get_parameter_or("in", in_, in_);
+    out_ = this->declare_parameter("out", out_);
+    pub_ = create_publisher<std_msgs::msg::String>(out_, 1);
+    sub_ = create_subscription<std_msgs::msg::String>(
+      in_, 1,
+      [this](std_msgs::msg::String::ConstSharedPtr msg) { pub_->publish(*msg); });
+  }
+
+private:
+  std::string in_;
+  std::string out_{"echoed"};
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Echo>());
+}
+"""
+
+
+def test_defaults_held_by_members_before_the_read(tmp_path):
+    summary = analyse_source(tmp_path, 'echo', MEMBER_HELD_DEFAULTS)
+    [node] = summary.nodes
+    # in_("chatter") in the initialiser list, out_{"echoed"} in the class
+    assert {(e.topic_param.name, e.topic_param.default)
+            for e in node.publishers + node.subscribers} == {
+        ('in', 'chatter'), ('out', 'echoed')}
+    publishers, subscribers = _resolved(summary)
+    assert publishers == {'src/echo.cpp:14': '/echoed'}
+    assert subscribers == {'src/echo.cpp:15': '/chatter'}
