@@ -151,8 +151,11 @@ class StringVariables:
             self._echoes.setdefault(usr, set()).add(echoed)
             return
         parts = string_parts(expression)
+        # (a member or variable: a parameter set from the caller's own
+        # parameter keeps what other callers pass it)
         if resolving is None and parts and len(parts) == 1 and \
                 parts[0][0] == 'variable' and \
+                not _is_parameter(variable) and \
                 _is_parameter(first_handle(expression)):
             self._copies.setdefault(usr, set()).add(parts[0][1])
             return
