@@ -32,6 +32,12 @@ REGISTER_CALLBACK = 'register_callback'      # message_filters callbacks
 ACTION_SERVER = 'action_server'
 ACTION_CLIENT = 'action_client'
 NODE_HANDLE = 'node_handle'        # a NodeHandle constructor
+# returns its name argument resolved as the node (or handle) resolves it
+# (``nh.resolveName("out")``): as a topic, that name in that namespace
+NAME_RESOLVE = 'name_resolve'
+# returns the node's fully qualified name (``ros::this_node::getName()``):
+# as a name, the node's private namespace ``~``
+NODE_FQN = 'node_fqn'
 PRIVATE_HANDLE = 'private_handle'  # returns the node's private handle
 PUBLIC_HANDLE = 'public_handle'    # returns the node's public handle
 PARAM_READ = 'param_read'          # reads a parameter into a variable
@@ -202,6 +208,25 @@ CALLS = {
     'ros::service::createClient': Api(CLIENT, name_arg=0),
     'ros::init': Api(NODE_NAME, name_arg=2),
     NH + 'NodeHandle': Api(NODE_HANDLE),
+    NH + 'resolveName': Api(NAME_RESOLVE, name_arg=0),
+    # expand_topic_or_service_name(name, node_name, namespace_,
+    # is_service): the name in the namespace passed (the node's own)
+    'rclcpp::expand_topic_or_service_name': Api(NAME_RESOLVE, name_arg=0),
+    'rclcpp::node_interfaces::NodeTopicsInterface::resolve_topic_name': Api(
+        NAME_RESOLVE, name_arg=0),
+    # the clients of another node's parameters: on_parameter_event
+    # subscribes the client's node to /parameter_events
+    **{client + '::on_parameter_event': Api(
+        SUBSCRIBER, callback_arg=FIRST_CALLABLE,
+        msg_type='rcl_interfaces::msg::ParameterEvent',
+        implicit_topics=('/parameter_events',))
+       for client in ('rclcpp::AsyncParametersClient',
+                      'rclcpp::SyncParametersClient')},
+    'ros::this_node::getName': Api(NODE_FQN),
+    'rclcpp::Node::get_fully_qualified_name': Api(NODE_FQN),
+    'rclcpp_lifecycle::LifecycleNode::get_fully_qualified_name': Api(NODE_FQN),
+    'rclcpp::node_interfaces::NodeBaseInterface::get_fully_qualified_name':
+        Api(NODE_FQN),
     NH + 'param': Api(PARAM_READ, name_arg=0),
     NH + 'getParam': Api(PARAM_READ, name_arg=0),
     NH + 'getParamCached': Api(PARAM_READ, name_arg=0),
@@ -452,6 +477,15 @@ FORWARDING_FACTORIES = frozenset({
 FORWARDING_FACTORY_NAMES = frozenset(
     name.rsplit('::', 1)[1] for name in FORWARDING_FACTORIES)
 
+# methods returning the topic name of the publisher or subscription they
+# are called on: a string set to one holds the name that endpoint was made
+# with (as the middleware resolved it)
+TOPIC_NAME_GETTERS = frozenset({
+    'ros::Publisher::getTopic', 'ros::Subscriber::getTopic',
+    'rclcpp::PublisherBase::get_topic_name',
+    'rclcpp::SubscriptionBase::get_topic_name',
+})
+
 # functions that are roots of a node by their name alone
 MAIN_FUNCTION = 'main'
 NODELET_INIT_METHOD = 'onInit'
@@ -505,6 +539,16 @@ def methods_named(method):
     """The qualified APIs of the table whose method is called `method`."""
     return [name for name in CALLS if name.rsplit('::', 1)[-1] == method
             and name.count('::') >= 2]
+
+
+def joins_after_node_name(value, rest):
+    """Whether `rest` may follow `value` in a name joined by the code.
+
+    A string holding the node's own name (``~``, role NODE_FQN) makes
+    ``/ns/node`` + ``_x``: no ROS name says that (``~_x`` is
+    ``/ns/node/_x``); only ``/x`` or nothing may follow.
+    """
+    return value != '~' or not rest or rest.startswith('/')
 
 
 def lookup_call(qualified_name):

@@ -16,6 +16,7 @@ from typing import Dict
 from typing import List
 from typing import Optional
 
+from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.facts import ActionFact
 from colcon_rsia.frontend.facts import Call
 from colcon_rsia.frontend.facts import ClientFact
@@ -304,11 +305,15 @@ def _named_by_callers(endpoints, facts):
     named = []
     for endpoint in endpoints:
         values = facts.string_arguments.get(endpoint.topic_handle) \
-            if not endpoint.topic_is_literal and endpoint.topic_handle and \
-            not endpoint.topic_affixes else None
-        if values is not None and len(values) == 1:
-            endpoint = replace(endpoint, topic=next(iter(values)),
-                               topic_is_literal=True, topic_handle=None)
+            if not endpoint.topic_is_literal and endpoint.topic_handle \
+            else None
+        prefix, suffix = endpoint.topic_affixes or ('', '')
+        if values is not None and len(values) == 1 and \
+                ros_api.joins_after_node_name(next(iter(values)), suffix):
+            # (joined with what the code adds: `name + "/goal"`)
+            endpoint = replace(
+                endpoint, topic=prefix + next(iter(values)) + suffix,
+                topic_is_literal=True, topic_handle=None, topic_affixes=None)
         named.append(endpoint)
     return named
 
@@ -350,6 +355,8 @@ def topic_param(facts, fact):
     else:
         read = facts.param_reads.get(marker) if marker else None
         if read is None:
+            read = _read_passed(facts, marker)
+        if read is None:
             return None
         name, default = read.name, read.default
         namespace = resolve_namespace(facts, read.nh)
@@ -358,6 +365,23 @@ def topic_param(facts, fact):
     prefix, suffix = getattr(fact, 'topic_affixes', None) or ('', '')
     return TopicParam(name=name, default=default, namespace=namespace,
                       prefix=prefix, suffix=suffix)
+
+
+def _read_passed(facts, parameter):
+    """The parameter read whose variable every caller passes, or None.
+
+    ``Saver(node, map_name_)`` where ``map_name_ = declare_parameter(
+    "map_name", ...)`` and the saver's topic is its ``map_name``
+    parameter (held in a member set only to it, frontend/cpp/strings.py).
+    """
+    if not parameter or facts.string_arguments.get(parameter):
+        return None
+    passed = facts.aliases.get(parameter, set())
+    # (a parameter passing on its own callers' values is no value itself)
+    values = {h for h in passed if h not in facts.aliases}
+    if len(values) != 1:
+        return None
+    return facts.param_reads.get(next(iter(values)))
 
 
 def handles_of(facts, handle):

@@ -114,6 +114,7 @@ class Callbacks:
                 continue
             if is_string(param):
                 self.string_variables.assignment(param, argument)
+                self.string_variables.passed(argument, param)
             elif is_callable_argument(argument):
                 self._store_callable(param, argument, consume=False)
 

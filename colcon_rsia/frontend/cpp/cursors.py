@@ -15,6 +15,7 @@ import clang.cindex as ci
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
 
@@ -134,6 +135,32 @@ def first_handle(cursor):
             if ref is not None and ref.kind in HANDLE_KINDS:
                 return ref
     return None
+
+
+def handle_marker(obj, foreign=None):
+    """The NodeHandle an object expression is: USR or namespace marker.
+
+    ``getPrivateNodeHandle()`` is '~', ``getNodeHandle()`` '' (the node's
+    namespace), a variable its USR (its namespace is resolved later);
+    None when the expression names no handle. A member or variable
+    `foreign` says is set up by code the analysis does not read (another
+    library's base class, a name only the model mode's repairs declare):
+    a namespace not known, ``?<name>``.
+    """
+    if obj is None:
+        return None
+    for current in [obj] + list(walk_preorder(obj)):
+        if current.kind == CK.CALL_EXPR and current.referenced is not None:
+            api = ros_api.lookup_call(qualified_name(current.referenced))
+            if api is not None and api.role == ros_api.PRIVATE_HANDLE:
+                return '~'
+            if api is not None and api.role == ros_api.PUBLIC_HANDLE:
+                return ''
+    handle = first_handle(obj)
+    if handle is not None and handle.kind in (CK.FIELD_DECL, CK.VAR_DECL) \
+            and foreign is not None and foreign(handle):
+        return UNKNOWN_NAMESPACE + handle.spelling
+    return handle.get_usr() if handle is not None else None
 
 
 # a ROS 1 NodeHandle (by value, reference or pointer): it carries a namespace

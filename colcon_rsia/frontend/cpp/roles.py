@@ -22,10 +22,12 @@ from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import callback_msg_type
+from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
+from colcon_rsia.frontend.cpp.cursors import handle_marker
 from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_callable_argument
 from colcon_rsia.frontend.cpp.cursors import is_node_handle
@@ -91,6 +93,9 @@ class RosRoles:
             ros_api.NODE_NAME: self._on_node_name,
             ros_api.SUB_NODE: self._on_sub_node,
             ros_api.TIMED_PUBLISHER: self._on_timed_publisher,
+            # the value is read where it is stored (strings.py)
+            ros_api.NAME_RESOLVE: self._on_name_resolve,
+            ros_api.NODE_FQN: self._on_name_resolve,
             # gzserver's events, nodelets loaded in code
             **hosted.HostedRoles(self.walker).handlers(),
         }
@@ -117,21 +122,19 @@ class RosRoles:
         For an API that takes the NodeHandle as an argument
         (``message_filters::Subscriber(nh, topic, 1)``), that argument.
         """
-        obj = call_object(call)
+        obj = call_object(call) or _wrapped_call_object(call)
         if api is not None and api.nh_arg is not None and \
                 api.nh_arg < len(arguments):
             obj = arguments[api.nh_arg]
-        if obj is None:
-            return None
-        for current in [obj] + list(walk_preorder(obj)):
-            if current.kind == CK.CALL_EXPR and current.referenced is not None:
-                api = ros_api.lookup_call(qualified_name(current.referenced))
-                if api is not None and api.role == ros_api.PRIVATE_HANDLE:
-                    return '~'
-                if api is not None and api.role == ros_api.PUBLIC_HANDLE:
-                    return ''
-        handle = first_handle(obj)
-        return handle.get_usr() if handle is not None else None
+        return handle_marker(obj, self._foreign_handle)
+
+    def _foreign_handle(self, member):
+        """A ROS 1 NodeHandle member of a class of another library.
+
+        (``pnh_`` of a nodelet base class the package derives from): its
+        namespace is whatever that library's code gives it.
+        """
+        return not self.walker.ros2 and not self.walker.in_package(member)
 
     # --- roles (named after ros_api roles) ----------------------------------
 
@@ -209,7 +212,15 @@ class RosRoles:
         """The fields shared by publisher and subscriber facts, per topic.
 
         image_transport's camera APIs also make `<dirname>/camera_info`.
+        A name resolved in place (``advertise(nh.resolveName("out"), 1)``)
+        is that name in the resolving handle's namespace.
         """
+        nh = self._namespace_of(cursor, api, arguments)
+        resolved = None if literal or api.name_arg is None else \
+            self.walker.string_variables.resolved_in_place(
+                self.walker.argument(arguments, api.name_arg))
+        if resolved is not None:
+            topic, literal, nh = resolved[0], True, resolved[1]
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic),
@@ -222,8 +233,7 @@ class RosRoles:
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
-                location=self.walker.location(cursor),
-                nh=self._namespace_of(cursor, api, arguments))
+                location=self.walker.location(cursor), nh=nh)
 
     def _object_type(self, cursor, name):
         """The class type a constructor or method belongs to.
@@ -291,6 +301,10 @@ class RosRoles:
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
         typed, api, arguments = self._with_options(cursor, api, arguments)
         topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        if api.name_arg is None and len(api.implicit_topics) == 1:
+            # a subscription to the one topic the API names
+            # (on_parameter_event: /parameter_events)
+            topic, literal = api.implicit_topics[0], True
         if topic is None:
             return  # a default-constructed message_filters::Subscriber
         callback, declaration = self.walker.resolve_callback(
@@ -382,6 +396,15 @@ class RosRoles:
             if default_argument is not None and default is None else None
         if parts and len(parts) == 1 and parts[0][0] == 'variable':
             self.walker.string_variables.default_from(read, parts[0][1])
+
+    def _on_name_resolve(self, cursor, ctx, stack, api, name, arguments):
+        """``nh.resolveName("out")``: a value, read where it is used.
+
+        The call makes no fact; the string variable set to it takes the
+        name in the namespace of the handle (StringVariables.assignment).
+        So does ``ros::this_node::getName()``: the name ``~`` (walker.topic,
+        strings.string_parts).
+        """
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
         node_name, literal = self.walker.topic(
@@ -529,6 +552,10 @@ class RosRoles:
         action_type = first_template_argument(self._object_type(
             cursor, name)) or ''
         action_type = re.sub(r'_<.*', '', action_type)
+        # a name held in a variable (a parameter, what the callers pass):
+        # the inputs are that name joined with their own
+        handle, affixes = self._topic_handle(arguments, api, literal)
+        prefix, rest = affixes or ('', '')
         for suffix in api.action_inputs:
             msg_type = f'{action_type}{suffix.capitalize()}' \
                 if action_type.endswith('Action') and suffix == 'goal' \
@@ -541,7 +568,10 @@ class RosRoles:
                 # (cancel runs the preempt callback, registered apart)
                 callback=callbacks[0] if callbacks and suffix == 'goal'
                 else None,
-                location=self.walker.location(cursor), nh=nh))
+                location=self.walker.location(cursor), nh=nh,
+                topic_handle=handle,
+                topic_affixes=[prefix, f'{rest}/{suffix}'] if handle
+                else None))
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
@@ -657,6 +687,24 @@ class RosRoles:
         if target is not None:
             self.facts.node_handles.append(NodeHandleFact(
                 handle=target.get_usr(), namespace=''))
+
+
+def _wrapped_call_object(call):
+    """The object of a member call whose callee clang wrapped.
+
+    ``pnh_->advertise<M>(...)`` on what the model mode's repairs declared
+    (a name no header of the unit declares): the member reference sits
+    under a conversion.
+    """
+    children = child_cursors(call)
+    callee = children[0] if children else None
+    if callee is None or callee.kind != CK.UNEXPOSED_EXPR:
+        return None
+    inner = child_cursors(callee)
+    if len(inner) != 1 or inner[0].kind != CK.MEMBER_REF_EXPR:
+        return None
+    return next((c for c in child_cursors(inner[0]) if c.kind not in (
+        CK.TYPE_REF, CK.NAMESPACE_REF, CK.TEMPLATE_REF)), None)
 
 
 def _camera_info(topic):

@@ -14,11 +14,16 @@ import re
 
 import clang.cindex as ci
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
+from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
+from colcon_rsia.frontend.cpp.cursors import handle_marker
 from colcon_rsia.frontend.cpp.cursors import is_string
+from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
+from colcon_rsia.frontend.cpp.cursors import same_cursor
 
 CK = ci.CursorKind
 
@@ -40,6 +45,24 @@ class StringVariables:
         self._concatenated = []
         # parameter reads whose default is a string variable: (read, USR)
         self._defaults_from = []
+        # the handles (namespace markers) a variable's literal is resolved
+        # in: None for a plain literal, else the handle of the resolving
+        # call (``out = nh.resolveName("out")``); USR -> markers
+        self._resolved_in = {}
+        # ``x = nh.resolveName(x)``: USR -> markers x is resolved in again
+        self._resolved_again = {}
+        # members copied from a parameter of the function setting them
+        # (``map_name_(map_name)``): USR -> parameter USRs
+        self._copies = {}
+        # variables also set to what is neither a literal, a parameter read
+        # nor a copy of a parameter
+        self._written_otherwise = set()
+        # ``x = pub->get_topic_name()``: USR -> endpoint handles read
+        self._echoes = {}
+        # string variables passed to a package function's parameter that
+        # can write them (a non-const reference or pointer) or cannot
+        self._passed_writable = set()
+        self._passed_read_only = set()
 
     def name_from(self, fact, variable):
         """A service fact whose name is the value of `variable` (a USR)."""
@@ -58,17 +81,85 @@ class StringVariables:
         """A NodeHandle fact whose namespace is the value of `variable`."""
         self._namespaced_by_variable.append((fact, variable))
 
+    def passed(self, argument, parameter):
+        """A package function's `parameter` receives `argument`.
+
+        A string variable passed by value or by const reference keeps its
+        value; one passed by non-const reference or pointer may be set by
+        the function.
+        """
+        handle = plain_handle(argument)
+        if handle is None or not is_string(handle):
+            return
+        kind = parameter.type.kind
+        writable = kind in _WRITABLE_KINDS and \
+            not parameter.type.get_pointee().is_const_qualified()
+        (self._passed_writable if writable else self._passed_read_only).add(
+            handle.get_usr())
+
+    def resolved_in_place(self, expression):
+        """(name, handle marker) of ``nh.resolveName("out")``, or None.
+
+        A name-resolving call with a literal name, given straight to an
+        API: the literal in the namespace of the resolving handle.
+        """
+        resolving = _name_resolving_call(expression)
+        if resolving is None:
+            return None
+        call, api = resolving
+        marker = _resolving_marker(
+            call, api, lambda member: not self.walker.in_package(member))
+        name, literal = self.walker.topic(self.walker.argument(
+            list(call.get_arguments()), api.name_arg))
+        if marker is None or not literal:
+            return None
+        return name, marker
+
     def assignment(self, variable, expression):
         """Note what a string variable/field is set to."""
         if not is_string(variable):
             return
+        usr = variable.get_usr()
+        marker = None
+        resolving = _name_resolving_call(expression)
+        if resolving is not None:
+            # `nh.resolveName("out")`: the name "out" in the handle's
+            # namespace, when the handle is known
+            call, api = resolving
+            marker = _resolving_marker(
+                call, api, lambda member: not self.walker.in_package(member))
+            expression = self.walker.argument(
+                list(call.get_arguments()), api.name_arg)
+            if marker is None or expression is None:
+                self._written.add(usr)
+                self._written_otherwise.add(usr)
+                return
+            if same_cursor(first_handle(expression), variable) and \
+                    string_parts(expression) == [('variable', usr)]:
+                self._resolved_again.setdefault(usr, set()).add(marker)
+                return
         value, literal = self.walker.topic(expression)
         if literal:
-            self._values.setdefault(
-                variable.get_usr(), set()).add(value)
-        elif not _reads_parameter(expression):
-            # (a parameter read is a fact of its own: see resolve)
-            self._written.add(variable.get_usr())
+            self._values.setdefault(usr, set()).add(value)
+            self._resolved_in.setdefault(usr, set()).add(marker)
+            return
+        if _reads_parameter(expression):
+            return  # a fact of its own: see resolve
+        self._written.add(usr)
+        echoed = _echoed_endpoint(expression)
+        if echoed is not None:
+            self._echoes.setdefault(usr, set()).add(echoed)
+            return
+        parts = string_parts(expression)
+        # (a member or variable: a parameter set from the caller's own
+        # parameter keeps what other callers pass it)
+        if resolving is None and parts and len(parts) == 1 and \
+                parts[0][0] == 'variable' and \
+                not _is_parameter(variable) and \
+                _is_parameter(first_handle(expression)):
+            self._copies.setdefault(usr, set()).add(parts[0][1])
+            return
+        self._written_otherwise.add(usr)
 
     def resolve(self):
         """A name held in a string set only to one literal is that literal.
@@ -78,39 +169,108 @@ class StringVariables:
         variable also set otherwise, read from a parameter or handed to a
         function of the package is left as written.
         """
-        written = self._written | {
-            r.handle for r in self.walker.facts.param_reads if r.handle} | {
-            b.handle for b in self.walker.facts.bindings}
+        endpoints = self.walker.facts.publishers + \
+            self.walker.facts.subscribers
+        bound = self._bound()
+        written = (self._written - self._echoed(endpoints)) | {
+            r.handle for r in self.walker.facts.param_reads if r.handle} | \
+            bound
 
         def value(handle):
             values = self._values.get(handle)
             if handle in written or not values or len(values) != 1:
                 return None
             return next(iter(values))
-        for fact in self.walker.facts.publishers + self.walker.facts.subscribers:
+        for fact in endpoints:
             # (a topic joined around a variable: see _concatenated below)
             topic = None if fact.topic_is_literal or fact.topic_affixes \
                 else value(fact.topic_handle)
-            if topic:
+            marker = self._marker(fact.topic_handle) if topic else None
+            if topic and marker is not _AMBIGUOUS:
                 fact.topic = topic
                 fact.topic_is_literal = True
                 fact.topic_handle = None
+                fact.nh = fact.nh if marker is None else marker
+            elif not fact.topic_is_literal:
+                fact.topic_handle = self._copied(fact.topic_handle, bound)
         for fact, handle in self._named_by_variable:
             fact.name = value(handle) or fact.name
         for fact, handle in self._namespaced_by_variable:
             fact.namespace = value(handle) or fact.namespace
-        bound = {b.handle for b in self.walker.facts.bindings}
         for read, handle in self._defaults_from:
             values = self._values.get(handle, ())
             if handle not in self._written | bound and len(values) == 1:
                 read.default = next(iter(values))
         for fact, parts in self._concatenated:
-            values = [text if kind == 'literal' else value(text)
+            # (a variable resolved in a handle of its own: left as written)
+            values = [text if kind == 'literal' else
+                      value(text) if self._marker(text) is None else None
                       for kind, text in parts]
+            if any(kind == 'variable' and not ros_api.joins_after_node_name(
+                    values[i], ''.join(v or '' for v in values[i + 1:]))
+                   for i, (kind, _) in enumerate(parts)):
+                continue
             if None not in values:
                 fact.topic = ''.join(values)
                 fact.topic_is_literal = True
                 fact.topic_handle = None
+
+    def _bound(self):
+        """String variables a package function may set: passed to it.
+
+        Not those passed only by value or const reference (see passed);
+        handles bound otherwise (``std::bind``) count as passed.
+        """
+        read_only = self._passed_read_only - self._passed_writable
+        return {b.handle for b in self.walker.facts.bindings} - read_only
+
+    def _echoed(self, endpoints):
+        """Variables set only to the topic name of the endpoint they name.
+
+        ``pub_ = create_publisher<M>(topic_, 1); topic_ =
+        pub_->get_topic_name();``: the same topic as before.
+        """
+        made_with = {}
+        for fact in endpoints:
+            if fact.handle:
+                made_with.setdefault(fact.handle, set()).add(
+                    None if fact.topic_is_literal else fact.topic_handle)
+        return {usr for usr, handles in self._echoes.items()
+                if usr not in self._written_otherwise and
+                usr not in self._copies and
+                all(made_with.get(h) == {usr} for h in handles)}
+
+    def _marker(self, handle):
+        """The handle a variable's literal is resolved in.
+
+        None: the handle that uses the name (a plain literal); a marker:
+        the handle of ``resolveName``; _AMBIGUOUS when they differ.
+        """
+        markers = self._resolved_in.get(handle, {None})
+        again = self._resolved_again.get(handle, set())
+        if again and markers == {None}:
+            markers = again  # `x = "out"; x = nh.resolveName(x);`
+        elif again:
+            markers = markers | again
+        if len(markers) != 1:
+            return _AMBIGUOUS
+        return next(iter(markers))
+
+    def _copied(self, handle, bound):
+        """A member set only to a parameter: that parameter's USR.
+
+        ``Saver(const std::string & map_name) : map_name_(map_name)``:
+        the topic is what the callers pass (a literal or a variable read
+        from a parameter), resolved per node (package/node_facts.py).
+        """
+        copies = self._copies.get(handle)
+        if not copies or len(copies) != 1 or \
+                handle in self._written_otherwise or \
+                handle in self._values or handle in bound or \
+                any(r.handle == handle
+                    for r in self.walker.facts.param_reads):
+            return handle
+        return next(iter(copies))
 
     def concatenation(self, facts, literal, argument):
         """Resolve later a topic built with `+` from literals and strings.
@@ -124,6 +284,82 @@ class StringVariables:
         parts = string_parts(argument)
         if parts and any(kind == 'variable' for kind, _ in parts):
             self._concatenated.append((facts[0], parts))
+
+
+_ROS1_HANDLE = 'ros::NodeHandle::'
+# a marker no handle has: the variable is resolved in several handles
+_AMBIGUOUS = object()
+# parameter types through which a function can set its caller's string
+_WRITABLE_KINDS = frozenset({
+    ci.TypeKind.LVALUEREFERENCE, ci.TypeKind.RVALUEREFERENCE,
+    ci.TypeKind.POINTER})
+
+
+def _calls_in(expression):
+    """The calls an expression is, through conversions and parentheses."""
+    current = expression
+    for _ in range(16):
+        if current is None:
+            return None
+        if current.kind == CK.CALL_EXPR and current.referenced is not None \
+                and current.spelling not in ('basic_string', 'operator='):
+            return current
+        children = [c for c in child_cursors(current) if c.kind not in (
+            CK.NAMESPACE_REF, CK.TYPE_REF, CK.TEMPLATE_REF)]
+        if current.kind not in _STRING_WRAPPERS or len(children) != 1:
+            return None
+        current = children[0]
+    return None
+
+
+def _name_resolving_call(expression):
+    """(call, api) when an expression is a name-resolving call."""
+    call = _calls_in(expression)
+    if call is None:
+        return None
+    api = ros_api.lookup_call(qualified_name(call.referenced))
+    if api is None or api.role != ros_api.NAME_RESOLVE:
+        return None
+    return call, api
+
+
+def _resolving_marker(call, api, foreign):
+    """The handle a name-resolving call resolves in, or None (unknown).
+
+    A ROS 1 NodeHandle's ``resolveName``: that handle. ``rclcpp::
+    expand_topic_or_service_name(name, node_name, namespace)`` and a
+    node's topics interface: the node's namespace ('').
+    """
+    if not qualified_name(call.referenced).startswith(_ROS1_HANDLE):
+        return ''  # a free function or a ROS 2 interface: the node's
+    return handle_marker(call_object(call), foreign)
+
+
+def is_node_fqn(expression):
+    """Whether an expression is the node's fully qualified name.
+
+    ``ros::this_node::getName()``, ``node->get_fully_qualified_name()``:
+    as a name, the node's private namespace ``~``.
+    """
+    call = _calls_in(expression)
+    if call is None:
+        return False
+    api = ros_api.lookup_call(qualified_name(call.referenced))
+    return api is not None and api.role == ros_api.NODE_FQN
+
+
+def _echoed_endpoint(expression):
+    """The endpoint handle whose topic name an expression reads, or None."""
+    call = _calls_in(expression)
+    if call is None or qualified_name(call.referenced) not in \
+            ros_api.TOPIC_NAME_GETTERS:
+        return None
+    handle = first_handle(call_object(call))
+    return handle.get_usr() if handle is not None else None
+
+
+def _is_parameter(cursor):
+    return cursor is not None and cursor.kind == CK.PARM_DECL
 
 
 def _reads_parameter(expression):

@@ -655,6 +655,8 @@ class _Walker(Callbacks):
         """Return (topic as written, is it a literal)."""
         if argument is None:
             return None, False
+        if strings.is_node_fqn(argument):
+            return '~', True  # the node's own name: its private namespace
         literals = []
         has_variable = False
         for current in [argument] + list(walk_preorder(argument)):

@@ -1803,6 +1803,11 @@ public:
 };
 #undef RSIA_MODEL_ON_PARAMETER_EVENT_
 
+// expand_topic_or_service_name.hpp
+std::string expand_topic_or_service_name(
+  const std::string & name, const std::string & node_name,
+  const std::string & namespace_, bool is_service = false);
+
 }  // namespace rclcpp
 
 // logging macros: the arguments stay expressions in a do/while(0) like the
