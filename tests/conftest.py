@@ -46,10 +46,9 @@ SLOW_MODULES = frozenset({
 def pytest_collection_modifyitems(items):
     """Mark the tests that need a compiled workspace as slow."""
     for item in items:
-        module = getattr(item, 'module', None)
+        # by the file's name: the same in every subdirectory of tests/
         if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())) or \
-                (module is not None and
-                 module.__name__.rsplit('.', 1)[-1] in SLOW_MODULES):
+                Path(item.path).stem in SLOW_MODULES:
             item.add_marker(pytest.mark.slow)
 
 

@@ -22,7 +22,7 @@ from colcon_rsia.frontend.cpp.model_mode import source_names
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 import pytest
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 ROS1_SRC = REPO / 'test_workspaces' / 'ros1' / 'src'
 ROS1_PACKAGES = sorted(
     p.name for p in ROS1_SRC.iterdir() if (p / 'package.xml').is_file())

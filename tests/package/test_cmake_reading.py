@@ -2,7 +2,7 @@
 # Licensed under the Apache License, Version 2.0
 """Which executables and components a package's CMakeLists.txt makes.
 
-Without a build, CMake configures the package (tests/test_cmake_configure.py);
+Without a build, CMake configures the package (tests/package/test_cmake_configure.py);
 when it cannot, the file itself is read, with the helper functions and macros
 packages wrap add_executable in.
 """

@@ -12,46 +12,9 @@ import json
 
 from colcon_rsia.system.bags import BagError
 from colcon_rsia.system.bags import measure_bag
+from helpers import START_NS
+from helpers import write_bag
 import pytest
-
-START_NS = 1_700_000_000 * 10**9
-
-
-def write_bag(path, topics, storage='ros1', seconds=4.0):
-    """A bag with `topics` {name: Hz} of std_msgs/String messages.
-
-    :param storage: 'ros1', 'sqlite3' or 'mcap'
-    """
-    from rosbags.typesys import get_typestore
-    from rosbags.typesys import Stores
-    if storage == 'ros1':
-        from rosbags.rosbag1 import Writer
-        typestore = get_typestore(Stores.ROS1_NOETIC)
-        writer = Writer(path)
-        serialize = typestore.serialize_ros1
-    else:
-        from rosbags.rosbag2 import StoragePlugin
-        from rosbags.rosbag2 import Writer
-        typestore = get_typestore(Stores.ROS2_HUMBLE)
-        writer = Writer(path, version=9, storage_plugin={
-            'sqlite3': StoragePlugin.SQLITE3,
-            'mcap': StoragePlugin.MCAP}[storage])
-        serialize = typestore.serialize_cdr
-    msgtype = 'std_msgs/msg/String'
-    data = serialize(typestore.types[msgtype](data='x'), msgtype)
-    messages = []
-    with writer:
-        for topic, hz in sorted(topics.items()):
-            connection = writer.add_connection(
-                topic, msgtype, typestore=typestore)
-            # the topic starts late: its rate is measured over its own span
-            first = START_NS + 10**9
-            count = int(seconds * hz) + 1
-            messages += [(first + round(i * 1e9 / hz), connection)
-                         for i in range(count)]
-        for timestamp, connection in sorted(messages, key=lambda m: m[0]):
-            writer.write(connection, timestamp, data)
-    return path
 
 
 @pytest.mark.parametrize('storage', ['ros1', 'sqlite3', 'mcap'])

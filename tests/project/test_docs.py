@@ -8,7 +8,7 @@ import re
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 DOCS = REPO / 'docs'
 README = REPO / 'README.md'
 # not the project's files: tools' state, build output

@@ -10,7 +10,7 @@ import pytest
 @pytest.mark.flake8
 @pytest.mark.linter
 def test_flake8():
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
     style_guide = get_style_guide(show_source=True)
     report = style_guide.check_files([
         str(root / 'colcon_rsia'), str(root / 'tests'), str(root / 'bench'),

@@ -16,26 +16,12 @@ from colcon_rsia.package import runner
 from conftest import build_workspace
 from conftest import run_colcon
 from conftest import WORKSPACES
+from helpers import catkin_package
+from helpers import GOOD_NODE
+from helpers import read_summary
 import pytest
 
 FAULTS = WORKSPACES / 'faults' / 'src'
-PACKAGE_XML = """<?xml version="1.0"?>
-<package format="2">
-  <name>{name}</name><version>0.0.1</version><description>d</description>
-  <maintainer email="dev@example.com">m</maintainer><license>MIT</license>
-  <buildtool_depend>catkin</buildtool_depend>
-</package>
-"""
-GOOD_NODE = """#include <ros/ros.h>
-#include <std_msgs/String.h>
-int main(int argc, char** argv) {
-  ros::init(argc, argv, "n");
-  ros::NodeHandle nh;
-  ros::Publisher pub = nh.advertise<std_msgs::String>("out", 1);
-  ros::Rate rate(5);
-  while (ros::ok()) { pub.publish(std_msgs::String()); rate.sleep(); }
-}
-"""
 
 
 def _no_traceback(result):
@@ -95,32 +81,6 @@ def test_python_node_with_side_effects_is_not_executed(fault_builds):
 
 # --- analysis without a build: hand-made compile databases -----------------
 
-def _package(root, name, sources, *, database=True, command=None):
-    """A package with its sources and a compile database naming them."""
-    package = root / 'src' / name
-    (package / 'src').mkdir(parents=True)
-    (package / 'package.xml').write_text(PACKAGE_XML.format(name=name))
-    (package / 'CMakeLists.txt').write_text(
-        f'project({name})\n' + ''.join(
-            f'add_executable({Path(s).stem} src/{s})\n' for s in sources))
-    build = root / 'build' / name
-    build.mkdir(parents=True)
-    entries = []
-    for file_name, content in sources.items():
-        path = package / 'src' / file_name
-        if isinstance(content, bytes):
-            path.write_bytes(content)
-        elif content is not None:
-            path.write_text(content)
-        entries.append({
-            'directory': str(build), 'file': str(path),
-            'command': (command or '/usr/bin/c++') +
-            f' -std=c++17 -o x.o -c {path}'})
-    if database:
-        (build / 'compile_commands.json').write_text(json.dumps(entries))
-    return package
-
-
 def _analyze(root, *packages):
     args = ['rsia', 'analyze', '--base-paths', str(root / 'src'),
             '--build-base', str(root / 'build')]
@@ -129,28 +89,23 @@ def _analyze(root, *packages):
     return run_colcon(args, cwd=root)
 
 
-def _summary(root, name):
-    path = root / 'build' / name / 'rsia' / 'summary.json'
-    return json.loads(path.read_text())
-
-
 @pytest.fixture(scope='module')
 def bad_sources(tmp_path_factory):
     root = tmp_path_factory.mktemp('bad_sources')
-    _package(root, 'good', {'good.cpp': GOOD_NODE})
-    _package(root, 'truncated', {'cut.cpp': GOOD_NODE[:len(GOOD_NODE) // 2]})
-    _package(root, 'latin1', {'latin1.cpp': GOOD_NODE.replace(
+    catkin_package(root, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(root, 'truncated', {'cut.cpp': GOOD_NODE[:len(GOOD_NODE) // 2]})
+    catkin_package(root, 'latin1', {'latin1.cpp': GOOD_NODE.replace(
         '"n"', '"n\xe9"').encode('latin-1')})
-    _package(root, 'deleted', {'gone.cpp': None, 'here.cpp': GOOD_NODE})
-    _package(root, 'nocompiler', {'n.cpp': GOOD_NODE},
-             command='/nonexistent/bin/c++')
-    _package(root, 'noinclude', {'n.cpp': '#include <acme/missing.h>\n' +
-                                 GOOD_NODE})
+    catkin_package(root, 'deleted', {'gone.cpp': None, 'here.cpp': GOOD_NODE})
+    catkin_package(root, 'nocompiler', {'n.cpp': GOOD_NODE},
+                   command='/nonexistent/bin/c++')
+    catkin_package(root, 'noinclude', {
+        'n.cpp': '#include <acme/missing.h>\n' + GOOD_NODE})
     # about 5 MB of generated code around one real node
     filler = ''.join(
         f'static int generated_{i}(int x) {{ return x * {i} + {i % 7}; }}\n'
         for i in range(90000))
-    _package(root, 'huge', {'huge.cpp': GOOD_NODE + filler})
+    catkin_package(root, 'huge', {'huge.cpp': GOOD_NODE + filler})
     result = _analyze(root)
     return root, result
 
@@ -167,26 +122,26 @@ def test_analyze_finishes_with_one_line_per_package(bad_sources):
 
 def test_good_package_is_analysed(bad_sources):
     root, _ = bad_sources
-    [node] = _summary(root, 'good')['nodes']
+    [node] = read_summary(root, 'good')['nodes']
     assert node['publishers'][0]['label'] == 'independent'
 
 
 def test_truncated_source_reports_parse_errors(bad_sources):
     root, _ = bad_sources
-    summary = _summary(root, 'truncated')
+    summary = read_summary(root, 'truncated')
     assert any('src/cut.cpp' in d and 'parse error' in d
                for d in summary['diagnostics'])
 
 
 def test_non_utf8_source_is_analysed(bad_sources):
     root, _ = bad_sources
-    [node] = _summary(root, 'latin1')['nodes']
+    [node] = read_summary(root, 'latin1')['nodes']
     assert [p['topic'] for p in node['publishers']] == ['out']
 
 
 def test_stale_database_entry_is_named_and_the_rest_analysed(bad_sources):
     root, _ = bad_sources
-    summary = _summary(root, 'deleted')
+    summary = read_summary(root, 'deleted')
     assert any('src/gone.cpp: source file missing' in d
                for d in summary['diagnostics'])
     assert [n['id'] for n in summary['nodes']] == ['deleted/here']
@@ -194,13 +149,13 @@ def test_stale_database_entry_is_named_and_the_rest_analysed(bad_sources):
 
 def test_missing_compiler_does_not_matter(bad_sources):
     root, _ = bad_sources
-    [node] = _summary(root, 'nocompiler')['nodes']
+    [node] = read_summary(root, 'nocompiler')['nodes']
     assert node['publishers'][0]['topic'] == 'out'
 
 
 def test_unresolvable_include_gets_a_stand_in_in_model_mode(bad_sources):
     root, _ = bad_sources
-    summary = _summary(root, 'noinclude')
+    summary = read_summary(root, 'noinclude')
     assert summary['header_mode'] == 'model'
     [node] = summary['nodes']
     assert node['publishers'][0]['topic'] == 'out'
@@ -210,7 +165,7 @@ def test_unresolvable_include_gets_a_stand_in_in_model_mode(bad_sources):
 
 
 def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
-    _package(tmp_path, 'noinclude', {
+    catkin_package(tmp_path, 'noinclude', {
         'n.cpp': '#include <acme/missing.h>\n' + GOOD_NODE})
     result = run_colcon(
         ['rsia', 'analyze', '--base-paths', str(tmp_path / 'src'),
@@ -218,7 +173,7 @@ def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
         cwd=tmp_path)
     assert result.returncode == 0
     _no_traceback(result)
-    summary = _summary(tmp_path, 'noinclude')
+    summary = read_summary(tmp_path, 'noinclude')
     assert any("'acme/missing.h' file not found" in d
                for d in summary['diagnostics'])
     assert 'rsia: noinclude: 0 nodes' not in result.stdout
@@ -227,13 +182,13 @@ def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
 def test_five_megabyte_source_is_analysed(bad_sources):
     root, _ = bad_sources
     assert (root / 'src/huge/src/huge.cpp').stat().st_size > 5_000_000
-    [node] = _summary(root, 'huge')['nodes']
+    [node] = read_summary(root, 'huge')['nodes']
     assert node['publishers'][0]['label'] == 'independent'
 
 
 def test_missing_clang_resource_dir_gives_the_install_hint(
         tmp_path, monkeypatch):
-    package = _package(tmp_path, 'p', {'p.cpp': GOOD_NODE})
+    package = catkin_package(tmp_path, 'p', {'p.cpp': GOOD_NODE})
     monkeypatch.setattr(
         'colcon_rsia.package.analysis.find_resource_dir', lambda: None)
     outcome = runner.analyze(
@@ -244,7 +199,7 @@ def test_missing_clang_resource_dir_gives_the_install_hint(
 
 
 def test_symlink_loops_in_the_source_tree(tmp_path):
-    package = _package(tmp_path, 'loopy', {'n.cpp': GOOD_NODE})
+    package = catkin_package(tmp_path, 'loopy', {'n.cpp': GOOD_NODE})
     os.symlink('..', package / 'src' / 'up')
     os.symlink(package, package / 'self')
     (package / 'scripts').mkdir()
@@ -252,7 +207,7 @@ def test_symlink_loops_in_the_source_tree(tmp_path):
     result = _analyze(tmp_path, 'loopy')
     assert result.returncode == 0, result.stderr
     _no_traceback(result)
-    assert [n['id'] for n in _summary(tmp_path, 'loopy')['nodes']] == \
+    assert [n['id'] for n in read_summary(tmp_path, 'loopy')['nodes']] == \
         ['loopy/n']
 
 

@@ -11,7 +11,7 @@ import sys
 from colcon_rsia.frontend import compile_db
 import pytest
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 OUR_VARIABLES = {
     'COLCON_RSIA_ALLOWED_ROOTS', 'COLCON_RSIA_CACHE_DIR',
     'COLCON_RSIA_CACHE_MB', 'COLCON_RSIA_CLANG_RESOURCE_DIR',

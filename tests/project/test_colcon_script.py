@@ -14,8 +14,8 @@ import os
 import re
 
 from conftest import run_colcon
+from helpers import write_bag
 import pytest
-from test_check import write_bag
 
 LASER = 'sysbot_drivers/laser_driver'
 # the nodes the laser's rate reaches (test_workspaces/system/expected.yaml)

@@ -4,7 +4,7 @@
 
 The shards here are written by hand (the generated system of
 synthetic_system.py, three packages of eight nodes: pkg_000 to pkg_002);
-tests/test_shards.py merges shards the analysis made. Every command runs
+tests/package/test_shards.py merges shards the analysis made. Every command runs
 through the `colcon` script from a directory holding no package, where the
 queries read every summary of the build base.
 """

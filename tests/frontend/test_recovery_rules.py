@@ -199,7 +199,7 @@ def test_a_model_class_answers_what_the_users_version_has(tmp_path):
 
 
 def test_the_developer_docs_list_every_rule():
-    text = (Path(__file__).resolve().parents[1] / 'docs' / 'developer' /
+    text = (Path(__file__).resolve().parents[2] / 'docs' / 'developer' /
             'model-mode.md').read_text()
     table = text.split('<!-- rule-table -->')[1].split(
         '<!-- /rule-table -->')[0]

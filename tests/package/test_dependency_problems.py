@@ -3,7 +3,7 @@
 """Which dependencies' analysis a package's analysis finds missing.
 
 A C++ package reads the wrappers of its dependencies' libraries from their
-analysis in the same build base (tests/test_shards.py runs the whole
+analysis in the same build base (tests/package/test_shards.py runs the whole
 story through colcon); these are the cases decided from the build base's
 files alone.
 """

@@ -420,7 +420,7 @@ def test_the_package_time_includes_its_configure(tmp_path, monkeypatch):
     # issue 40, item 15: a configure that took long showed "in 0.5s"
     from colcon_rsia.package import nodes
     from colcon_rsia.package import runner
-    from test_faults import GOOD_NODE
+    from helpers import GOOD_NODE
     package = write_package(tmp_path / 'timed', """
 cmake_minimum_required(VERSION 3.8)
 project(timed)

@@ -3,8 +3,8 @@
 """The second reliability probe's findings (issue 40), one test each.
 
 Items 1 and 3 (the CMake sandbox, configures at once, results that may not
-repeat) are tested in tests/test_cmake_sandbox.py and
-tests/test_cmake_configure.py; the list is in docs/hardening.md.
+repeat) are tested in tests/package/test_cmake_sandbox.py and
+tests/package/test_cmake_configure.py; the list is in docs/hardening.md.
 """
 
 import errno
@@ -26,10 +26,10 @@ from colcon_rsia.summary.nodes import NodeSubscriber
 from colcon_rsia.summary.nodes import Trigger
 from colcon_rsia.summary.package_summary import PackageSummary
 from colcon_rsia.summary.store import write_summary
+from helpers import catkin_package
+from helpers import GOOD_NODE
+from helpers import read_summary
 import pytest
-from test_faults import _package
-from test_faults import _summary
-from test_faults import GOOD_NODE
 from test_hardening import _analyze
 from test_hardening import _colcon
 from test_hardening import _no_traceback
@@ -51,8 +51,8 @@ STALE = 'is stale: its last analysis failed'
 def stale_workspace(tmp_path_factory):
     """`good` analysed, then its re-analysis failed; `other` analysed."""
     root = tmp_path_factory.mktemp('stale')
-    _package(root, 'good', {'good.cpp': GOOD_NODE})
-    _package(root, 'other', {'other.cpp': GOOD_NODE.replace(
+    catkin_package(root, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(root, 'other', {'other.cpp': GOOD_NODE.replace(
         '"out"', '"elsewhere"')})
     first = _analyze(root)
     assert first.returncode == 0, first.stdout + first.stderr
@@ -104,7 +104,7 @@ def test_gates_fail_on_a_stale_summary(stale_workspace):
 
 
 def test_every_package_failing_is_no_coverage_of_zero(tmp_path):
-    _package(tmp_path, 'broken', {'broken.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'broken', {'broken.cpp': GOOD_NODE})
     (tmp_path / 'build' / 'broken' / 'compile_commands.json').write_text('[{')
     result = _analyze(tmp_path)
     _no_traceback(result)
@@ -215,7 +215,7 @@ BAD_ENVIRONMENT = [
 @pytest.mark.parametrize('name, value, expected', BAD_ENVIRONMENT)
 def test_a_bad_environment_variable_is_one_error_up_front(
         tmp_path, name, value, expected):
-    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
     result = _analyze(tmp_path, env={name: value})
     _no_traceback(result)
     assert result.returncode == 1
@@ -260,7 +260,7 @@ def test_the_build_handler_says_so_once_and_the_build_goes_on(tmp_path):
 # --- 9: the user's situation, not our bug ----------------------------------------
 
 def test_a_build_base_that_is_a_file(tmp_path):
-    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
     shutil.rmtree(tmp_path / 'build')
     (tmp_path / 'build').write_text('a file')
     result = _analyze(tmp_path)
@@ -272,7 +272,7 @@ def test_a_build_base_that_is_a_file(tmp_path):
 
 def test_a_read_only_build_base(tmp_path):
     from conftest import colcon_executable
-    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
     build = str(tmp_path / 'build')
     # the build base mounted read-only, as a read-only file system would be
     result = subprocess.run(
@@ -409,7 +409,7 @@ def test_a_long_python_sum_loses_its_value_only(tmp_path):
     _python_package(tmp_path, 'long_sum', {'talker': talker})
     result = _analyze(tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
-    summary = _summary(tmp_path, 'long_sum')
+    summary = read_summary(tmp_path, 'long_sum')
     [node] = summary['nodes']
     assert [(p['topic'], p['label']) for p in node['publishers']] == \
         [('chatter', 'independent')]

@@ -17,7 +17,7 @@ import sys
 
 import pytest
 
-PACKAGE_DIR = Path(__file__).resolve().parents[1] / 'colcon_rsia'
+PACKAGE_DIR = Path(__file__).resolve().parents[2] / 'colcon_rsia'
 
 # which layers a layer may import (besides itself and colcon_rsia's
 # __version__); the summary contract (summary) is the one thing both

@@ -22,10 +22,10 @@ from colcon_rsia.package import workers
 from conftest import build_workspace
 from conftest import colcon_executable
 from conftest import run_colcon
+from helpers import catkin_package
+from helpers import GOOD_NODE
+from helpers import read_summary
 import pytest
-from test_faults import _package
-from test_faults import _summary
-from test_faults import GOOD_NODE
 
 # libclang 18 overflows its parser's stack on a long chain of binary
 # operators: 20,000 terms already crash it (a generated 130 KB file)
@@ -75,9 +75,9 @@ def _processes_with(marker):
 @pytest.fixture(scope='module')
 def crashing_unit(tmp_path_factory):
     root = tmp_path_factory.mktemp('crash')
-    _package(root, 'crashy', {'crash.cpp': CRASHING_UNIT,
-                              'talker.cpp': GOOD_NODE})
-    _package(root, 'zlast', {'n.cpp': GOOD_NODE})
+    catkin_package(root, 'crashy', {'crash.cpp': CRASHING_UNIT,
+                                    'talker.cpp': GOOD_NODE})
+    catkin_package(root, 'zlast', {'n.cpp': GOOD_NODE})
     return root, _analyze(root)
 
 
@@ -87,12 +87,12 @@ def test_a_unit_that_crashes_libclang_ends_nothing(crashing_unit):
     _no_traceback(result)
     # the crashing unit is one message; its package's other unit and the
     # package analysed after it have their facts
-    assert CRASHED in _summary(root, 'crashy')['diagnostics']
+    assert CRASHED in read_summary(root, 'crashy')['diagnostics']
     assert f'first: {CRASHED}' in result.stdout
-    [talker] = _summary(root, 'crashy')['nodes']
+    [talker] = read_summary(root, 'crashy')['nodes']
     assert talker['id'] == 'crashy/talker'
     assert [p['label'] for p in talker['publishers']] == ['independent']
-    [node] = _summary(root, 'zlast')['nodes']
+    [node] = read_summary(root, 'zlast')['nodes']
     assert [p['topic'] for p in node['publishers']] == ['out']
     assert 'rsia: analysed 2 of 2 packages' in result.stdout
 
@@ -103,21 +103,21 @@ def test_a_crash_is_no_failure_that_is_cached(crashing_unit):
     root, _ = crashing_unit
     again = _analyze(root, '--packages-select', 'crashy')
     assert again.returncode == 0
-    assert CRASHED in _summary(root, 'crashy')['diagnostics']
+    assert CRASHED in read_summary(root, 'crashy')['diagnostics']
 
 
 def test_a_unit_past_the_time_limit_is_stopped(tmp_path):
     marker = f'RSIA_TEST_{uuid.uuid4().hex}'
-    _package(tmp_path, 'slow', {'endless.cpp': ENDLESS_UNIT,
-                                'quick.cpp': QUICK_UNIT},
-             command='/usr/bin/c++ -fconstexpr-steps=2147483647')
+    catkin_package(tmp_path, 'slow', {'endless.cpp': ENDLESS_UNIT,
+                                      'quick.cpp': QUICK_UNIT},
+                   command='/usr/bin/c++ -fconstexpr-steps=2147483647')
     started = time.monotonic()
     result = _analyze(tmp_path, '--header-mode', 'exact', env={
         'COLCON_RSIA_UNIT_TIMEOUT': '3', marker: '1'})
     elapsed = time.monotonic() - started
     assert result.returncode == 0, result.stdout + result.stderr
     _no_traceback(result)
-    summary = _summary(tmp_path, 'slow')
+    summary = read_summary(tmp_path, 'slow')
     assert 'src/endless.cpp: not analysed: parsing took longer than 3 s ' \
         '(COLCON_RSIA_UNIT_TIMEOUT)' in summary['diagnostics']
     assert [n['id'] for n in summary['nodes']] == ['slow/quick']
@@ -129,7 +129,7 @@ def test_a_unit_past_the_time_limit_is_stopped(tmp_path):
 
 @pytest.mark.parametrize('value', ['abc', '0', '-5', 'nan', 'inf'])
 def test_a_bad_time_limit_is_one_error_up_front(tmp_path, value):
-    _package(tmp_path, 'p', {'n.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'p', {'n.cpp': GOOD_NODE})
     result = _analyze(tmp_path, env={'COLCON_RSIA_UNIT_TIMEOUT': value})
     assert result.returncode != 0
     _no_traceback(result)
@@ -153,7 +153,7 @@ def _no_room_for_a_pch():
 
 
 def test_an_abort_writing_the_precompiled_header_loses_no_unit(tmp_path):
-    _package(tmp_path, 'p', {'n.cpp': GOOD_NODE, 'm.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'p', {'n.cpp': GOOD_NODE, 'm.cpp': GOOD_NODE})
     result = subprocess.run(
         [colcon_executable(), 'rsia', 'analyze', '--base-paths', str(tmp_path / 'src'),
          '--build-base', str(tmp_path / 'build'), '--header-mode', 'model'],
@@ -162,7 +162,7 @@ def test_an_abort_writing_the_precompiled_header_loses_no_unit(tmp_path):
         preexec_fn=_no_room_for_a_pch)
     assert result.returncode == 0, result.stdout + result.stderr
     _no_traceback(result)
-    summary = _summary(tmp_path, 'p')
+    summary = read_summary(tmp_path, 'p')
     # both units are analysed, without the precompiled header
     assert sorted(n['id'] for n in summary['nodes']) == ['p/m', 'p/n']
     [note] = [d for d in summary['diagnostics'] if 'precompiled' in d]
@@ -340,7 +340,7 @@ def test_a_stop_ends_the_parses_under_way(tmp_path, monkeypatch):
 def test_no_worker_starts_when_every_unit_is_cached(tmp_path, monkeypatch):
     from colcon_rsia.package.analysis import analyze_package
     first = analyze_package(
-        name='p', path=str(_package(tmp_path, 'p', {'n.cpp': GOOD_NODE})),
+        name='p', path=str(catkin_package(tmp_path, 'p', {'n.cpp': GOOD_NODE})),
         build_base=str(tmp_path / 'build' / 'p'), header_mode='model')
     workers.shutdown()
 

@@ -23,9 +23,9 @@ from colcon_rsia.package import cmake_configure
 from colcon_rsia.package import shared_cache
 from colcon_rsia.package.environment import environment_problems
 from conftest import run_colcon
+from helpers import catkin_package
+from helpers import GOOD_NODE
 import pytest
-from test_faults import _package
-from test_faults import GOOD_NODE
 
 UTIL_HEADER = """#pragma once
 #include <ros/ros.h>
@@ -54,7 +54,7 @@ SHARED_LINE = re.compile(
 
 def _clone(root):
     """The same two packages (3 units) at ``root``."""
-    alpha = _package(
+    alpha = catkin_package(
         root, 'alpha', {'talker.cpp': GOOD_NODE, 'ticker.cpp': TIMER_NODE})
     (alpha / 'include' / 'alpha').mkdir(parents=True)
     (alpha / 'include' / 'alpha' / 'util.hpp').write_text(UTIL_HEADER)
@@ -63,7 +63,7 @@ def _clone(root):
     for entry in entries:
         entry['command'] += f' -I{alpha / "include"}'
     database.write_text(json.dumps(entries))
-    _package(root, 'beta', {'n.cpp': GOOD_NODE})
+    catkin_package(root, 'beta', {'n.cpp': GOOD_NODE})
     return root
 
 

@@ -16,10 +16,10 @@ import subprocess
 import time
 
 from conftest import colcon_executable
+from helpers import catkin_package
+from helpers import GOOD_NODE
+from helpers import read_summary
 import pytest
-from test_faults import _package
-from test_faults import _summary
-from test_faults import GOOD_NODE
 
 # a hang is what the special files caused: anything near this is one
 HANG_TIMEOUT_S = 300
@@ -108,21 +108,21 @@ def _no_traceback(result):
 def special_files(tmp_path_factory):
     root = tmp_path_factory.mktemp('special')
     # a source, a header, an absolute include, CMakeLists.txt, FIFOs
-    package = _package(root, 'zero_source', {
+    package = catkin_package(root, 'zero_source', {
         'good.cpp': GOOD_NODE, 'zero.cpp': None})
     os.symlink('/dev/zero', package / 'src' / 'zero.cpp')
-    package = _package(root, 'zero_header', {
+    package = catkin_package(root, 'zero_header', {
         'good.cpp': '#include "zero.h"\n' + GOOD_NODE})
     os.symlink('/dev/zero', package / 'src' / 'zero.h')
-    _package(root, 'zero_absolute', {
+    catkin_package(root, 'zero_absolute', {
         'good.cpp': '#include "/dev/zero"\n' + GOOD_NODE})
-    package = _package(root, 'zero_cmake', {'good.cpp': GOOD_NODE})
+    package = catkin_package(root, 'zero_cmake', {'good.cpp': GOOD_NODE})
     (package / 'CMakeLists.txt').unlink()
     os.symlink('/dev/zero', package / 'CMakeLists.txt')
-    package = _package(root, 'fifo_source', {
+    package = catkin_package(root, 'fifo_source', {
         'good.cpp': GOOD_NODE, 'fifo.cpp': None})
     os.mkfifo(package / 'src' / 'fifo.cpp')
-    package = _package(root, 'fifo_header', {
+    package = catkin_package(root, 'fifo_header', {
         'good.cpp': '#include "fifo.h"\n' + GOOD_NODE})
     os.mkfifo(package / 'src' / 'fifo.h')
     # Python: an entry module, setup.py, a secret outside the package
@@ -165,7 +165,7 @@ def test_special_files_end_in_one_line_per_package(special_files):
 def test_special_cpp_file_is_named_and_the_node_analysed(
         special_files, package, file, reason):
     root, _ = special_files
-    summary = _summary(root, package)
+    summary = read_summary(root, package)
     assert any(d.startswith(file) and reason in d
                for d in summary['diagnostics']), summary['diagnostics']
     node = next(n for n in summary['nodes'] if n['executable'] == 'good')
@@ -175,7 +175,7 @@ def test_special_cpp_file_is_named_and_the_node_analysed(
 
 def test_cmakelists_linked_to_dev_zero_is_named(special_files):
     root, _ = special_files
-    summary = _summary(root, 'zero_cmake')
+    summary = read_summary(root, 'zero_cmake')
     assert any(d.startswith('CMakeLists.txt: ') and '/dev/zero' in d
                for d in summary['diagnostics']), summary['diagnostics']
     # a source with main() is still a node, named after its file
@@ -190,7 +190,7 @@ def test_cmakelists_linked_to_dev_zero_is_named(special_files):
 def test_special_python_module_is_named_and_the_node_analysed(
         special_files, package, file, reason):
     root, _ = special_files
-    summary = _summary(root, package)
+    summary = read_summary(root, package)
     assert any(file in d and reason in d for d in summary['diagnostics']), \
         summary['diagnostics']
     assert [n['id'] for n in summary['nodes']] == [f'{package}/talker']
@@ -198,7 +198,7 @@ def test_special_python_module_is_named_and_the_node_analysed(
 
 def test_setup_py_linked_to_dev_zero_is_named(special_files):
     root, _ = special_files
-    summary = _summary(root, 'py_setup')
+    summary = read_summary(root, 'py_setup')
     assert any(d.startswith('setup.py: ') and '/dev/zero' in d
                for d in summary['diagnostics']), summary['diagnostics']
 
@@ -211,7 +211,7 @@ def test_secret_outside_the_package_is_never_read(special_files):
 
 def test_other_packages_are_intact(special_files):
     root, _ = special_files
-    [node] = _summary(root, 'py_good')['nodes']
+    [node] = read_summary(root, 'py_good')['nodes']
     assert [(p['topic'], p['label'], p['pattern'])
             for p in node['publishers']] == \
         [('chatter', 'independent', 'no_subscribers')]
@@ -222,20 +222,20 @@ def test_files_above_the_size_limit_are_named_with_the_limit(tmp_path):
     filler = '# filler\n' * 150_000   # 1.35 MB
     _python_package(tmp_path, 'py_huge', {
         'talker': PYTHON_NODE, 'big': filler})
-    _package(tmp_path, 'cpp_huge', {
+    catkin_package(tmp_path, 'cpp_huge', {
         'good.cpp': GOOD_NODE, 'big.cpp': GOOD_NODE + '//' + filler})
     result = _analyze(tmp_path, env={'COLCON_RSIA_MAX_FILE_MB': '1'})
     assert result.returncode == 0, result.stderr
     _no_traceback(result)
     message = 'is larger than the size limit (1.3 MB > 1 MB)'
     hint = 'COLCON_RSIA_MAX_FILE_MB'
-    diagnostics = _summary(tmp_path, 'py_huge')['diagnostics']
+    diagnostics = read_summary(tmp_path, 'py_huge')['diagnostics']
     assert any('py_huge/big.py' in d and message in d and hint in d
                for d in diagnostics), diagnostics
-    diagnostics = _summary(tmp_path, 'cpp_huge')['diagnostics']
+    diagnostics = read_summary(tmp_path, 'cpp_huge')['diagnostics']
     assert any(d.startswith('src/big.cpp: ') and message in d and hint in d
                for d in diagnostics), diagnostics
-    assert [n['id'] for n in _summary(tmp_path, 'cpp_huge')['nodes']] == \
+    assert [n['id'] for n in read_summary(tmp_path, 'cpp_huge')['nodes']] == \
         ['cpp_huge/good']
 
 
@@ -370,7 +370,7 @@ LATIN1_NAME = os.fsdecode(b'caf\xe9_node')
 
 
 def test_non_utf8_file_names_are_analysed_and_shown_escaped(tmp_path):
-    package = _package(tmp_path, 'latin1_names', {'good.cpp': GOOD_NODE})
+    package = catkin_package(tmp_path, 'latin1_names', {'good.cpp': GOOD_NODE})
     source = package / 'src' / f'{LATIN1_NAME}.cpp'
     (package / 'src' / 'good.cpp').rename(source)
     raw_source = os.fsencode(source)
@@ -395,7 +395,7 @@ def test_non_utf8_file_names_are_analysed_and_shown_escaped(tmp_path):
     result = _analyze(tmp_path)
     assert result.returncode == 0, result.stderr
     _no_traceback(result)
-    summary = _summary(tmp_path, 'latin1_names')
+    summary = read_summary(tmp_path, 'latin1_names')
     # CMake garbles such names in its codemodel: not asked
     assert summary['diagnostics'] == [
         'CMakeLists.txt is not UTF-8, which CMake cannot report file names '
@@ -463,7 +463,7 @@ def test_empty_since_is_one_clear_error(system_workspace, tmp_path, subverb):
 
 @pytest.mark.parametrize('jobs', ['-3', '0', 'many'])
 def test_bad_jobs_is_a_usage_error(tmp_path, jobs):
-    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
     result = _colcon(['rsia', 'analyze', '--base-paths', str(tmp_path / 'src'),
                       '--jobs', jobs], cwd=tmp_path)
     # a usage error, which exits 1 like every error (2 is --fail-on's)
@@ -477,7 +477,7 @@ def test_bad_jobs_is_a_usage_error(tmp_path, jobs):
 # --- 10: file modes -------------------------------------------------------------
 
 def test_summaries_and_caches_follow_the_umask(tmp_path):
-    _package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
+    catkin_package(tmp_path, 'good', {'good.cpp': GOOD_NODE})
     old = os.umask(0o027)
     try:
         result = _analyze(tmp_path)  # the child inherits the umask

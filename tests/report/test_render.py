@@ -36,7 +36,7 @@ from colcon_rsia.system.graph import build_graph
 from conftest import run_colcon
 import pytest
 
-PACKAGE_DIR = Path(__file__).resolve().parents[1] / 'colcon_rsia'
+PACKAGE_DIR = Path(__file__).resolve().parents[2] / 'colcon_rsia'
 
 
 def _parse(path):
