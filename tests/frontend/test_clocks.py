@@ -6,7 +6,7 @@ The clocks themselves are in test_workspaces/ros1/src/rsia_clocks (compiled
 for real); expectations here are written by hand from the code below.
 """
 
-from conftest import analyse_source
+from conftest import analyze_source
 
 WATCHDOG = r"""
 #include <QCoreApplication>
@@ -60,7 +60,7 @@ int main(int argc, char ** argv)
 
 
 def test_another_classs_timeout_signal_is_no_clock(tmp_path):
-    summary = analyse_source(tmp_path, 'monitor', WATCHDOG)
+    summary = analyze_source(tmp_path, 'monitor', WATCHDOG)
     [node] = summary.nodes
     assert node.timers == []
     [alarm] = node.publishers

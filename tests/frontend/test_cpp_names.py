@@ -7,7 +7,7 @@ Expectations written by hand from the code below.
 
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.graph import Instance
-from conftest import analyse_source
+from conftest import analyze_source
 import pytest
 
 BUILT_NAMES = r"""
@@ -50,7 +50,7 @@ int main(int argc, char** argv)
 
 @pytest.fixture(scope='module')
 def node(tmp_path_factory):
-    summary = analyse_source(
+    summary = analyze_source(
         tmp_path_factory.mktemp('names'), 'names', BUILT_NAMES)
     [node] = summary.nodes
     return node
@@ -103,7 +103,7 @@ int main(int argc, char** argv)
 
 def test_the_launch_value_of_a_joined_parameter_makes_the_name(tmp_path):
     # ~input defaults to "points"; the code publishes input + "_filtered"
-    summary = analyse_source(tmp_path, 'cloud_filter',
+    summary = analyze_source(tmp_path, 'cloud_filter',
                              PRIVATE_PARAMETER_JOINED)
     [node] = summary.nodes
     assert _published(build_graph([summary]), node.id) == \
@@ -146,7 +146,7 @@ int main(int argc, char ** argv)
 
 
 def test_a_nodehandle_given_as_an_argument_sets_the_namespace(tmp_path):
-    summary = analyse_source(tmp_path, 'imu_filter', HANDLE_AS_ARGUMENT)
+    summary = analyze_source(tmp_path, 'imu_filter', HANDLE_AS_ARGUMENT)
     [node] = summary.nodes
     # message_filters::Subscriber(pnh, ...) subscribes in the private
     # namespace, RealtimePublisher(nh, ...) in the node's
@@ -204,7 +204,7 @@ int main(int argc, char** argv)
 def test_helpers_of_the_package_take_what_their_callers_pass(tmp_path):
     # the topic and the callback are parameters of the helper: the one
     # call in the unit gives "commands" and the lambda of main (line 38)
-    summary = analyse_source(tmp_path, 'commander', HELPERS_OF_THE_PACKAGE)
+    summary = analyze_source(tmp_path, 'commander', HELPERS_OF_THE_PACKAGE)
     [node] = summary.nodes
     assert [(s.topic, s.topic_is_literal, s.callback)
             for s in node.subscribers] == [
@@ -258,7 +258,7 @@ int main(int argc, char** argv)
 
 def test_a_nodehandle_parameter_takes_the_namespace_its_callers_pass(
         tmp_path):
-    summary = analyse_source(tmp_path, 'sim', HANDLES_MADE_FOR_EACH_CALL)
+    summary = analyze_source(tmp_path, 'sim', HANDLES_MADE_FOR_EACH_CALL)
     [node] = summary.nodes
     by_topic = {p.topic: p for p in node.publishers}
     # announce(nh): the only caller passes the "fleet" handle
@@ -312,7 +312,7 @@ int main(int argc, char** argv)
 
 
 def test_a_parameter_default_held_by_the_variable_it_sets(tmp_path):
-    summary = analyse_source(tmp_path, 'mapper', DEFAULT_HELD_BY_THE_VARIABLE)
+    summary = analyze_source(tmp_path, 'mapper', DEFAULT_HELD_BY_THE_VARIABLE)
     [node] = summary.nodes
     params = {e.topic: e.topic_param and (e.topic_param.name,
                                           e.topic_param.default)

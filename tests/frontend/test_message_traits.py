@@ -10,7 +10,7 @@ specialisations are no errors; its static assertions on values the model
 cannot know (a message's checksum) check nothing.
 """
 
-from conftest import analyse_source
+from conftest import analyze_source
 
 CUSTOM_MESSAGE = r"""
 #include <ros/ros.h>
@@ -89,7 +89,7 @@ int main(int argc, char ** argv)
 
 
 def test_a_type_made_a_message_by_its_traits_parses_cleanly(tmp_path):
-    summary = analyse_source(tmp_path, 'framer', CUSTOM_MESSAGE,
+    summary = analyze_source(tmp_path, 'framer', CUSTOM_MESSAGE,
                              repair='when-it-pays')
     [unit] = summary.coverage.units
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

@@ -22,7 +22,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.package.coverage import workspace_report
 from colcon_rsia.render.coverage import coverage_to_text
-from conftest import analyse_source
+from conftest import analyze_source
 import pytest
 
 EXAMPLES = [(rule, example) for rule in rules.RULES
@@ -172,7 +172,7 @@ def test_a_model_class_answers_what_the_users_version_has(tmp_path):
     # a getter overload, a nested pointer type and a constant the model
     # lacks, and a standard namespace's type reached through another
     # header: each is repaired by a rule that names no library
-    summary = analyse_source(tmp_path, 'newer', NEWER_LIBRARY)
+    summary = analyze_source(tmp_path, 'newer', NEWER_LIBRARY)
     [unit] = summary.coverage.units
     assert unit.package_errors == 0, summary.diagnostics
     assert sorted((rule, kind, name) for rule, kind, name in unit.repairs

@@ -21,7 +21,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.edits import MEMBER_POINTER
 from colcon_rsia.frontend.cpp.model_mode.recovery.edits import OPERAND
 from colcon_rsia.frontend.cpp.model_mode.recovery.edits import RANGE_REFERENCE
 from colcon_rsia.frontend.cpp.model_mode.recovery.edits import REINTERPRET_CAST
-from test_repair import _analyze_one_unit
+from model_sources import analyze_one_unit
 
 MISMATCH = ("return type 'double' must match previous return type 'Any' "
             'when lambda expression has unspecified explicit return type')
@@ -377,7 +377,7 @@ def test_math_functions_of_catch_alls_take_their_first_overload(tmp_path):
     # clang finds no declaration by its place: they are found among those
     # the call names (an rviz property's value and a message's field are
     # catch-alls, for float, double and long double alike)
-    summary, unit = _analyze_one_unit(tmp_path, (
+    summary, unit = analyze_one_unit(tmp_path, (
         '#include <cmath>\n'
         '#include <rclcpp/rclcpp.hpp>\n'
         '#include <acme_props/float_property.hpp>\n'
@@ -816,7 +816,7 @@ private:
 
 
 def test_a_unit_parses_clean_with_its_code_edited_in_memory(tmp_path):
-    summary, unit = _analyze_one_unit(tmp_path, UNIT)
+    summary, unit = analyze_one_unit(tmp_path, UNIT)
     assert unit.package_errors == 0, summary.diagnostics
     [node] = summary.nodes
     [publisher] = node.publishers

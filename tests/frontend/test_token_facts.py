@@ -16,7 +16,7 @@ from colcon_rsia.summary.kinds import INDEPENDENT
 from colcon_rsia.summary.kinds import ORIGIN_AST
 from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 from colcon_rsia.summary.kinds import PATTERN_TIMER
-from conftest import analyse_source
+from conftest import analyze_source
 import pytest
 
 TOKENS = ORIGIN_TOKENS
@@ -171,7 +171,7 @@ def test_a_sleep_in_a_branch_paces_nothing(tmp_path):
 def test_the_ast_wins_where_it_has_the_call(tmp_path):
     # with the model headers every call resolves: no fact from tokens,
     # none twice
-    summary = analyse_source(tmp_path, 'relay_pkg', ROS2_NODE)
+    summary = analyze_source(tmp_path, 'relay_pkg', ROS2_NODE)
     [node] = summary.nodes
     assert sorted(p.topic for p in node.publishers) == ['out', 'status']
     assert {p.origin for p in node.publishers} == {ORIGIN_AST}
@@ -197,7 +197,7 @@ def test_labels_evidence_and_coverage_say_what_came_from_tokens(tmp_path):
     text = ROS2_NODE.replace(
         'status_ = create_publisher<std_msgs::msg::String>("status", 1);',
         'status_ = create_publisher<std_msgs::msg::String>("status", 1) + ;')
-    summary = analyse_source(tmp_path, 'relay_pkg', text)
+    summary = analyze_source(tmp_path, 'relay_pkg', text)
     [node] = summary.nodes
     publishers = {p.topic: p for p in node.publishers}
     status = publishers['status']
@@ -255,7 +255,7 @@ def test_a_method_named_as_an_api_with_fewer_arguments_is_no_endpoint(
         tmp_path):
     # `Packet::subscribe(rate)`: a serial protocol's, on a template
     # parameter (the AST reads it by name) and from tokens alike
-    summary = analyse_source(tmp_path / 'ast', 'base', SERIAL_PROTOCOL)
+    summary = analyze_source(tmp_path / 'ast', 'base', SERIAL_PROTOCOL)
     [node] = summary.nodes
     assert [s.topic for s in node.subscribers] == ['command']
     facts = _facts(tmp_path, SERIAL_PROTOCOL)

@@ -7,7 +7,7 @@ errors; a call the API table names is still read by the name the code
 wrote. Expectations written by hand from the code below.
 """
 
-from conftest import analyse_source
+from conftest import analyze_source
 
 POLLING = r"""
 #include <chrono>
@@ -54,7 +54,7 @@ int main(int argc, char ** argv)
 
 
 def test_polling_subscribers_of_an_unmodelled_library_are_inputs(tmp_path):
-    summary = analyse_source(tmp_path, 'poller', POLLING)
+    summary = analyze_source(tmp_path, 'poller', POLLING)
     [node] = summary.nodes
     # both forms: the static create_subscription and the constructor of
     # a member; a polling subscription calls nothing
@@ -88,7 +88,7 @@ def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
         '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;\n'
         '  autoware_utils::InterProcessPollingSubscriber<\n'
         '    nav_msgs::msg::Odometry>::SharedPtr odom_;')
-    summary = analyse_source(tmp_path, 'poller', source)
+    summary = analyze_source(tmp_path, 'poller', source)
     assert [u.package_errors for u in summary.coverage.units] == [0], \
         summary.diagnostics
     [node] = summary.nodes
@@ -126,7 +126,7 @@ int main(int argc, char ** argv)
 
 
 def test_an_api_declared_by_the_package_that_implements_it(tmp_path):
-    summary = analyse_source(tmp_path, 'image_transport', OWN_API)
+    summary = analyze_source(tmp_path, 'image_transport', OWN_API)
     [node] = summary.nodes
     assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
         ('out', 'image_transport::ImageTransport::advertise',
@@ -162,7 +162,7 @@ int main(int argc, char** argv)
 
 
 def test_a_plugin_interface_call_is_named_by_the_objects_class(tmp_path):
-    summary = analyse_source(tmp_path, 'republish', REPUBLISH)
+    summary = analyze_source(tmp_path, 'republish', REPUBLISH)
     [node] = summary.nodes
     # the topic is the call's second argument (its first is the handle);
     # before, the functor's object `pub->advertise` was taken for the

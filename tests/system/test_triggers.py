@@ -16,7 +16,7 @@ from colcon_rsia.system.impact import rate_impact
 from colcon_rsia.system.impact import traditional_impact
 from colcon_rsia.system.rates import predict_rates
 from colcon_rsia.system.rates import what_if
-from conftest import analyse_source
+from conftest import analyze_source
 from conftest import build_workspace
 from conftest import WORKSPACES
 import pytest
@@ -311,7 +311,7 @@ int main(int argc, char **argv)
 
 
 def test_a_talker_without_inputs_has_the_rate_of_its_loop(tmp_path):
-    summary = analyse_source(tmp_path, 'talk', TALKER, file='src/talker.cpp')
+    summary = analyze_source(tmp_path, 'talk', TALKER, file='src/talker.cpp')
     [node] = summary.nodes
     [publisher] = node.publishers
     # independent because the node has no inputs; before, rate_hz was null

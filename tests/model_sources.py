@@ -1,0 +1,105 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""Sources analyzed or parsed in model mode: helpers of tests/frontend/."""
+
+from colcon_rsia.package import analysis
+from conftest import analyze_source
+
+# a ROS 2 node written against libraries the model does not have: OpenCV,
+# Eigen, a base class from another library, a generated visibility header
+DETECTOR = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <sensor_msgs/msg/image.hpp>
+#include <opencv2/core.hpp>
+#include <Eigen/Core>
+#include <vision_core/filter_base.hpp>
+#include "acme_vision/visibility_control.h"
+
+namespace acme_vision
+{
+
+class ACME_VISION_PUBLIC Detector
+  : public rclcpp::Node, public vision_core::FilterBase<float>
+{
+public:
+  Detector() : Node("detector")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("detections", 10);
+    sub_ = create_subscription<sensor_msgs::msg::Image>(
+      "image", 10,
+      [this](sensor_msgs::msg::Image::ConstSharedPtr msg) { onImage(msg); });
+  }
+
+  void configure() override { threshold_ = CV_8UC1; }
+
+private:
+  void onImage(sensor_msgs::msg::Image::ConstSharedPtr msg)
+  {
+    cv::Mat_<float> kernel(3, 3);
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    geometry::shift(kernel, offset);
+#if RSIA_TEST_VERSION_GTE(2, 0, 0)
+    std_msgs::msg::String out;
+    pub_->publish(out);
+#endif
+  }
+
+  int threshold_ = 0;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<sensor_msgs::msg::Image>::SharedPtr sub_;
+};
+
+}  // namespace acme_vision
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<acme_vision::Detector>());
+  return 0;
+}
+"""
+
+# a package acme_vision of one node, src/detector_node.cpp
+ACME_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(acme_vision)
+add_executable(detector_node src/detector_node.cpp)
+"""
+
+
+def acme_vision_package(tmp_path):
+    """The package acme_vision of DETECTOR, under `tmp_path`/src."""
+    package = tmp_path / 'src' / 'acme_vision'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'detector_node.cpp').write_text(DETECTOR)
+    (package / 'CMakeLists.txt').write_text(ACME_CMAKE)
+    return package
+
+
+def analyze_acme_vision(package, build_base, repair=analysis.REPAIR_ALWAYS):
+    """The summary of the package acme_vision at `package`, in model mode."""
+    # the tests of what repairs declare have them made whether or not the
+    # facts need them (see test_repair_only_when_it_pays)
+    return analysis.analyze_package(
+        name='acme_vision', path=str(package), build_base=str(build_base),
+        jobs=1, header_mode='model',
+        workspace_package_dirs=[str(package)], repair=repair)
+
+
+def analyze_one_unit(tmp_path, code):
+    """The summary of a package of this one source, and its unit."""
+    summary = analyze_source(
+        tmp_path / 'src', 'acme_vision', code, file='src/detector_node.cpp',
+        cmake=ACME_CMAKE, build_base=tmp_path / 'build' / 'acme_vision')
+    [unit] = summary.coverage.units
+    return summary, unit
+
+
+def line_reader(text):
+    """Read lines of `text` as the analysis reads a unit's lines."""
+    lines = text.split('\n')
+
+    def read_line(file, line):  # (as analysis.py's: '' past the end)
+        return lines[line - 1] if 0 < line <= len(lines) else ''
+    return read_line
