@@ -2,6 +2,11 @@
 # Licensed under the Apache License, Version 2.0
 """Sources analyzed or parsed in model mode: helpers of tests/frontend/."""
 
+import clang.cindex as ci
+from colcon_rsia.frontend import cpp
+from colcon_rsia.frontend.compile_db import find_resource_dir
+from colcon_rsia.frontend.cpp import model_mode
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.package import analysis
 from conftest import analyze_source
 
@@ -103,3 +108,45 @@ def line_reader(text):
     def read_line(file, line):  # (as analysis.py's: '' past the end)
         return lines[line - 1] if 0 < line <= len(lines) else ''
     return read_line
+
+
+def parse_unit(*, file, arguments, directory):
+    """The translation unit of `file`, parsed with these arguments."""
+    return cpp.parse(
+        ci.Index.create(), file=str(file), arguments=arguments,
+        resource_dir=find_resource_dir(), working_directory=str(directory))
+
+
+def write_sources(tmp_path, **texts):
+    """A package `pkg` with these files in src/: (package, [paths])."""
+    package = tmp_path / 'src' / 'pkg'
+    (package / 'src').mkdir(parents=True)
+    paths = []
+    for name, text in texts.items():
+        paths.append(package / 'src' / f'{name}.cpp')
+        paths[-1].write_text(text)
+    return package, paths
+
+
+def prepare_model_arguments(package, source, stub_dir):
+    """The compiler arguments of `source` in model mode (C++17)."""
+    return model_mode.prepare_model_arguments(
+        source=str(source), arguments=['-std=gnu++17'],
+        package_path=str(package), workspace_package_dirs=[],
+        stub_dir=str(stub_dir))
+
+
+def assert_parses_clean(tmp_path, code, repairs=()):
+    """A package of this one source parses in model mode without errors.
+
+    :param repairs: what the unit's repair header declares, if anything
+    """
+    package, [source] = write_sources(tmp_path, node=code)
+    stub_dir = tmp_path / 'stubs'
+    arguments = prepare_model_arguments(package, source, stub_dir)
+    if repairs:
+        header = store.repair_header(str(stub_dir), str(source))
+        store.add_repairs(header, str(source), set(repairs))
+        arguments = ['-include', header] + arguments
+    tu = parse_unit(file=source, arguments=arguments, directory=package)
+    assert cpp.parse_diagnostics(tu) == []
