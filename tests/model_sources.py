@@ -6,6 +6,8 @@ import clang.cindex as ci
 from colcon_rsia.frontend import cpp
 from colcon_rsia.frontend.compile_db import find_resource_dir
 from colcon_rsia.frontend.cpp import model_mode
+from colcon_rsia.frontend.cpp.model_mode.recovery import applied
+from colcon_rsia.frontend.cpp.model_mode.recovery import edits as edit_rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.package import analysis
 from conftest import analyze_source
@@ -150,3 +152,42 @@ def assert_parses_clean(tmp_path, code, repairs=()):
         arguments = ['-include', header] + arguments
     tu = parse_unit(file=source, arguments=arguments, directory=package)
     assert cpp.parse_diagnostics(tu) == []
+
+
+# a unit whose lambdas, casts and constants the in-memory edits change
+EDITED_CODE = """\
+double f(int i)
+{
+  const double a = [&]() {
+    if (i > 0) {
+      return 1.0;  // a { brace } in a comment
+    }
+    return g(i);
+  }();
+  auto b = [&] { return "}"[0] == 0 ? g(i) : 2.0; };
+  int v[2] = {1, 2};
+  if (i) {
+    return v[0];
+  }
+  auto * const row = img.ptr<float>(i);
+  constexpr double lowest = kmph2mps(10);
+  return a;
+}
+struct Limits {
+  static constexpr float max_angle = deg2rad(40.f);
+};
+"""
+
+
+def edits_of(diagnostics, code=EDITED_CODE):
+    """The edits of `code` (file a.cpp) for (message, line, column)s."""
+    return edit_rules.edits_from_diagnostics(
+        [(m, 'a.cpp', line, column) for m, line, column in diagnostics],
+        lambda file: code)
+
+
+def edited_text(edits, code=EDITED_CODE):
+    """The text of `code` with `edits` made, and where they inserted."""
+    [(text, insertions)] = applied.edited_files(
+        edits, lambda file: code).values()
+    return text.decode('latin-1'), insertions

@@ -246,3 +246,12 @@ def test_no_module_passes_800_lines():
     long = {module: lines for module, path in MODULES.items()
             if (lines := len(path.read_text().splitlines())) > 800}
     assert long == {}
+
+
+def test_no_test_file_passes_800_lines():
+    # the same for the tests: a file past that holds more than one topic
+    tests = PACKAGE_DIR.parent / 'tests'
+    long = {str(path.relative_to(tests)): lines
+            for path in sorted(tests.rglob('*.py'))
+            if (lines := len(path.read_text().splitlines())) > 800}
+    assert long == {}
