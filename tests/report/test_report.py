@@ -10,7 +10,6 @@ whose `path` points into the copy.
 
 import json
 import os
-from pathlib import Path
 import re
 import shutil
 import subprocess
@@ -37,8 +36,9 @@ from colcon_rsia.system.since import changed_since
 from colcon_rsia.system.since import ChangeError
 from conftest import run_colcon
 from conftest import WORKSPACES
+from headless import artifacts_directory
 from headless import Browser
-from headless import find_chromium
+from headless import chromium_for_test
 import pytest
 import yaml
 
@@ -420,23 +420,6 @@ def test_since_on_the_command_line(git_workspace, tmp_path):
 
 # --- the page in a real browser ------------------------------------------------
 
-def _chromium():
-    executable = find_chromium()
-    if executable is None:
-        if os.environ.get('CI'):
-            pytest.fail('chromium is not installed (.ci/install installs it)')
-        pytest.skip('chromium is not installed')
-    return executable
-
-
-def _artifacts(tmp_path):
-    directory = os.environ.get('RSIA_TEST_ARTIFACTS')
-    if not directory:
-        return tmp_path
-    Path(directory).mkdir(parents=True, exist_ok=True)
-    return Path(directory)
-
-
 ROWS_JS = """(function () {
   var rows = Array.prototype.slice.call(
     document.querySelectorAll('tr[data-filter]'));
@@ -503,7 +486,7 @@ CSP_JS = """new Promise(function (resolve) {
 
 
 def test_index_html_in_headless_chromium(system, tmp_path):
-    executable = _chromium()
+    executable = chromium_for_test()
     out = tmp_path / 'report'
     _report(system, out, [LASER])
     page = (out / 'index.html').read_text()
@@ -560,7 +543,7 @@ def test_index_html_in_headless_chromium(system, tmp_path):
         browser.evaluate(TYPE_JS % json.dumps(''))
         assert browser.evaluate(ROWS_JS)['hidden'] == []
 
-        browser.screenshot(str(_artifacts(tmp_path) / 'report.png'))
+        browser.screenshot(str(artifacts_directory(tmp_path) / 'report.png'))
         assert browser.problems() == []
         # the page itself, twice; nothing else
         assert [r.split('#')[0] for r in browser.requests()] == [url, url]
@@ -570,6 +553,6 @@ def test_index_html_in_headless_chromium(system, tmp_path):
             'connect-src http://127.0.0.1:9/probe'
         assert not any(r.startswith('http') for r in browser.requests())
     seconds = time.monotonic() - started
-    png = (_artifacts(tmp_path) / 'report.png').read_bytes()
+    png = (artifacts_directory(tmp_path) / 'report.png').read_bytes()
     assert png.startswith(b'\x89PNG') and len(png) > 20000
     assert seconds < 60

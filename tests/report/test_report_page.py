@@ -9,7 +9,6 @@ drawing; the page is opened in headless Chromium (tests/headless.py).
 
 import json
 import os
-from pathlib import Path
 import shutil
 import time
 
@@ -20,8 +19,9 @@ from colcon_rsia.report.drawing import plan_drawing
 from colcon_rsia.report.html import render_html
 from colcon_rsia.system.load import load_system
 from conftest import run_colcon
+from headless import artifacts_directory
 from headless import Browser
-from headless import find_chromium
+from headless import chromium_for_test
 import networkx as nx
 import pytest
 from synthetic_system import HUB_TOPIC
@@ -40,23 +40,6 @@ def _needs_dot():
             pytest.fail('Graphviz dot is not installed (.ci/install '
                         'installs it)')
         pytest.skip('Graphviz dot is not installed')
-
-
-def _chromium():
-    executable = find_chromium()
-    if executable is None:
-        if os.environ.get('CI'):
-            pytest.fail('chromium is not installed (.ci/install installs it)')
-        pytest.skip('chromium is not installed')
-    return executable
-
-
-def _artifacts(tmp_path):
-    directory = os.environ.get('RSIA_TEST_ARTIFACTS')
-    if not directory:
-        return tmp_path
-    Path(directory).mkdir(parents=True, exist_ok=True)
-    return Path(directory)
 
 
 @pytest.fixture(scope='module')
@@ -310,7 +293,7 @@ SORT_JS = """(function () {
 
 def test_300_nodes_in_headless_chromium(generated, tmp_path):
     _needs_dot()
-    executable = _chromium()
+    executable = chromium_for_test()
     root, changed = generated
     page = root / 'report' / 'index.html'
     url = page.as_uri()
@@ -333,7 +316,7 @@ def test_300_nodes_in_headless_chromium(generated, tmp_path):
         assert state['changedFontPx'] >= 6
         # the tables fit the 1,400 px window
         assert state['overflow'] <= 0
-        browser.screenshot(str(_artifacts(tmp_path) / 'report_300.png'))
+        browser.screenshot(str(artifacts_directory(tmp_path) / 'report_300.png'))
 
         # search: a node far from the changed one is found and centred
         far = 'pkg_036/node_0290'
