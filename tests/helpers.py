@@ -2,12 +2,14 @@
 # Licensed under the Apache License, Version 2.0
 """Helpers the test files of several subdirectories share.
 
-Packages made by hand (sources and a compile database, no build), and
-bags written at chosen rates.
+Packages made by hand (sources and a compile database, no build), bags
+written at chosen rates, expected results, colcon runs.
 """
 
 import json
 from pathlib import Path
+
+import yaml
 
 PACKAGE_XML = """<?xml version="1.0"?>
 <package format="2">
@@ -97,3 +99,23 @@ def write_bag(path, topics, storage='ros1', seconds=4.0):
         for timestamp, connection in sorted(messages, key=lambda m: m[0]):
             writer.write(connection, timestamp, data)
     return path
+
+
+def read_yaml(path):
+    """The content of a YAML file (an expected result written by hand)."""
+    with open(path) as h:
+        return yaml.safe_load(h)
+
+
+def assert_no_traceback(result):
+    """A completed colcon run printed no Python traceback."""
+    assert 'Traceback' not in result.stdout + result.stderr, \
+        result.stdout[-3000:] + result.stderr[-3000:]
+
+
+def colcon_json(workspace, *args):
+    """The JSON a `colcon rsia` query prints on the workspace's sources."""
+    result = workspace.colcon(
+        'rsia', *args, '--base-paths', str(workspace.src),
+        '--format', 'json', check=True)
+    return json.loads(result.stdout)

@@ -13,20 +13,15 @@ from colcon_rsia.package.python_nodes import find_python_nodes
 from colcon_rsia.summary.store import read_summary
 from conftest import build_workspace
 from conftest import WORKSPACES
+from helpers import read_yaml
 from projection import check_evidence
 from projection import project_nodes
 import pytest
-import yaml
 
 SRC = WORKSPACES / 'python' / 'src'
 EXPECTED = sorted((WORKSPACES / 'python' / 'expected').glob('*.yaml'))
 SECTIONS = ('publishers', 'subscribers', 'timers', 'services', 'actions')
 PUBLISH_WORDS = re.compile(r'publish|sendTransform')
-
-
-def _expected(path):
-    with open(path) as h:
-        return yaml.safe_load(h)
 
 
 def _analyse(package_path, build_base, name=None):
@@ -49,7 +44,7 @@ def _assert_matches(got_nodes, expected):
 
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_package_matches_expected_file(tmp_path, path):
-    expected = _expected(path)
+    expected = read_yaml(path)
     build_base = tmp_path / expected['package']
     summary = _analyse(SRC / expected['package'], build_base)
     assert summary['diagnostics'] == []
@@ -61,13 +56,13 @@ def test_package_matches_expected_file(tmp_path, path):
 
 def test_expected_files_cover_every_package():
     packages = {p.parent.name for p in SRC.glob('*/package.xml')}
-    assert packages == {_expected(p)['package'] for p in EXPECTED}
+    assert packages == {read_yaml(p)['package'] for p in EXPECTED}
 
 
 def test_every_label_has_evidence_pointing_at_code(tmp_path):
     checked = 0
     for path in EXPECTED:
-        package = _expected(path)['package']
+        package = read_yaml(path)['package']
         summary = _analyse(SRC / package, tmp_path / package)
         checked += check_evidence(summary, PUBLISH_WORDS)
     assert checked > 0
@@ -153,7 +148,7 @@ def test_unparsable_file_gives_one_diagnostic_and_other_nodes(tmp_path, kind):
     assert message in diagnostic
     assert "not analysed: node 'broken.py'" in diagnostic
     _assert_matches(
-        summary['nodes'], _expected(
+        summary['nodes'], read_yaml(
             WORKSPACES / 'python' / 'expected' / 'rsia_py_ros1.yaml'))
 
 
@@ -378,7 +373,7 @@ def python_workspace(tmp_path_factory):
 
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_event_handler_analyses_python_packages(python_workspace, path):
-    expected = _expected(path)
+    expected = read_yaml(path)
     assert f"rsia: {expected['package']}: " in python_workspace.stdout
     _assert_matches(
         python_workspace.summary(expected['package'])['nodes'], expected)

@@ -10,10 +10,10 @@ from colcon_rsia.summary.store import read_summary
 from colcon_rsia.system.load import load_system
 from conftest import run_colcon
 from conftest import WORKSPACES
+from helpers import read_yaml
 from projection import check_evidence
 from projection import project_nodes
 import pytest
-import yaml
 
 EXPECTED = sorted((WORKSPACES / 'ros1' / 'expected').glob('*.yaml'))
 # the calls a publish site may name, by the API that publishes there
@@ -21,14 +21,9 @@ PUBLISH_WORDS = re.compile(
     r'publish|sendTransform|unlockAndPublish|update|broadcast')
 
 
-def _expected(path):
-    with open(path) as h:
-        return yaml.safe_load(h)
-
-
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_package_matches_expected_file(ros1_workspace, path):
-    expected = _expected(path)
+    expected = read_yaml(path)
     summary = ros1_workspace.summary(expected['package'])
     want = project_nodes(expected.get('nodes') or [])
     got = project_nodes(summary['nodes'])
@@ -45,13 +40,13 @@ def test_expected_files_cover_every_analysed_package(ros1_workspace):
     analysed = {
         p.parent.parent.name
         for p in ros1_workspace.build_base.glob('*/rsia/summary.json')}
-    assert analysed == {_expected(p)['package'] for p in EXPECTED}
+    assert analysed == {read_yaml(p)['package'] for p in EXPECTED}
 
 
 def test_every_label_has_evidence_pointing_at_code(ros1_workspace):
     checked = 0
     for path in EXPECTED:
-        summary = ros1_workspace.summary(_expected(path)['package'])
+        summary = ros1_workspace.summary(read_yaml(path)['package'])
         checked += check_evidence(summary, PUBLISH_WORDS)
     assert checked > 0
 
@@ -70,7 +65,7 @@ def unbuilt_model_summaries(tmp_path_factory):
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_unbuilt_workspace_in_model_mode_matches_expected_file(
         unbuilt_model_summaries, path):
-    expected = _expected(path)
+    expected = read_yaml(path)
     summary = json.loads((
         unbuilt_model_summaries / expected['package'] / 'rsia' /
         'summary.json').read_text())
@@ -108,7 +103,7 @@ def test_node_names_come_from_ros_init(ros1_workspace):
     }
     names = {}
     for path in EXPECTED:
-        summary = ros1_workspace.summary(_expected(path)['package'])
+        summary = ros1_workspace.summary(read_yaml(path)['package'])
         names.update({n['id']: n['name'] for n in summary['nodes']})
     assert names == expected
 

@@ -6,16 +6,11 @@ import json
 
 from conftest import run_colcon
 from conftest import WORKSPACES
+from helpers import read_yaml
 from projection import project_nodes
 import pytest
-import yaml
 
 EXPECTED = sorted((WORKSPACES / 'ros2' / 'expected').glob('*.yaml'))
-
-
-def _expected(path):
-    with open(path) as h:
-        return yaml.safe_load(h)
 
 
 @pytest.fixture(scope='module')
@@ -36,7 +31,7 @@ def _summary(build_base, package):
 
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_package_matches_expected_file(ros2_build_base, path):
-    expected = _expected(path)
+    expected = read_yaml(path)
     summary = _summary(ros2_build_base, expected['package'])
     assert summary['header_mode'] == 'model'
     assert project_nodes(summary['nodes'], named=True) == \
@@ -47,14 +42,14 @@ def test_expected_files_cover_every_analysed_package(ros2_build_base):
     analysed = {
         p.parent.parent.name
         for p in ros2_build_base.glob('*/rsia/summary.json')}
-    assert analysed == {_expected(p)['package'] for p in EXPECTED}
+    assert analysed == {read_yaml(p)['package'] for p in EXPECTED}
 
 
 def test_errors_are_left_only_where_the_ast_has_every_call(ros2_build_base):
     # repairing pays only where the AST lost a call: a unit left with
     # parse errors is one whose every endpoint call has a fact of the AST
     for path in EXPECTED:
-        summary = _summary(ros2_build_base, _expected(path)['package'])
+        summary = _summary(ros2_build_base, read_yaml(path)['package'])
         problems = [d for d in summary.get('diagnostics', [])
                     if 'parse error' not in d]
         assert problems == []

@@ -22,6 +22,7 @@ from colcon_rsia.package import workers
 from conftest import build_workspace
 from conftest import colcon_executable
 from conftest import run_colcon
+from helpers import assert_no_traceback
 from helpers import catkin_package
 from helpers import GOOD_NODE
 from helpers import read_summary
@@ -45,10 +46,6 @@ int main() { return 0; }
 QUICK_UNIT = """int quick() { return 1; }
 int main() { return quick(); }
 """
-
-
-def _no_traceback(result):
-    assert 'Traceback' not in result.stdout + result.stderr
 
 
 def _analyze(root, *extra, env=None):
@@ -84,7 +81,7 @@ def crashing_unit(tmp_path_factory):
 def test_a_unit_that_crashes_libclang_ends_nothing(crashing_unit):
     root, result = crashing_unit
     assert result.returncode == 0, result.stdout + result.stderr
-    _no_traceback(result)
+    assert_no_traceback(result)
     # the crashing unit is one message; its package's other unit and the
     # package analysed after it have their facts
     assert CRASHED in read_summary(root, 'crashy')['diagnostics']
@@ -116,7 +113,7 @@ def test_a_unit_past_the_time_limit_is_stopped(tmp_path):
         'COLCON_RSIA_UNIT_TIMEOUT': '3', marker: '1'})
     elapsed = time.monotonic() - started
     assert result.returncode == 0, result.stdout + result.stderr
-    _no_traceback(result)
+    assert_no_traceback(result)
     summary = read_summary(tmp_path, 'slow')
     assert 'src/endless.cpp: not analysed: parsing took longer than 3 s ' \
         '(COLCON_RSIA_UNIT_TIMEOUT)' in summary['diagnostics']
@@ -132,7 +129,7 @@ def test_a_bad_time_limit_is_one_error_up_front(tmp_path, value):
     catkin_package(tmp_path, 'p', {'n.cpp': GOOD_NODE})
     result = _analyze(tmp_path, env={'COLCON_RSIA_UNIT_TIMEOUT': value})
     assert result.returncode != 0
-    _no_traceback(result)
+    assert_no_traceback(result)
     lines = [line for line in (result.stdout + result.stderr).splitlines()
              if 'COLCON_RSIA_UNIT_TIMEOUT' in line]
     # one line, whatever colcon puts before a verb's error
@@ -161,7 +158,7 @@ def test_an_abort_writing_the_precompiled_header_loses_no_unit(tmp_path):
         env=dict(os.environ, COLCON_HOME=str(tmp_path / '.colcon_home')),
         preexec_fn=_no_room_for_a_pch)
     assert result.returncode == 0, result.stdout + result.stderr
-    _no_traceback(result)
+    assert_no_traceback(result)
     summary = read_summary(tmp_path, 'p')
     # both units are analysed, without the precompiled header
     assert sorted(n['id'] for n in summary['nodes']) == ['p/m', 'p/n']
@@ -202,7 +199,7 @@ def test_the_build_handler_survives_a_crashing_unit(tmp_path):
     build = build_workspace(src, tmp_path / 'ws')
     output = build.stdout + build.stderr
     assert build.returncode == 0, output
-    _no_traceback(build)
+    assert_no_traceback(build)
     assert CRASHED in build.summary('crashy')['diagnostics']
     assert [n['id'] for n in build.summary('crashy')['nodes']] == \
         ['crashy/quick']

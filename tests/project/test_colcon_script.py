@@ -14,6 +14,7 @@ import os
 import re
 
 from conftest import run_colcon
+from helpers import assert_no_traceback
 from helpers import write_bag
 import pytest
 
@@ -28,14 +29,9 @@ def _subverbs():
         group='colcon_rsia.subverb'))
 
 
-def _no_traceback(result):
-    assert 'Traceback' not in result.stdout + result.stderr, \
-        result.stdout[-3000:] + result.stderr[-3000:]
-
-
 def _rsia(workspace, *args, env=None):
     result = run_colcon(['rsia', *args], cwd=workspace.root, env=env)
-    _no_traceback(result)
+    assert_no_traceback(result)
     return result
 
 
@@ -49,7 +45,7 @@ def test_the_extensions_users_install_are_installed():
 def test_help_of_every_verb(tmp_path, subverb):
     args = ['rsia'] + ([subverb] if subverb else []) + ['--help']
     result = run_colcon(args, cwd=tmp_path)
-    _no_traceback(result)
+    assert_no_traceback(result)
     assert result.returncode == 0, result.stderr
     assert 'usage: ' in result.stdout
 
@@ -184,7 +180,7 @@ def broken_workspace(tmp_path_factory):
     (package / 'src' / 'talker.cpp').write_text(TALKER)
     (package / 'src' / 'broken.cpp').write_text(BROKEN)
     result = run_colcon(['rsia', 'analyze'], cwd=root)
-    _no_traceback(result)
+    assert_no_traceback(result)
     return root, result
 
 
@@ -200,7 +196,7 @@ def test_analyze_unbuilt(broken_workspace):
 def test_problems_lists_each_with_its_place(broken_workspace):
     root, _ = broken_workspace
     result = run_colcon(['rsia', 'problems', '--format', 'json'], cwd=root)
-    _no_traceback(result)
+    assert_no_traceback(result)
     assert result.returncode == 0, result.stderr
     [package] = json.loads(result.stdout)['packages']
     assert package['package'] == 'broken_pkg'

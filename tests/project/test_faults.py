@@ -16,16 +16,13 @@ from colcon_rsia.package import runner
 from conftest import build_workspace
 from conftest import run_colcon
 from conftest import WORKSPACES
+from helpers import assert_no_traceback
 from helpers import catkin_package
 from helpers import GOOD_NODE
 from helpers import read_summary
 import pytest
 
 FAULTS = WORKSPACES / 'faults' / 'src'
-
-
-def _no_traceback(result):
-    assert 'Traceback' not in result.stdout + result.stderr
 
 
 # --- builds: the exit code is the one without the handler ------------------
@@ -45,7 +42,7 @@ def test_build_exit_code_is_the_same_with_the_handler(fault_builds):
     with_handler, without = fault_builds
     assert without.returncode != 0  # fault_broken does not compile
     assert with_handler.returncode == without.returncode
-    _no_traceback(with_handler)
+    assert_no_traceback(with_handler)
 
 
 def test_good_package_results_survive_broken_neighbours(fault_builds):
@@ -66,7 +63,7 @@ def test_malformed_package_xml_is_one_message(fault_builds):
     lines = [line for line in with_handler.stdout.splitlines()
              if line.startswith('rsia: fault_manifest')]
     assert len(lines) <= 1
-    _no_traceback(with_handler)
+    assert_no_traceback(with_handler)
 
 
 def test_python_node_with_side_effects_is_not_executed(fault_builds):
@@ -113,7 +110,7 @@ def bad_sources(tmp_path_factory):
 def test_analyze_finishes_with_one_line_per_package(bad_sources):
     root, result = bad_sources
     assert result.returncode == 0
-    _no_traceback(result)
+    assert_no_traceback(result)
     for name in ('good', 'truncated', 'latin1', 'deleted', 'nocompiler',
                  'noinclude', 'huge'):
         assert sum(line.startswith(f'rsia: {name}: ')
@@ -172,7 +169,7 @@ def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
          '--build-base', str(tmp_path / 'build'), '--header-mode', 'exact'],
         cwd=tmp_path)
     assert result.returncode == 0
-    _no_traceback(result)
+    assert_no_traceback(result)
     summary = read_summary(tmp_path, 'noinclude')
     assert any("'acme/missing.h' file not found" in d
                for d in summary['diagnostics'])
@@ -206,7 +203,7 @@ def test_symlink_loops_in_the_source_tree(tmp_path):
     os.symlink('../scripts', package / 'scripts' / 'again')
     result = _analyze(tmp_path, 'loopy')
     assert result.returncode == 0, result.stderr
-    _no_traceback(result)
+    assert_no_traceback(result)
     assert [n['id'] for n in read_summary(tmp_path, 'loopy')['nodes']] == \
         ['loopy/n']
 
@@ -239,7 +236,7 @@ def test_unusable_summary_is_one_warning_and_hides_nothing(
         ['rsia', 'graph', '--base-paths', str(system_workspace.src),
          '--build-base', str(build), '--format', 'json'], cwd=root)
     assert result.returncode == 0
-    _no_traceback(result)
+    assert_no_traceback(result)
     assert result.stderr.count(message) == 1
     assert 'sysbot_perception' in result.stderr
     ids = {n['id'] for n in json.loads(result.stdout)['nodes']}
@@ -267,7 +264,7 @@ def test_bad_launch_file_is_one_message(system_workspace, tmp_path, content,
         'rsia', 'impact', '--base-paths', str(system_workspace.src),
         '--launch', str(launch), '--changed', 'x/y')
     assert result.returncode == 1
-    _no_traceback(result)
+    assert_no_traceback(result)
     assert str(launch) in result.stderr or 'bad.launch' in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
 
@@ -295,7 +292,7 @@ def test_two_concurrent_builds_with_the_handler(tmp_path):
     assert [r.returncode for r in results] == [0, 0], \
         [r.stderr for r in results]
     for result in results:
-        _no_traceback(result)
+        assert_no_traceback(result)
     summary = first.summary('fault_good')
     assert summary['nodes'][0]['id'] == 'fault_good/talker'
     leftovers = subprocess.run(

@@ -2,22 +2,15 @@
 # Licensed under the Apache License, Version 2.0
 """End to end: build the system workspace with rsia+, then graph/impact."""
 
-import json
 
 from conftest import build_workspace
 from conftest import WORKSPACES
+from helpers import colcon_json
 import pytest
 import yaml
 
 EXPECTED = yaml.safe_load(
     (WORKSPACES / 'system' / 'expected.yaml').read_text())
-
-
-def _json(workspace, *args):
-    result = workspace.colcon(
-        'rsia', *args, '--base-paths', str(workspace.src),
-        '--format', 'json', check=True)
-    return json.loads(result.stdout)
 
 
 def test_build_prints_one_line_per_package_and_a_total(system_workspace):
@@ -29,7 +22,7 @@ def test_build_prints_one_line_per_package_and_a_total(system_workspace):
 
 
 def test_graph_json_matches_hand_derived_labels(system_workspace):
-    graph = _json(system_workspace, 'graph')
+    graph = colcon_json(system_workspace, 'graph')
     assert graph['schema'] == 'colcon-rsia/graph@1'
     got = {}
     for node in graph['nodes']:
@@ -52,7 +45,7 @@ def test_graph_json_matches_hand_derived_labels(system_workspace):
     ids=['+'.join(c.split('/')[1] for c in case['changed'])
          for case in EXPECTED['impact']])
 def test_impact_matches_hand_derived_sets(system_workspace, case):
-    result = _json(system_workspace, 'impact', '--changed', *case['changed'])
+    result = colcon_json(system_workspace, 'impact', '--changed', *case['changed'])
     # every dependent publisher here is driven by each input of its node
     # (one input each): the trigger model gives the paper's sets
     assert result == {
@@ -77,7 +70,7 @@ def test_impact_text_shows_both_sizes(system_workspace):
 
 
 def test_impact_all_matches_hand_derived_sizes(system_workspace):
-    result = _json(system_workspace, 'impact', '--all')
+    result = colcon_json(system_workspace, 'impact', '--all')
     got = {row['id']: {'rate': row['rate_impact'],
                        'traditional': row['traditional_impact']}
            for row in result['nodes']}
@@ -141,7 +134,7 @@ def test_build_without_compile_commands_warns_and_stays_green(
 
 
 def test_impact_all_under_both_models(system_workspace):
-    result = _json(system_workspace, 'impact', '--all', '--model', 'trigger')
+    result = colcon_json(system_workspace, 'impact', '--all', '--model', 'trigger')
     # one input per dependent publisher (scan_filter: /scan, obstacle_
     # detector: /image, controller: /plan, base_driver: /cmd_vel): the
     # trigger model gives the paper's sizes
@@ -155,7 +148,7 @@ def test_impact_all_under_both_models(system_workspace):
 
 
 def test_rates(system_workspace):
-    result = _json(system_workspace, 'rates')
+    result = colcon_json(system_workspace, 'rates')
     got = {t['name']: (t['hz'], t['source']) for t in result['topics']}
     # by hand: laser_driver Rate(10.0), camera_driver timer 0.05 s,
     # base_driver Rate(50.0), scan_filter stats timer 1 s, planner timer

@@ -19,6 +19,7 @@ from colcon_rsia.system.rates import what_if
 from conftest import analyze_source
 from conftest import build_workspace
 from conftest import WORKSPACES
+from helpers import colcon_json
 import pytest
 
 SRC = WORKSPACES / 'triggers' / 'src'
@@ -40,13 +41,6 @@ def system(triggers_workspace):
     summaries = [read_summary(path) for path in find_summaries(
         str(triggers_workspace.build_base)).values()]
     return build_graph(summaries)
-
-
-def _colcon_json(workspace, *args):
-    result = workspace.colcon(
-        'rsia', *args, '--base-paths', str(workspace.src), '--format',
-        'json', check=True)
-    return json.loads(result.stdout)
 
 
 def _publishers(workspace):
@@ -93,7 +87,7 @@ def test_triggers_in_the_summary(triggers_workspace):
 
 
 def test_graph_json_has_resolved_triggers(triggers_workspace):
-    graph = _colcon_json(triggers_workspace, 'graph')
+    graph = colcon_json(triggers_workspace, 'graph')
     got = {p['resolved']: p.get('triggers')
            for n in graph['nodes'] for p in n['publishers']}
     assert got == {
@@ -135,7 +129,7 @@ def test_impact_under_both_models(system, changed):
 
 
 def test_impact_all_three_sizes_and_ratios(triggers_workspace):
-    result = _colcon_json(
+    result = colcon_json(
         triggers_workspace, 'impact', '--all', '--model', 'trigger')
     got = {row['id']: (row['traditional_impact'], row['paper_impact'],
                        row['trigger_impact'], row['rate_impact'])
@@ -195,7 +189,7 @@ RATES = {
 
 
 def test_rates_json(triggers_workspace):
-    result = _colcon_json(triggers_workspace, 'rates')
+    result = colcon_json(triggers_workspace, 'rates')
     assert result['schema'] == 'colcon-rsia/rates@1'
     got = {t['name']: (t['hz'], t['source']) for t in result['topics']}
     assert got == RATES
@@ -228,8 +222,8 @@ def test_what_if_a_node_changes(triggers_workspace):
     assert '  /tf: 50 Hz -> may change' in result.stdout
     assert '  /scan_relayed keeps 10 Hz: trig_nodes/scan_relay -> ' \
         '/scan_relayed (not triggered by /tf) stops /tf' in result.stdout
-    data = _colcon_json(triggers_workspace, 'rates', '--changed',
-                        node('joints'))
+    data = colcon_json(triggers_workspace, 'rates', '--changed',
+                       node('joints'))
     assert [(c['topic'], c['to'], c['may_change'])
             for c in data['changes']] == [
         ('/joint_states', None, True), ('/status', None, True)]
