@@ -25,7 +25,7 @@ def _workspace(tmp_path):
     return tmp_path / 'src'
 
 
-def _analyse(src, build, package, package_dirs):
+def _analyze(src, build, package, package_dirs):
     return analysis.analyze_package(
         name=package, path=str(src / package), build_base=str(build / package),
         jobs=1, header_mode='model',
@@ -42,9 +42,9 @@ def test_a_library_helper_changed_changes_its_callers_facts(tmp_path):
     src = _workspace(tmp_path)
     build = tmp_path / 'build'
     both = ('rsia_ros2_common', 'rsia_ros2_wrapped')
-    _analyse(src, build, 'rsia_ros2_common', both)
+    _analyze(src, build, 'rsia_ros2_common', both)
     publishers, subscribers = _relay_topics(
-        _analyse(src, build, 'rsia_ros2_wrapped', both))
+        _analyze(src, build, 'rsia_ros2_wrapped', both))
     assert {'graph_announcements', 'relay_gauge'} <= publishers
     assert subscribers == {'cmd_vel_in', 'graph_updates'}
 
@@ -53,9 +53,9 @@ def test_a_library_helper_changed_changes_its_callers_facts(tmp_path):
     helper = src / 'rsia_ros2_common' / 'src' / 'graph_listener.cpp'
     helper.write_text(helper.read_text().replace(
         '"graph_updates"', '"graph_changes"'))
-    _analyse(src, build, 'rsia_ros2_common', both)
+    _analyze(src, build, 'rsia_ros2_common', both)
     _, subscribers = _relay_topics(
-        _analyse(src, build, 'rsia_ros2_wrapped', both))
+        _analyze(src, build, 'rsia_ros2_wrapped', both))
     assert subscribers == {'cmd_vel_in', 'graph_changes'}
 
 
@@ -66,9 +66,9 @@ def test_summaries_stored_for_another_source_tree_are_not_read(tmp_path):
     # another source tree (a workspace moved or switched): stale output
     old = tmp_path / 'old'
     shutil.copytree(src / 'rsia_ros2_common', old / 'rsia_ros2_common')
-    _analyse(old, build, 'rsia_ros2_common', ('rsia_ros2_common',))
+    _analyze(old, build, 'rsia_ros2_common', ('rsia_ros2_common',))
     assert (build / 'rsia_ros2_common' / 'rsia' / 'wrappers.json').is_file()
-    publishers, subscribers = _relay_topics(_analyse(
+    publishers, subscribers = _relay_topics(_analyze(
         src, build, 'rsia_ros2_wrapped',
         ('rsia_ros2_common', 'rsia_ros2_wrapped')))
     # the header's wrappers are read from this tree; the library's
@@ -82,14 +82,14 @@ def test_a_wrappers_file_of_another_version_is_no_crash(tmp_path):
     src = _workspace(tmp_path)
     build = tmp_path / 'build'
     both = ('rsia_ros2_common', 'rsia_ros2_wrapped')
-    _analyse(src, build, 'rsia_ros2_common', both)
+    _analyze(src, build, 'rsia_ros2_common', both)
     stored = build / 'rsia_ros2_common' / 'rsia' / 'wrappers.json'
     data = json.loads(stored.read_text())
     for wrapper in data['wrappers']:
         for endpoint in wrapper['endpoints']:
             endpoint['queue_param'] = 2   # a field this version lacks
     stored.write_text(json.dumps(data))
-    summary = _analyse(src, build, 'rsia_ros2_wrapped', both)
+    summary = _analyze(src, build, 'rsia_ros2_wrapped', both)
     assert not [d for d in summary.diagnostics if 'internal error' in d]
     publishers, _ = _relay_topics(summary)
     assert 'relay_status' in publishers and 'relay_gauge' not in publishers
@@ -185,7 +185,7 @@ def test_a_lifecycle_node_subclass_of_another_package_wraps_the_api(
         (src / relative).parent.mkdir(parents=True, exist_ok=True)
         (src / relative).write_text(text)
     both = ('acme_common', 'acme_planner')
-    summary = _analyse(src, tmp_path / 'build', 'acme_planner', both)
+    summary = _analyze(src, tmp_path / 'build', 'acme_planner', both)
     (node,) = summary.nodes
     assert [(p.topic, p.msg_type, p.api, p.label)
             for p in node.publishers] == [

@@ -14,7 +14,7 @@ from colcon_rsia.summary import store
 from colcon_rsia.summary.package_summary import PackageSummary
 
 
-def _analysed(build, name, source):
+def _analyzed(build, name, source):
     store.write_summary(str(build / name), PackageSummary(
         package=name, path=str(source), tool_version=__version__))
 
@@ -22,9 +22,9 @@ def _analysed(build, name, source):
 def test_each_dependency_without_an_analysis_of_its_sources(tmp_path):
     build = tmp_path / 'build'
     src = tmp_path / 'src'
-    _analysed(build, 'here', src / 'here')
+    _analyzed(build, 'here', src / 'here')
     # the output of a package of the same name from another source tree
-    _analysed(build, 'moved', tmp_path / 'old' / 'moved')
+    _analyzed(build, 'moved', tmp_path / 'old' / 'moved')
     store.write_failure(str(build / 'failed'), 'failed',
                         'no compile_commands.json')
     (build / 'broken' / 'rsia').mkdir(parents=True)
@@ -45,10 +45,10 @@ def test_each_dependency_without_an_analysis_of_its_sources(tmp_path):
         for p in problems)
 
 
-def test_a_summary_analysed_again_is_read_again(tmp_path):
+def test_a_summary_analyzed_again_is_read_again(tmp_path):
     build = tmp_path / 'build'
     dependency = [('lib', tmp_path / 'src' / 'lib')]
-    _analysed(build, 'lib', tmp_path / 'elsewhere' / 'lib')
+    _analyzed(build, 'lib', tmp_path / 'elsewhere' / 'lib')
     assert len(dependency_problems(str(build / 'app'), dependency)) == 1
-    _analysed(build, 'lib', tmp_path / 'src' / 'lib')
+    _analyzed(build, 'lib', tmp_path / 'src' / 'lib')
     assert dependency_problems(str(build / 'app'), dependency) == []

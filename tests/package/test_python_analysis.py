@@ -24,7 +24,7 @@ SECTIONS = ('publishers', 'subscribers', 'timers', 'services', 'actions')
 PUBLISH_WORDS = re.compile(r'publish|sendTransform')
 
 
-def _analyse(package_path, build_base, name=None):
+def _analyze(package_path, build_base, name=None):
     summary = analyze_python_package(
         name=name or package_path.name, path=str(package_path),
         build_base=str(build_base))
@@ -46,7 +46,7 @@ def _assert_matches(got_nodes, expected):
 def test_package_matches_expected_file(tmp_path, path):
     expected = read_yaml(path)
     build_base = tmp_path / expected['package']
-    summary = _analyse(SRC / expected['package'], build_base)
+    summary = _analyze(SRC / expected['package'], build_base)
     assert summary['diagnostics'] == []
     _assert_matches(summary['nodes'], expected)
     # the summary on disk is the one returned
@@ -63,18 +63,18 @@ def test_every_label_has_evidence_pointing_at_code(tmp_path):
     checked = 0
     for path in EXPECTED:
         package = read_yaml(path)['package']
-        summary = _analyse(SRC / package, tmp_path / package)
+        summary = _analyze(SRC / package, tmp_path / package)
         checked += check_evidence(summary, PUBLISH_WORDS)
     assert checked > 0
 
 
 def test_entry_module_and_entry_function_are_main_roots(tmp_path):
-    ros1 = _analyse(SRC / 'rsia_py_ros1', tmp_path / 'ros1')
+    ros1 = _analyze(SRC / 'rsia_py_ros1', tmp_path / 'ros1')
     driver = next(n for n in ros1['nodes']
                   if n['executable'] == 'sensor_driver.py')
     assert {'function': '<module>', 'kind': 'main',
             'location': 'scripts/sensor_driver.py:1'} in driver['roots']
-    ros2 = _analyse(SRC / 'rsia_py_ros2', tmp_path / 'ros2')
+    ros2 = _analyze(SRC / 'rsia_py_ros2', tmp_path / 'ros2')
     heartbeat = next(n for n in ros2['nodes']
                      if n['executable'] == 'heartbeat')
     assert {'function': 'run', 'kind': 'main',
@@ -98,7 +98,7 @@ def _catkin_package(root, name):
     return root
 
 
-def test_analysed_code_is_never_run(tmp_path):
+def test_analyzed_code_is_never_run(tmp_path):
     marker = tmp_path / 'ran.txt'
     package = _catkin_package(tmp_path / 'src' / 'writer_pkg', 'writer_pkg')
     (package / 'scripts' / 'helper.py').write_text(
@@ -116,7 +116,7 @@ def test_analysed_code_is_never_run(tmp_path):
         'pub = rospy.Publisher("beat", Empty, queue_size=1)\n'
         'rospy.Timer(rospy.Duration(0.25), lambda event: helper.beat(pub))\n'
         'rospy.Subscriber("poke", Empty, lambda msg: None)\n')
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     assert not marker.exists()
     assert summary['diagnostics'] == []
     [node] = summary['nodes']
@@ -142,7 +142,7 @@ def test_unparsable_file_gives_one_diagnostic_and_other_nodes(tmp_path, kind):
     shutil.copytree(SRC / 'rsia_py_ros1', package)
     broken = package / 'scripts' / 'broken.py'
     broken.write_bytes(content)
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     [diagnostic] = summary['diagnostics']
     assert diagnostic.startswith('scripts/broken.py: '), diagnostic
     assert message in diagnostic
@@ -152,12 +152,12 @@ def test_unparsable_file_gives_one_diagnostic_and_other_nodes(tmp_path, kind):
             WORKSPACES / 'python' / 'expected' / 'rsia_py_ros1.yaml'))
 
 
-def test_broken_helper_module_leaves_its_importers_analysed(tmp_path):
+def test_broken_helper_module_leaves_its_importers_analyzed(tmp_path):
     package = tmp_path / 'rsia_py_ros1'
     shutil.copytree(SRC / 'rsia_py_ros1', package)
     util = package / 'src' / 'rsia_py_ros1' / 'util.py'
     util.write_text('def publish_status(publisher, text)\n')
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     [diagnostic] = summary['diagnostics']
     assert diagnostic.startswith(
         'src/rsia_py_ros1/util.py: syntax error at line 1: '), diagnostic
@@ -248,7 +248,7 @@ def test_uninstalled_ros_scripts_are_nodes_run_from_source(tmp_path):
     layout = find_python_nodes(str(package))
     assert [(n.executable, n.installed) for n in layout.nodes] == \
         [('plot_speed.py', False)]
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     (node,) = summary['nodes']
     assert (node['id'], node['name']) == \
         ('tools_pkg/plot_speed.py', 'speed_plotter')
@@ -313,7 +313,7 @@ def test_overrides_and_hooks_reach_only_the_nodes_that_load_them(tmp_path):
             'def main():\n'
             '    rclpy.spin(Derived("derived"))\n'),
     })
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     assert summary['diagnostics'] == []
     # step() exists only in the subclass (a hook the base calls), react()
     # overrides the base's: both run in the derived node only
@@ -352,7 +352,7 @@ def test_rospy_details(tmp_path):
             '        rate.sleep()\n'
             'main()\n'),
     })
-    summary = _analyse(package, tmp_path / 'build')
+    summary = _analyze(package, tmp_path / 'build')
     assert summary['diagnostics'] == []
     assert _publishers(summary, 'details_pkg') == {
         # the callback_args publisher is the callback's second parameter
@@ -372,7 +372,7 @@ def python_workspace(tmp_path_factory):
 
 
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
-def test_event_handler_analyses_python_packages(python_workspace, path):
+def test_event_handler_analyzes_python_packages(python_workspace, path):
     expected = read_yaml(path)
     assert f"rsia: {expected['package']}: " in python_workspace.stdout
     _assert_matches(
@@ -399,7 +399,7 @@ def test_node_names_come_from_the_code(tmp_path):
     }
     names = {}
     for package in ('rsia_py_ros1', 'rsia_py_ros2'):
-        summary = _analyse(SRC / package, tmp_path / package)
+        summary = _analyze(SRC / package, tmp_path / package)
         names.update({n['id']: n['name'] for n in summary['nodes']})
     assert names == expected
 
@@ -407,7 +407,7 @@ def test_node_names_come_from_the_code(tmp_path):
 def test_service_clients_are_recorded(tmp_path):
     # self.create_client(Trigger, 'get_version') in heartbeat.py and
     # (Trigger, 'lights_on') in mission_server.py; no other node has one
-    summary = _analyse(SRC / 'rsia_py_ros2', tmp_path)
+    summary = _analyze(SRC / 'rsia_py_ros2', tmp_path)
     clients = {
         n['id']: [(c['name'], c['api'], c['location']) for c in n['clients']]
         for n in summary['nodes'] if n['clients']}

@@ -36,11 +36,11 @@ def test_package_matches_expected_file(ros1_workspace, path):
         assert got[node_id]['kind'] == want[node_id]['kind'], node_id
 
 
-def test_expected_files_cover_every_analysed_package(ros1_workspace):
-    analysed = {
+def test_expected_files_cover_every_analyzed_package(ros1_workspace):
+    analyzed = {
         p.parent.parent.name
         for p in ros1_workspace.build_base.glob('*/rsia/summary.json')}
-    assert analysed == {read_yaml(p)['package'] for p in EXPECTED}
+    assert analyzed == {read_yaml(p)['package'] for p in EXPECTED}
 
 
 def test_every_label_has_evidence_pointing_at_code(ros1_workspace):

@@ -38,11 +38,11 @@ def test_package_matches_expected_file(ros2_build_base, path):
         project_nodes(expected.get('nodes') or [], named=True)
 
 
-def test_expected_files_cover_every_analysed_package(ros2_build_base):
-    analysed = {
+def test_expected_files_cover_every_analyzed_package(ros2_build_base):
+    analyzed = {
         p.parent.parent.name
         for p in ros2_build_base.glob('*/rsia/summary.json')}
-    assert analysed == {read_yaml(p)['package'] for p in EXPECTED}
+    assert analyzed == {read_yaml(p)['package'] for p in EXPECTED}
 
 
 def test_errors_are_left_only_where_the_ast_has_every_call(ros2_build_base):

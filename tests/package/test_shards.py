@@ -147,7 +147,7 @@ install(TARGETS b DESTINATION bin)
 """
 
 
-def test_the_build_handler_says_a_dependency_was_not_analysed(tmp_path):
+def test_the_build_handler_says_a_dependency_was_not_analyzed(tmp_path):
     # plain CMake packages: appb depends on liba (its find_package)
     (tmp_path / 'src' / 'liba').mkdir(parents=True)
     (tmp_path / 'src' / 'liba' / 'CMakeLists.txt').write_text(LIBRARY_CMAKE)

@@ -175,7 +175,7 @@ def test_event_handler_warns_once_per_package_without_database(
 
 
 @pytest.mark.skipif(not hasattr(os, 'setpriority'), reason='POSIX only')
-def test_event_handler_analyses_at_a_lower_priority_than_the_build(
+def test_event_handler_analyzes_at_a_lower_priority_than_the_build(
         tmp_path):
     seen = {}
 
@@ -227,7 +227,7 @@ def _catkin_script_package(root):
     return package
 
 
-def test_each_package_type_has_its_analyser(tmp_path):
+def test_each_package_type_has_its_analyzer(tmp_path):
     package = _catkin_script_package(tmp_path / 'src')
     build_base = tmp_path / 'build' / 'talk_pkg'
     build_base.mkdir(parents=True)

@@ -43,7 +43,7 @@ def _node_ids(build_base):
     return ids
 
 
-def _assert_all_analysed(result, build_base, root):
+def _assert_all_analyzed(result, build_base, root):
     output = result.stdout + result.stderr
     assert result.returncode == 0, output
     assert 'analysis failed' not in output, output
@@ -63,7 +63,7 @@ def test_unbuilt_analysis_from_the_workspace_root(tmp_path, base_paths):
     args = ['rsia', 'analyze'] + (['--base-paths'] + base_paths
                                   if base_paths else [])
     result = run_colcon(args, cwd=root)
-    _assert_all_analysed(result, root / 'build', root)
+    _assert_all_analyzed(result, root / 'build', root)
 
 
 def test_build_base_outside_the_workspace(tmp_path):
@@ -71,7 +71,7 @@ def test_build_base_outside_the_workspace(tmp_path):
     elsewhere = tmp_path / 'elsewhere' / 'build'
     result = run_colcon(
         ['rsia', 'analyze', '--build-base', str(elsewhere)], cwd=root)
-    _assert_all_analysed(result, elsewhere, root)
+    _assert_all_analyzed(result, elsewhere, root)
     assert not (root / 'build').exists()
 
 
@@ -80,10 +80,10 @@ def test_symlinked_workspace(tmp_path):
     link = tmp_path / 'link'
     os.symlink(root, link)
     result = run_colcon(['rsia', 'analyze'], cwd=link)
-    _assert_all_analysed(result, Path(link) / 'build', root)
+    _assert_all_analyzed(result, Path(link) / 'build', root)
 
 
-def test_coverage_of_the_analysed_workspace(tmp_path):
+def test_coverage_of_the_analyzed_workspace(tmp_path):
     root = _workspace(tmp_path)
     run_colcon(['rsia', 'analyze'], cwd=root, check=True)
     result = run_colcon(['rsia', 'coverage', '--format', 'json'], cwd=root,
@@ -120,10 +120,10 @@ def test_coverage_names_the_packages_whose_analysis_failed(tmp_path):
     database = root / 'build' / 'cob_sensors' / 'compile_commands.json'
     database.parent.mkdir(parents=True)
     database.write_text('{ not json')
-    analysed = run_colcon(['rsia', 'analyze'], cwd=root)
+    analyzed = run_colcon(['rsia', 'analyze'], cwd=root)
     # a package failed: analyze says so in its exit code (issue 40)
-    assert analysed.returncode == 1, analysed.stdout + analysed.stderr
-    assert '1 packages failed' in analysed.stdout
+    assert analyzed.returncode == 1, analyzed.stdout + analyzed.stderr
+    assert '1 packages failed' in analyzed.stdout
     result = run_colcon(['rsia', 'coverage', '--format', 'json'], cwd=root,
                         check=True)
     by_name = {p['package']: p for p in json.loads(result.stdout)['packages']}

@@ -119,7 +119,7 @@ def test_the_sharded_workflow_on_a_pull_request(pull_request, tmp_path):
     shutil.copytree(pull_request, repo, ignore=shutil.ignore_patterns(
         'build', 'install', 'log', 'rsia-report'))
     workflow = yaml.safe_load(SHARDS_WORKFLOW.read_text())
-    analyse, rate_impact = workflow['jobs']['analyse'], \
+    analyze, rate_impact = workflow['jobs']['analyse'], \
         workflow['jobs']['rate-impact']
     assert rate_impact['needs'] == 'analyse'
     env = dict(
@@ -132,11 +132,11 @@ def test_the_sharded_workflow_on_a_pull_request(pull_request, tmp_path):
     # this workspace's shards: sysbot_perception in both
     shards = {'sensing': 'sysbot_drivers sysbot_perception',
               'navigation': 'sysbot_navigation sysbot_perception'}
-    [upload] = [s for s in analyse['steps']
+    [upload] = [s for s in analyze['steps']
                 if s.get('uses', '').startswith('actions/upload-artifact')]
     artifact = upload['with']['path']
     for name, packages in shards.items():
-        for step in analyse['steps']:
+        for step in analyze['steps']:
             if 'run' not in step or 'Install' in step['name']:
                 continue
             step_env = dict(env, **{

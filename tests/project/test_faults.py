@@ -117,7 +117,7 @@ def test_analyze_finishes_with_one_line_per_package(bad_sources):
                    for line in result.stdout.splitlines()) == 1, name
 
 
-def test_good_package_is_analysed(bad_sources):
+def test_good_package_is_analyzed(bad_sources):
     root, _ = bad_sources
     [node] = read_summary(root, 'good')['nodes']
     assert node['publishers'][0]['label'] == 'independent'
@@ -130,13 +130,13 @@ def test_truncated_source_reports_parse_errors(bad_sources):
                for d in summary['diagnostics'])
 
 
-def test_non_utf8_source_is_analysed(bad_sources):
+def test_non_utf8_source_is_analyzed(bad_sources):
     root, _ = bad_sources
     [node] = read_summary(root, 'latin1')['nodes']
     assert [p['topic'] for p in node['publishers']] == ['out']
 
 
-def test_stale_database_entry_is_named_and_the_rest_analysed(bad_sources):
+def test_stale_database_entry_is_named_and_the_rest_analyzed(bad_sources):
     root, _ = bad_sources
     summary = read_summary(root, 'deleted')
     assert any('src/gone.cpp: source file missing' in d
@@ -176,7 +176,7 @@ def test_unresolvable_include_is_named_in_exact_mode(tmp_path):
     assert 'rsia: noinclude: 0 nodes' not in result.stdout
 
 
-def test_five_megabyte_source_is_analysed(bad_sources):
+def test_five_megabyte_source_is_analyzed(bad_sources):
     root, _ = bad_sources
     assert (root / 'src/huge/src/huge.cpp').stat().st_size > 5_000_000
     [node] = read_summary(root, 'huge')['nodes']

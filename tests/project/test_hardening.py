@@ -162,7 +162,7 @@ def test_special_files_end_in_one_line_per_package(special_files):
     ('zero_absolute', "src/good.cpp: includes '/dev/zero'",
      'is not a regular file (a character device)'),
 ])
-def test_special_cpp_file_is_named_and_the_node_analysed(
+def test_special_cpp_file_is_named_and_the_node_analyzed(
         special_files, package, file, reason):
     root, _ = special_files
     summary = read_summary(root, package)
@@ -187,7 +187,7 @@ def test_cmakelists_linked_to_dev_zero_is_named(special_files):
     ('py_fifo', 'py_fifo/fifo.py', 'is not a regular file (a FIFO)'),
     ('py_secret', 'py_secret/environ.py', "is a link to '/proc/"),
 ])
-def test_special_python_module_is_named_and_the_node_analysed(
+def test_special_python_module_is_named_and_the_node_analyzed(
         special_files, package, file, reason):
     root, _ = special_files
     summary = read_summary(root, package)
@@ -369,7 +369,7 @@ def test_package_name_leaving_the_build_base_is_skipped(tmp_path, name):
 LATIN1_NAME = os.fsdecode(b'caf\xe9_node')
 
 
-def test_non_utf8_file_names_are_analysed_and_shown_escaped(tmp_path):
+def test_non_utf8_file_names_are_analyzed_and_shown_escaped(tmp_path):
     package = catkin_package(tmp_path, 'latin1_names', {'good.cpp': GOOD_NODE})
     source = package / 'src' / f'{LATIN1_NAME}.cpp'
     (package / 'src' / 'good.cpp').rename(source)
