@@ -46,10 +46,9 @@ SLOW_MODULES = frozenset({
 def pytest_collection_modifyitems(items):
     """Mark the tests that need a compiled workspace as slow."""
     for item in items:
-        module = getattr(item, 'module', None)
+        # by the file's name: the same in every subdirectory of tests/
         if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())) or \
-                (module is not None and
-                 module.__name__.rsplit('.', 1)[-1] in SLOW_MODULES):
+                Path(item.path).stem in SLOW_MODULES:
             item.add_marker(pytest.mark.slow)
 
 
@@ -84,8 +83,9 @@ class Workspace:
         return run_colcon(list(args), cwd=self.root, check=check)
 
 
-def analyse_source(root, package, text, *, file=None, repair='always'):
-    """Analyse one C++ file as a package of its own, unbuilt (model mode).
+def analyze_source(root, package, text, *, file=None, repair='always',
+                   cmake=None, build_base=None):
+    """Analyze one C++ file as a package of its own, unbuilt (model mode).
 
     Repairs are made wherever the unit has errors (`repair`): the tests of
     what a repair declares need them whether or not the facts do.
@@ -94,6 +94,8 @@ def analyse_source(root, package, text, *, file=None, repair='always'):
     :param package: the package name (its directory under ``root``)
     :param text: the file's content, written to ``src/<package>.cpp``
       unless ``file`` names another path inside the package
+    :param cmake: the package's CMakeLists.txt, if it has one
+    :param build_base: where the analysis writes (``root/b`` by default)
     :returns: the package summary
     """
     from colcon_rsia.package import analysis
@@ -101,8 +103,11 @@ def analyse_source(root, package, text, *, file=None, repair='always'):
     source = path / (file or f'src/{package}.cpp')
     source.parent.mkdir(parents=True, exist_ok=True)
     source.write_text(text)
+    if cmake is not None:
+        (path / 'CMakeLists.txt').write_text(cmake)
     return analysis.analyze_package(
-        name=package, path=str(path), build_base=str(Path(root) / 'b'),
+        name=package, path=str(path),
+        build_base=str(build_base or Path(root) / 'b'),
         jobs=1, header_mode='model', workspace_package_dirs=[str(path)],
         repair=repair)
 

@@ -12,6 +12,7 @@ import base64
 import fcntl
 import json
 import os
+from pathlib import Path
 import select
 import shutil
 import subprocess
@@ -29,6 +30,26 @@ def find_chromium():
             return found
     return '/usr/bin/chromium' if os.path.exists('/usr/bin/chromium') \
         else None
+
+
+def chromium_for_test():
+    """Chromium, or the test skipped (failed in CI, which installs it)."""
+    import pytest  # (the benchmarks use this module without pytest)
+    executable = find_chromium()
+    if executable is None:
+        if os.environ.get('CI'):
+            pytest.fail('chromium is not installed (.ci/install installs it)')
+        pytest.skip('chromium is not installed')
+    return executable
+
+
+def artifacts_directory(tmp_path):
+    """Where a test keeps its screenshots: RSIA_TEST_ARTIFACTS or tmp."""
+    directory = os.environ.get('RSIA_TEST_ARTIFACTS')
+    if not directory:
+        return tmp_path
+    Path(directory).mkdir(parents=True, exist_ok=True)
+    return Path(directory)
 
 
 # run argv[3:] with the fds argv[1] and argv[2] as fds 3 and 4

@@ -1,0 +1,173 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""APIs of a library that is neither installed nor modelled.
+
+The model mode's repairs declare such a library's classes from clang's
+errors; a call the API table names is still read by the name the code
+wrote. Expectations written by hand from the code below.
+"""
+
+from conftest import analyze_source
+
+POLLING = r"""
+#include <chrono>
+#include <memory>
+
+#include <autoware_utils/ros/polling_subscriber.hpp>
+#include <nav_msgs/msg/odometry.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Poller : public rclcpp::Node
+{
+public:
+  Poller()
+  : Node("poller")
+  {
+    kinematics_ = autoware_utils::InterProcessPollingSubscriber<
+      nav_msgs::msg::Odometry>::create_subscription(
+      this, "~/input/kinematics", 1);
+    pub_ = create_publisher<std_msgs::msg::String>("out", 1);
+    timer_ = create_wall_timer(std::chrono::milliseconds(100), [this]() {
+        auto kinematics = kinematics_->take_data();
+        auto odometry = odometry_.take_data();
+        pub_->publish(std_msgs::msg::String());
+      });
+  }
+
+private:
+  autoware_utils::InterProcessPollingSubscriber<nav_msgs::msg::Odometry>::
+  SharedPtr kinematics_;
+  // a default member initializer: run by the constructor
+  autoware_utils::InterProcessPollingSubscriber<nav_msgs::msg::Odometry>
+  odometry_{this, "~/input/odometry"};
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Poller>());
+}
+"""
+
+
+def test_polling_subscribers_of_an_unmodelled_library_are_inputs(tmp_path):
+    summary = analyze_source(tmp_path, 'poller', POLLING)
+    [node] = summary.nodes
+    # both forms: the static create_subscription and the constructor of
+    # a member; a polling subscription calls nothing
+    assert sorted((s.topic, s.msg_type, s.api, s.callback)
+                  for s in node.subscribers) == [
+        ('~/input/kinematics', 'nav_msgs::msg::Odometry',
+         'autoware_utils::InterProcessPollingSubscriber', None),
+        ('~/input/odometry', 'nav_msgs::msg::Odometry',
+         'autoware_utils::InterProcessPollingSubscriber', None),
+    ]
+    # the data are taken in the 100 ms timer: its rate, not the inputs'
+    [out] = node.publishers
+    assert (out.topic, out.label, out.pattern, out.rate_hz) == \
+        ('out', 'independent', 'timer', 10.0)
+
+
+def test_a_static_create_subscription_beside_the_nodes_own(tmp_path):
+    # the package also calls a node's `create_subscription<M>(...)`: every
+    # catch-all then has a member template of that name, which a static
+    # call reaches through the unknown class template, and through the
+    # class a member's pointer type names (`decltype(odom_)::element_type`)
+    source = POLLING.replace(
+        '    pub_ = create_publisher',
+        '    sub_ = this->create_subscription<std_msgs::msg::String>(\n'
+        '      "in", 1, [](std_msgs::msg::String::SharedPtr) {});\n'
+        '    odom_ = decltype(odom_)::element_type::create_subscription(\n'
+        '      this, "~/input/odom", 1);\n'
+        '    pub_ = create_publisher').replace(
+        '  rclcpp::TimerBase::SharedPtr timer_;',
+        '  rclcpp::TimerBase::SharedPtr timer_;\n'
+        '  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;\n'
+        '  autoware_utils::InterProcessPollingSubscriber<\n'
+        '    nav_msgs::msg::Odometry>::SharedPtr odom_;')
+    summary = analyze_source(tmp_path, 'poller', source)
+    assert [u.package_errors for u in summary.coverage.units] == [0], \
+        summary.diagnostics
+    [node] = summary.nodes
+    assert sorted((s.topic, s.api) for s in node.subscribers) == [
+        ('in', 'rclcpp::Node::create_subscription'),
+        ('~/input/kinematics', 'autoware_utils::InterProcessPollingSubscriber'),
+        ('~/input/odom', 'autoware_utils::InterProcessPollingSubscriber'),
+        ('~/input/odometry', 'autoware_utils::InterProcessPollingSubscriber'),
+    ]
+
+
+# the package that implements an API: its own declaration is the API's
+OWN_API = r"""
+#include <ros/ros.h>
+namespace image_transport
+{
+class Publisher {};
+class ImageTransport
+{
+public:
+  explicit ImageTransport(const ros::NodeHandle & nh);
+  Publisher advertise(const std::string & base_topic, uint32_t queue_size);
+};
+}  // namespace image_transport
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "republish");
+  ros::NodeHandle nh;
+  image_transport::ImageTransport it(nh);
+  image_transport::Publisher pub = it.advertise("out", 1);
+  ros::spin();
+}
+"""
+
+
+def test_an_api_declared_by_the_package_that_implements_it(tmp_path):
+    summary = analyze_source(tmp_path, 'image_transport', OWN_API)
+    [node] = summary.nodes
+    assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
+        ('out', 'image_transport::ImageTransport::advertise',
+         'sensor_msgs::Image')]
+
+
+# image_transport's republish: an output transport loaded as a plugin, its
+# publisher made through the plugin interface (no model of it: the repairs
+# declare image_transport::PublisherPlugin, whose advertise is then a
+# member every catch-all has, called like a functor)
+REPUBLISH = r"""
+#include <ros/ros.h>
+#include <image_transport/image_transport.h>
+#include <image_transport/publisher_plugin.h>
+#include <pluginlib/class_loader.h>
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "image_republisher");
+  ros::NodeHandle nh;
+  image_transport::ImageTransport it(nh);
+  typedef image_transport::PublisherPlugin Plugin;
+  pluginlib::ClassLoader<Plugin> loader("image_transport",
+                                        "image_transport::PublisherPlugin");
+  boost::shared_ptr<Plugin> pub(loader.createInstance("raw_pub"));
+  pub->advertise(nh, "out", 1, image_transport::SubscriberStatusCallback(),
+                 image_transport::SubscriberStatusCallback(), ros::VoidPtr(),
+                 false);
+  image_transport::Subscriber sub = it.subscribe("in", 1, &callback);
+  ros::spin();
+}
+"""
+
+
+def test_a_plugin_interface_call_is_named_by_the_objects_class(tmp_path):
+    summary = analyze_source(tmp_path, 'republish', REPUBLISH)
+    [node] = summary.nodes
+    # the topic is the call's second argument (its first is the handle);
+    # before, the functor's object `pub->advertise` was taken for the
+    # first argument and the call for NodeHandle::advertise by its name
+    assert [(p.topic, p.api, p.msg_type) for p in node.publishers] == [
+        ('out', 'image_transport::PublisherPlugin::advertise',
+         'sensor_msgs::Image')]
+    assert [s.topic for s in node.subscribers] == ['in']
