@@ -6,7 +6,7 @@ The C++ and the Python front end answer syntax questions (is this a loop,
 a branch, a `continue`; where was this clock made); this module owns the
 rules they feed: the loop context a call is made in, and when a sleep paces
 its loop, with the fact that says so. One place, so the languages cannot
-drift apart again (see tests/test_cpp_python_parity.py).
+drift apart again (see tests/frontend/test_cpp_python_parity.py).
 """
 
 from contextlib import contextmanager

@@ -85,7 +85,7 @@ def default_jobs():
 
 # the time limit of one unit unless the variable says otherwise: a ROS unit
 # parses in seconds, its repair rounds take a few parses more; the 5 MB
-# generated unit of tests/test_faults.py (90,000 functions) takes 4 minutes
+# generated unit of tests/project/test_faults.py (90,000 functions) takes 4 minutes
 # with its repairs on a busy 2-core machine, and a unit may be 8 MB (the
 # file size limit). Past 15 minutes a parse does not end (a constexpr
 # loop, a template explosion)

@@ -11,7 +11,7 @@ code below: the node runs once, unnamespaced, under its default name.
 
 from colcon_rsia.system.graph import build_graph
 from colcon_rsia.system.graph import Instance
-from conftest import analyse_source
+from conftest import analyze_source
 
 PASSED_TO_A_HELPER = r"""
 #include <rclcpp/rclcpp.hpp>
@@ -78,7 +78,7 @@ def _resolved(summary):
 
 
 def test_a_parameter_default_passed_to_a_helper_names_its_topics(tmp_path):
-    summary = analyse_source(tmp_path, 'mapper', PASSED_TO_A_HELPER)
+    summary = analyze_source(tmp_path, 'mapper', PASSED_TO_A_HELPER)
     [node] = summary.nodes
     params = {e.location: (e.topic_param.name, e.topic_param.default,
                            e.topic_param.suffix)
@@ -160,7 +160,7 @@ int main(int argc, char ** argv)
 
 
 def test_a_member_default_overwritten_by_its_own_topic_name(tmp_path):
-    summary = analyse_source(tmp_path, 'reporter', MEMBER_DEFAULTS)
+    summary = analyze_source(tmp_path, 'reporter', MEMBER_DEFAULTS)
     publishers, _ = _resolved(summary)
     # topic_name_{"odom"} is set again only to the name of the publisher
     # made with it; status_name_ to the name of another one: unknown
@@ -195,7 +195,7 @@ int main(int argc, char ** argv)
 
 
 def test_names_expanded_by_rclcpp_are_the_names_expanded(tmp_path):
-    summary = analyse_source(tmp_path, 'relay', EXPANDED_NAMES)
+    summary = analyze_source(tmp_path, 'relay', EXPANDED_NAMES)
     publishers, subscribers = _resolved(summary)
     assert publishers == {'src/relay.cpp:17': '/out',
                           'src/relay.cpp:18': '/relay/echo'}
@@ -249,7 +249,7 @@ int main(int argc, char** argv)
 
 
 def test_names_a_nodehandle_resolves_are_names_of_that_handle(tmp_path):
-    summary = analyse_source(tmp_path, 'republish', RESOLVED_BY_HANDLES)
+    summary = analyze_source(tmp_path, 'republish', RESOLVED_BY_HANDLES)
     publishers, subscribers = _resolved(summary)
     assert publishers == {'src/republish.cpp:17': '/cloud',
                           'src/republish.cpp:35': '/out',
@@ -301,7 +301,7 @@ int main(int argc, char** argv)
 
 
 def test_the_node_name_names_what_is_under_it(tmp_path):
-    summary = analyse_source(tmp_path, 'fibonacci', NAMED_AFTER_THE_NODE)
+    summary = analyze_source(tmp_path, 'fibonacci', NAMED_AFTER_THE_NODE)
     publishers, _ = _resolved(summary)
     [instance] = build_graph([summary]).instances.values()
     # ros::this_node::getName() is /fibonacci: the action's goal and
@@ -350,7 +350,7 @@ int main(int argc, char ** argv)
 
 
 def test_a_variable_a_helper_may_set_keeps_no_default(tmp_path):
-    summary = analyse_source(tmp_path, 'mapper', SET_BY_A_HELPER)
+    summary = analyze_source(tmp_path, 'mapper', SET_BY_A_HELPER)
     [publisher] = summary.nodes[0].publishers
     assert publisher.topic_param is None or \
         publisher.topic_param.default is None
@@ -391,7 +391,7 @@ int main(int argc, char ** argv)
 
 
 def test_a_parameter_client_subscribes_to_parameter_events(tmp_path):
-    summary = analyse_source(tmp_path, 'tuner', PARAMETER_EVENTS)
+    summary = analyze_source(tmp_path, 'tuner', PARAMETER_EVENTS)
     [node] = summary.nodes
     [subscriber] = node.subscribers
     assert (subscriber.topic, subscriber.location) == (
@@ -434,7 +434,7 @@ PLUGINLIB_EXPORT_CLASS(demo::Reader, nodelet::Nodelet)
 
 
 def test_a_handle_of_another_library_has_no_namespace_known(tmp_path):
-    summary = analyse_source(tmp_path, 'reader', HANDLES_OF_ANOTHER_LIBRARY)
+    summary = analyze_source(tmp_path, 'reader', HANDLES_OF_ANOTHER_LIBRARY)
     publishers, subscribers = _resolved(summary)
     # relative to a namespace the library's code gives pnh_: not the root
     assert publishers == {'src/reader.cpp:17': None,
@@ -479,7 +479,7 @@ int main(int argc, char ** argv)
 
 
 def test_defaults_held_by_members_before_the_read(tmp_path):
-    summary = analyse_source(tmp_path, 'echo', MEMBER_HELD_DEFAULTS)
+    summary = analyze_source(tmp_path, 'echo', MEMBER_HELD_DEFAULTS)
     [node] = summary.nodes
     # in_("chatter") in the initialiser list, out_{"echoed"} in the class
     assert {(e.topic_param.name, e.topic_param.default)
