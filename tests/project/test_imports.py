@@ -240,6 +240,55 @@ def test_colcon_calls_do_not_import_heavy_modules():
     assert result.stdout.strip().splitlines()[-1] == '[]'
 
 
+CPP = 'colcon_rsia.frontend.cpp'
+# the C++ walker's helpers: given what they use, never the walker
+WALKER_HELPERS = ('roles', 'hosted', 'clocks', 'wrappers', 'strings',
+                  'callbacks')
+
+
+def _walker_references(path):
+    """Where a module names `walker` (a variable, attribute, parameter)."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        name = node.id if isinstance(node, ast.Name) else \
+            node.attr if isinstance(node, ast.Attribute) else \
+            node.arg if isinstance(node, ast.arg) else None
+        if name is not None and name.lstrip('_') == 'walker':
+            found.append(f'{path.name}:{node.lineno}')
+    return found
+
+
+def test_walker_reference_finder_finds_one(tmp_path):
+    path = tmp_path / 'helper.py'
+    path.write_text(
+        'class H:\n'
+        '    def __init__(self, walker):\n'
+        '        self._walker = walker\n')
+    assert _walker_references(path) == [
+        'helper.py:2', 'helper.py:3', 'helper.py:3']
+
+
+def test_cpp_walker_helpers_get_what_they_use_not_the_walker():
+    # the walker hands its helpers the facts, the walk's Places and the
+    # functions they call (questions.py): a helper holding the walker, or
+    # importing it, could reach any of its state
+    wrong = []
+    for helper in WALKER_HELPERS:
+        path = MODULES[f'{CPP}.{helper}']
+        wrong.extend(_walker_references(path))
+        if f'{CPP}.walker' in _imports(path):
+            wrong.append(f'{path.name} imports walker')
+    assert wrong == []
+
+
+def test_cpp_walker_mixes_in_no_helper():
+    # its helpers are objects it builds, not base classes of its own
+    tree = ast.parse(MODULES[f'{CPP}.walker'].read_text())
+    bases = [(node.name, len(node.bases)) for node in ast.walk(tree)
+             if isinstance(node, ast.ClassDef) and node.bases]
+    assert bases == []
+
+
 def test_no_module_passes_800_lines():
     # a module past that holds more than one idea: split it (the layout
     # shows the architecture only while each room stays small)
