@@ -289,6 +289,53 @@ def test_cpp_walker_mixes_in_no_helper():
     assert bases == []
 
 
+FRONTEND = PACKAGE_DIR / 'frontend'
+
+
+def _fact_classes():
+    """The classes of frontend/facts.py."""
+    tree = ast.parse((FRONTEND / 'facts.py').read_text())
+    return {node.name for node in tree.body if isinstance(node, ast.ClassDef)}
+
+
+def _fact_constructions(path, classes):
+    """Where a module calls one of `classes` (by name or as facts.X)."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else \
+            func.attr if isinstance(func, ast.Attribute) else None
+        if name in classes:
+            found.append(f'{path.name}:{node.lineno} {name}')
+    return found
+
+
+def test_fact_construction_finder_finds_one(tmp_path):
+    path = tmp_path / 'roles.py'
+    path.write_text(
+        'from colcon_rsia.frontend import facts\n'
+        'from colcon_rsia.frontend.facts import TimerFact\n'
+        'isinstance(x, TimerFact)\n'
+        'a = TimerFact(function=None)\n'
+        'b = facts.PublishSite()\n')
+    assert _fact_constructions(path, _fact_classes()) == [
+        'roles.py:4 TimerFact', 'roles.py:5 PublishSite']
+
+
+def test_front_ends_make_facts_through_the_fact_builder():
+    # one place makes facts (frontend/fact_builder.py): the front ends
+    # say what a call's arguments mean, never how a fact is built
+    classes = _fact_classes()
+    assert {'PublisherFact', 'TimerFact', 'Call', 'TuFacts'} <= classes
+    wrong = []
+    for front_end in ('cpp', 'python'):
+        for path in sorted((FRONTEND / front_end).rglob('*.py')):
+            wrong.extend(_fact_constructions(path, classes))
+    assert wrong == []
+
+
 def test_no_module_passes_800_lines():
     # a module past that holds more than one idea: split it (the layout
     # shows the architecture only while each room stays small)

@@ -13,6 +13,7 @@ callers' names and callbacks.
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
@@ -27,8 +28,6 @@ from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.hosted import node_handle_marker
 from colcon_rsia.frontend.cpp.strings import written_name
-from colcon_rsia.frontend.facts import ParamBinding
-from colcon_rsia.frontend.facts import StringArgument
 
 CK = ci.CursorKind
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
@@ -147,20 +146,20 @@ class Callbacks:
             if caller is not None and is_string(argument):
                 value, literal = written_name(argument)
                 if literal:
-                    self.facts.string_arguments.append(StringArgument(
-                        caller=caller, callee=callee, index=index,
-                        value=value))
+                    fact_builder.add_string_argument(
+                        self.facts, caller=caller, callee=callee, index=index,
+                        value=value)
                     continue
             handle = plain_handle(argument)
             if handle is not None and self.places.in_package(handle):
-                self.facts.bindings.append(ParamBinding(
-                    callee=callee, index=index, handle=handle.get_usr()))
+                fact_builder.add_binding(
+                    self.facts, callee=callee, index=index, handle=handle.get_usr())
             elif node_handle_marker(argument) is not None:
                 # a handle made in place (getPrivateNodeHandle(),
                 # ros::NodeHandle("~")): its namespace marker
-                self.facts.bindings.append(ParamBinding(
-                    callee=callee, index=index,
-                    handle=node_handle_marker(argument)))
+                fact_builder.add_binding(
+                    self.facts, callee=callee, index=index,
+                    handle=node_handle_marker(argument))
 
     def _bound_arguments(self, argument):
         """Handles bound by boost::bind / std::bind to the callback."""

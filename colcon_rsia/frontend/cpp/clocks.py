@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
@@ -47,9 +48,6 @@ from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.questions import paced_loop
 from colcon_rsia.frontend.cpp.questions import record_paced_loop
 from colcon_rsia.frontend.cpp.questions import stored_target
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import TimerFact
 
 CK = ci.CursorKind
 
@@ -116,10 +114,10 @@ class OtherClocks:
         callback = self._slot(arguments, written)
         if callback is None:
             return
-        fact = TimerFact(
-            function=ctx.function, api=api.label, callback=callback,
-            period='', rate_hz=None, location=self.places.location(cursor))
-        self.facts.timers.append(fact)
+        fact = fact_builder.add_timer(
+            self.facts, function=ctx.function, api=api.label,
+            callback=callback, period='', rate_hz=None,
+            location=self.places.location(cursor))
         self._connected.append((fact, sender.get_usr()))
 
     def _slot(self, arguments, written):
@@ -169,10 +167,10 @@ class OtherClocks:
         period = role_argument(arguments, api.period_arg)
         seconds = _period_seconds(period, api.period_unit) \
             if period is not None else None
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=name, callback=method.get_usr(),
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=name, callback=method.get_usr(),
             period=expression_text(period) if period is not None else '',
-            rate_hz=recorder.rate_of_period(seconds), location=self.places.location(cursor)))
+            rate_hz=recorder.rate_of_period(seconds), location=self.places.location(cursor))
 
     # --- boost::asio ---------------------------------------------------------
 
@@ -203,11 +201,11 @@ class OtherClocks:
         step = _advance(loop, deadline)
         if step is None:
             return  # a deadline that never moves
-        self.facts.rates.append(RateObject(
-            handle=deadline.get_usr(),
+        fact_builder.add_rate(
+            self.facts, handle=deadline.get_usr(),
             rate_hz=recorder.rate_of_period(_period_seconds(step, 1.0)),
             expression=expression_text(step),
-            location=self.places.location(step)))
+            location=self.places.location(step))
         record_paced_loop(
             self.facts, self.places.location, ctx, loop_id=loop_id,
             loop=loop, clock=deadline, sleep=cursor)
@@ -221,9 +219,9 @@ class OtherClocks:
             if timer in self._single_shot:
                 # fires once: called from where it is connected
                 facts.timers.remove(fact)
-                facts.calls.append(Call(
-                    caller=fact.function, callee=fact.callback,
-                    location=fact.location, loops=[], kind='ref'))
+                fact_builder.add_call(
+                    facts, caller=fact.function, callee=fact.callback,
+                    location=fact.location, loops=[], kind='ref')
                 continue
             fact.period, fact.rate_hz = self._period_of(timer)
         added = set()
@@ -232,18 +230,18 @@ class OtherClocks:
                           other.function in wait.reaches
                           for other in self._waits)
             if not rearmed:
-                facts.calls.append(Call(
-                    caller=wait.function, callee=wait.callback,
-                    location=wait.location, loops=wait.loops, kind='ref'))
+                fact_builder.add_call(
+                    facts, caller=wait.function, callee=wait.callback,
+                    location=wait.location, loops=wait.loops, kind='ref')
                 continue
             if (wait.timer, wait.callback) in added:
                 continue
             added.add((wait.timer, wait.callback))
             period, rate_hz = self._period_of(wait.timer)
-            facts.timers.append(TimerFact(
-                function=wait.function, api=wait.api,
+            fact_builder.add_timer(
+                facts, function=wait.function, api=wait.api,
                 callback=wait.callback, period=period, rate_hz=rate_hz,
-                location=wait.location))
+                location=wait.location)
 
     def _period_of(self, timer):
         """(period as written, Hz) of a timer object.

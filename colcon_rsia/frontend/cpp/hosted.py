@@ -14,6 +14,7 @@ walker's table like those of :mod:`colcon_rsia.frontend.cpp.roles`:
 """
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
@@ -22,8 +23,6 @@ from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.strings import unquote
 from colcon_rsia.frontend.cpp.strings import written_name
-from colcon_rsia.frontend.facts import HostEvent
-from colcon_rsia.frontend.facts import NodeletLoad
 
 CK = ci.CursorKind
 
@@ -48,20 +47,20 @@ class HostedRoles:
     def _on_host_event(self, cursor, ctx, stack, api, name, arguments):
         callback, _ = self.resolve_callback(
             role_argument(arguments, api.callback_arg))
-        self.facts.host_events.append(HostEvent(
-            function=ctx.function, api=name, callback=callback,
-            location=self.places.location(cursor)))
+        fact_builder.add_host_event(
+            self.facts, function=ctx.function, api=name, callback=callback,
+            location=self.places.location(cursor))
 
     def _on_nodelet_load(self, cursor, ctx, stack, api, name, arguments):
         nodelet_name, name_known = written_name(
             role_argument(arguments, api.name_arg))
         nodelet_type, type_known = written_name(
             role_argument(arguments, api.type_name_arg))
-        self.facts.nodelet_loads.append(NodeletLoad(
-            function=ctx.function,
+        fact_builder.add_nodelet_load(
+            self.facts, function=ctx.function,
             name=nodelet_name if name_known else None,
             type=nodelet_type if type_known else None,
-            location=self.places.location(cursor)))
+            location=self.places.location(cursor))
 
 
 def node_handle_marker(argument):

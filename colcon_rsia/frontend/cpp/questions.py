@@ -16,6 +16,7 @@ the C++ syntax.
 import os
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import binary_operator
@@ -31,7 +32,6 @@ from colcon_rsia.frontend.cpp.cursors import top_level_scopes
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.every_nth import every_nth
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
-from colcon_rsia.frontend.facts import PublishSite
 
 CK = ci.CursorKind
 
@@ -200,7 +200,7 @@ def record_paced_loop(facts, location, ctx, *, loop_id, loop, clock, sleep):
 
 def record_publish_site(facts, location, ctx, stack, cursor, api, handle):
     """Record a publish call through `handle` (a USR) at `cursor`."""
-    facts.publish_sites.append(PublishSite(
-        function=ctx.function, api=api, handle=handle,
+    fact_builder.add_publish_site(
+        facts, function=ctx.function, api=api, handle=handle,
         location=location(cursor), loops=ctx.loop_ids(),
-        every=every_nth(stack + [cursor])))
+        every=every_nth(stack + [cursor]))

@@ -14,6 +14,7 @@ import dataclasses
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import hosted
@@ -44,21 +45,6 @@ from colcon_rsia.frontend.cpp.questions import record_publish_site
 from colcon_rsia.frontend.cpp.questions import stored_target
 from colcon_rsia.frontend.cpp.strings import string_parts
 from colcon_rsia.frontend.cpp.strings import written_name
-from colcon_rsia.frontend.facts import ActionFact
-from colcon_rsia.frontend.facts import ClientFact
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import HandleAlias
-from colcon_rsia.frontend.facts import NodeHandleFact
-from colcon_rsia.frontend.facts import NodeNameFact
-from colcon_rsia.frontend.facts import ParamRead
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import PublishSite
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import Registration
-from colcon_rsia.frontend.facts import ServiceFact
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import SyncFact
-from colcon_rsia.frontend.facts import TimerFact
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
@@ -174,9 +160,9 @@ class RosRoles:
                 role_argument(arguments, position))[0]] if callback]
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.publishers.append(PublisherFact(
-                handle_name=target.spelling if target is not None else None,
-                status_callbacks=status_callbacks, **common))
+            fact_builder.add_publisher(
+                self.facts, handle_name=target.spelling if target is not None else None,
+                status_callbacks=status_callbacks, **common)
         self.string_variables.concatenation(
             self.facts.publishers[-1:], literal,
             role_argument(arguments, api.name_arg))
@@ -196,9 +182,9 @@ class RosRoles:
         target = stored_target(cursor, stack)
         handle = first_handle(wrapped)
         if target is not None and handle is not None:
-            self.facts.handle_aliases.append(HandleAlias(
-                alias=target.get_usr(), handle=handle.get_usr(),
-                location=self.places.location(cursor)))
+            fact_builder.add_handle_alias(
+                self.facts, alias=target.get_usr(), handle=handle.get_usr(),
+                location=self.places.location(cursor))
         return True
 
     def _argument_msg_type(self, arguments, api):
@@ -340,8 +326,8 @@ class RosRoles:
             target = first_handle(call_object(cursor))
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.subscribers.append(SubscriberFact(
-                callback=callback, **common))
+            fact_builder.add_subscriber(
+                self.facts, callback=callback, **common)
         self.string_variables.concatenation(
             self.facts.subscribers[-1:], literal,
             role_argument(arguments, api.name_arg))
@@ -403,12 +389,11 @@ class RosRoles:
         if default_argument is not None:
             default, is_literal = written_name(default_argument)
             default = default if is_literal else None
-        read = ParamRead(
-            function=ctx.function, name=param, default=default,
+        read = fact_builder.add_param_read(
+            self.facts, function=ctx.function, name=param, default=default,
             handle=target.get_usr() if target is not None else None,
             nh='~' if api.node_private else self._namespace_of(cursor),
             location=self.places.location(cursor))
-        self.facts.param_reads.append(read)
         parts = string_parts(default_argument) \
             if default_argument is not None and default is None else None
         if parts and len(parts) == 1 and parts[0][0] == 'variable':
@@ -440,10 +425,10 @@ class RosRoles:
             handle = first_handle(role_argument(arguments, api.name_arg))
             if handle is not None and handle.kind == CK.PARM_DECL:
                 name_param = handle.get_usr()
-        self.facts.node_names.append(NodeNameFact(
-            function=ctx.function, name=node_name if literal else None,
+        fact_builder.add_node_name(
+            self.facts, function=ctx.function, name=node_name if literal else None,
             namespace=namespace, location=self.places.location(cursor),
-            name_param=name_param))
+            name_param=name_param)
 
     def _on_timed_publisher(self, cursor, ctx, stack, api, name, arguments):
         """An object publishing from a timer of its own (ROS 2 Updater).
@@ -459,26 +444,26 @@ class RosRoles:
         location = self.places.location(cursor)
         # what the real timer calls; the id is unique per object
         callback = f'{api.label}::update@{location}'
-        self.facts.functions.append(Function(
-            id=callback, name=f'{api.label}::update', location=location))
+        fact_builder.add_function(
+            self.facts, id=callback, name=f'{api.label}::update', location=location)
         period = role_argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
         rate_hz = recorder.rate_of_period(seconds)
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=api.label, callback=callback,
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=api.label, callback=callback,
             period=expression_text(period) if period is not None
             else str(api.default_period),
-            rate_hz=rate_hz, location=location))
-        self.facts.publish_sites.append(PublishSite(
-            function=callback, api=api.label, handle=target.get_usr(),
-            location=location))
+            rate_hz=rate_hz, location=location)
+        fact_builder.add_publish_site(
+            self.facts, function=callback, api=api.label, handle=target.get_usr(),
+            location=location)
 
     def _on_client(self, cursor, ctx, stack, api, name, arguments):
         service, _ = written_name(role_argument(arguments, api.name_arg))
-        self.facts.clients.append(ClientFact(
-            function=ctx.function, api=name, name=service,
-            location=self.places.location(cursor)))
+        fact_builder.add_client(
+            self.facts, function=ctx.function, api=name, name=service,
+            location=self.places.location(cursor))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
         made = self._timer_options(arguments)
@@ -492,12 +477,12 @@ class RosRoles:
         if made is not None and callback:
             self.stored_then_registered.add(callback)
         period = role_argument(arguments, api.period_arg)
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=ros_api.api_label(name),
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=ros_api.api_label(name),
             callback=callback,
             period=expression_text(period) if period is not None else '',
             rate_hz=_period_rate_hz(period),
-            location=self.places.location(cursor)))
+            location=self.places.location(cursor))
 
     def _timer_options(self, arguments):
         """The arguments a timer's options object was constructed with."""
@@ -520,10 +505,9 @@ class RosRoles:
         service, literal = written_name(argument)
         callback, _ = self.resolve_callback(
             role_argument(arguments, api.callback_arg))
-        fact = ServiceFact(
-            function=ctx.function, api=name, name=service,
+        fact = fact_builder.add_service(
+            self.facts, function=ctx.function, api=name, name=service,
             callback=callback, location=self.places.location(cursor))
-        self.facts.services.append(fact)
         handle = first_handle(argument) if not literal else None
         if handle is not None:
             self.string_variables.name_from(fact, handle.get_usr())
@@ -543,12 +527,12 @@ class RosRoles:
         is_registration = api.name_arg is None
         target = first_handle(call_object(cursor)) if is_registration \
             else stored_target(cursor, stack)
-        self.facts.actions.append(ActionFact(
-            function=ctx.function, api=ros_api.api_label(name), role=role,
+        fact_builder.add_action(
+            self.facts, function=ctx.function, api=ros_api.api_label(name), role=role,
             name=action, callbacks=callbacks,
             handle=target.get_usr() if target is not None else None,
             location=self.places.location(cursor) if not is_registration
-            else 'registration:' + self.places.location(cursor)))
+            else 'registration:' + self.places.location(cursor))
         if action is not None and api.action_inputs:
             self._action_inputs(cursor, ctx, api, name, arguments, action,
                                 literal, callbacks, target)
@@ -577,8 +561,8 @@ class RosRoles:
             msg_type = f'{action_type}{suffix.capitalize()}' \
                 if action_type.endswith('Action') and suffix == 'goal' \
                 else 'actionlib_msgs::GoalID' if suffix == 'cancel' else None
-            self.facts.subscribers.append(SubscriberFact(
-                function=ctx.function, api=ros_api.api_label(name),
+            fact_builder.add_subscriber(
+                self.facts, function=ctx.function, api=ros_api.api_label(name),
                 topic=f'{action}/{suffix}', topic_is_literal=literal,
                 msg_type=msg_type,
                 handle=target.get_usr() if target is not None else None,
@@ -588,7 +572,7 @@ class RosRoles:
                 location=self.places.location(cursor), nh=nh,
                 topic_handle=handle,
                 topic_affixes=[prefix, f'{rest}/{suffix}'] if handle
-                else None))
+                else None)
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
@@ -609,10 +593,10 @@ class RosRoles:
                 rate_hz = _period_rate_hz(argument)
             else:
                 rate_hz = evaluate_number(argument)
-        self.facts.rates.append(RateObject(
-            handle=target.get_usr(), rate_hz=rate_hz,
+        fact_builder.add_rate(
+            self.facts, handle=target.get_usr(), rate_hz=rate_hz,
             expression=expression_text(argument) if argument else '',
-            location=self.places.location(cursor)))
+            location=self.places.location(cursor))
 
     def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
@@ -634,19 +618,19 @@ class RosRoles:
             target = first_handle(call_object(cursor))
         else:
             target = stored_target(cursor, stack)
-        self.facts.syncs.append(SyncFact(
-            handle=target.get_usr() if target is not None else None,
-            inputs=inputs, location=self.places.location(cursor)))
+        fact_builder.add_sync(
+            self.facts, handle=target.get_usr() if target is not None else None,
+            inputs=inputs, location=self.places.location(cursor))
 
     def _on_register_callback(self, cursor, ctx, stack, api, name,
                               arguments):
         callback, _ = self.resolve_callback(
             role_argument(arguments, api.callback_arg))
         handle = first_handle(call_object(cursor))
-        self.facts.registrations.append(Registration(
-            function=ctx.function,
+        fact_builder.add_registration(
+            self.facts, function=ctx.function,
             handle=handle.get_usr() if handle is not None else None,
-            callback=callback, location=self.places.location(cursor)))
+            callback=callback, location=self.places.location(cursor))
 
     def _on_node_handle(self, cursor, ctx, stack, api, name, arguments):
         target = stored_target(cursor, stack)
@@ -673,15 +657,15 @@ class RosRoles:
                 variable = first_handle(written[0])
                 namespace = UNKNOWN_NAMESPACE + (namespace or '?')
                 if variable is not None:
-                    fact = NodeHandleFact(
-                        handle=target.get_usr(), namespace=namespace)
+                    fact = fact_builder.add_node_handle(
+                        self.facts, handle=target.get_usr(),
+                        namespace=namespace)
                     self.string_variables.namespace_from(
                         fact, variable.get_usr())
-                    self.facts.node_handles.append(fact)
                     return
         # (ImageTransport(shared_from_this()): a node, not a namespace)
-        self.facts.node_handles.append(NodeHandleFact(
-            handle=target.get_usr(), namespace=namespace or ''))
+        fact_builder.add_node_handle(
+            self.facts, handle=target.get_usr(), namespace=namespace or '')
 
     def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
         """``node->create_sub_node("arm")``: a handle in a sub-namespace."""
@@ -690,21 +674,21 @@ class RosRoles:
         if target is None or not literal:
             return
         parent = self._namespace_of(cursor)
-        self.facts.node_handles.append(NodeHandleFact(
-            handle=target.get_usr(),
-            namespace=f'ref:{parent}|{sub}' if parent else sub))
+        fact_builder.add_node_handle(
+            self.facts, handle=target.get_usr(),
+            namespace=f'ref:{parent}|{sub}' if parent else sub)
 
     def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
         target = stored_target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(NodeHandleFact(
-                handle=target.get_usr(), namespace='~'))
+            fact_builder.add_node_handle(
+                self.facts, handle=target.get_usr(), namespace='~')
 
     def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
         target = stored_target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(NodeHandleFact(
-                handle=target.get_usr(), namespace=''))
+            fact_builder.add_node_handle(
+                self.facts, handle=target.get_usr(), namespace='')
 
 
 def _wrapped_call_object(call):

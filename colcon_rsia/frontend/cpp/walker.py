@@ -22,6 +22,7 @@ object is stored in, are answered from the cursors alone
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import clocks
@@ -59,13 +60,6 @@ from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
 from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
 from colcon_rsia.frontend.cpp.questions import dependent_call_name
 from colcon_rsia.frontend.cpp.questions import MemberInit
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import HandleAlias
-from colcon_rsia.frontend.facts import NodeHandleFact
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
@@ -81,7 +75,7 @@ def extract_facts(tu, *, package_path, source, external_wrappers=None):
       workspace's other packages, for calls of functions with no body here
     :rtype: colcon_rsia.frontend.facts.TuFacts
     """
-    walker = _Walker(package_path, TuFacts(source=source),
+    walker = _Walker(package_path, fact_builder.unit_facts(source),
                      external_wrappers=external_wrappers)
     walker.walk(tu)
     walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
@@ -259,19 +253,19 @@ class _Walker:
         fid = cursor.get_usr()
         self._definitions[fid] = cursor
         params = [c for c in cursor.get_children() if c.kind == CK.PARM_DECL]
-        self.facts.functions.append(Function(
-            id=fid, name=qualified_name(cursor),
+        fact_builder.add_function(
+            self.facts, id=fid, name=qualified_name(cursor),
             location=self.places.location(cursor),
             class_id=self._class_id(cursor),
-            params=[c.get_usr() for c in params]))
+            params=[c.get_usr() for c in params])
         for param in params:
             if is_node_handle(param):
                 # a NodeHandle its callers give: their handle's namespace
                 # when the node's calls show it (node_facts), else one the
                 # analysis does not know, never the root's
-                self.facts.node_handles.append(NodeHandleFact(
-                    handle=param.get_usr(),
-                    namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}'))
+                fact_builder.add_node_handle(
+                    self.facts, handle=param.get_usr(),
+                    namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}')
         parent = cursor.semantic_parent
         owner = parent if parent is not None and \
             parent.kind in CLASS_KINDS else None
@@ -312,11 +306,11 @@ class _Walker:
                     handle=cursor.get_usr(), location=self.places.location(cursor),
                     class_id=class_id)
                 if api.role == ros_api.DECLARED_PUBLISHER:
-                    self.facts.publishers.append(PublisherFact(
-                        handle_name=cursor.spelling, **common))
+                    fact_builder.add_publisher(
+                        self.facts, handle_name=cursor.spelling, **common)
                 else:
-                    self.facts.subscribers.append(SubscriberFact(
-                        callback=None, **common))
+                    fact_builder.add_subscriber(
+                        self.facts, callback=None, **common)
             return
 
     # --- function bodies ---------------------------------------------------
@@ -384,18 +378,18 @@ class _Walker:
         # the package's own handles: not the fields of a message
         if handle is not None and handle != variable and \
                 self.places.in_package(handle):
-            self.facts.handle_aliases.append(HandleAlias(
-                alias=variable.get_usr(), handle=handle.get_usr(),
-                location=self.places.location(variable)))
+            fact_builder.add_handle_alias(
+                self.facts, alias=variable.get_usr(), handle=handle.get_usr(),
+                location=self.places.location(variable))
 
     def _lambda(self, cursor, ctx):
         lid = self.places.lambda_id(cursor)
-        self.facts.functions.append(Function(
-            id=lid, name=f'lambda@{self.places.location(cursor)}',
+        fact_builder.add_function(
+            self.facts, id=lid, name=f'lambda@{self.places.location(cursor)}',
             location=self.places.location(cursor),
             class_id=None,
             params=[c.get_usr() for c in cursor.get_children()
-                    if c.kind == CK.PARM_DECL]))
+                    if c.kind == CK.PARM_DECL])
         if self.places.key(cursor) not in self.callbacks.consumed:
             self._add_call(ctx, lid, cursor, kind='ref')
         inner = recorder.Context(lid, owner=ctx.owner)
@@ -404,10 +398,10 @@ class _Walker:
                 self._visit(child, inner, [])
 
     def _add_call(self, ctx, callee, cursor, kind='call', virtual=None):
-        self.facts.calls.append(Call(
-            caller=ctx.function, callee=callee,
+        fact_builder.add_call(
+            self.facts, caller=ctx.function, callee=callee,
             location=self.places.location(cursor), loops=ctx.loop_ids(), kind=kind,
-            virtual=virtual))
+            virtual=virtual)
 
     def _reference(self, cursor, ctx, stack):
         """A function named but not called here: it may be called later."""

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import call_arguments
@@ -48,8 +49,6 @@ from colcon_rsia.frontend.cpp.questions import dependent_call_name
 from colcon_rsia.frontend.cpp.questions import record_publish_site
 from colcon_rsia.frontend.cpp.questions import stored_target
 from colcon_rsia.frontend.cpp.strings import written_name
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import SubscriberFact
 from colcon_rsia.summary.wrapper_store import WrapperSummary
 
 CK = ci.CursorKind
@@ -336,17 +335,17 @@ class Summaries:
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 location=location)
             if endpoint.role == ROLE_PUBLISHER:
-                self.facts.publishers.append(PublisherFact(
-                    handle_name=target.spelling if target is not None
-                    else None, **common))
+                fact_builder.add_publisher(
+                    self.facts, handle_name=target.spelling if target is not None
+                    else None, **common)
             else:
                 callback, declaration = self.resolve_callback(
                     argument(endpoint.callback_param))
                 # a message type the wrapper deduces from the callback
                 common['msg_type'] = common['msg_type'] or \
                     callback_msg_type(declaration)
-                self.facts.subscribers.append(SubscriberFact(
-                    callback=callback, **common))
+                fact_builder.add_subscriber(
+                    self.facts, callback=callback, **common)
             if endpoint.publishes:
                 record_publish_site(self.facts, self.places.location, ctx,
                                     stack, cursor, name, handle)
