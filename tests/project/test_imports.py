@@ -243,7 +243,7 @@ def test_colcon_calls_do_not_import_heavy_modules():
 CPP = 'colcon_rsia.frontend.cpp'
 # the C++ walker's helpers: given what they use, never the walker
 WALKER_HELPERS = ('roles', 'hosted', 'clocks', 'wrappers', 'strings',
-                  'callbacks')
+                  'callbacks', 'questions')
 
 
 def _walker_references(path):
