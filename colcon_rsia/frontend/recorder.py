@@ -11,7 +11,7 @@ drift apart again (see tests/frontend/test_cpp_python_parity.py).
 
 from contextlib import contextmanager
 
-from colcon_rsia.frontend.facts import PacedLoop
+from colcon_rsia.frontend import fact_builder
 
 
 class Context:
@@ -89,6 +89,6 @@ def rate_of_period(seconds):
 def record_paced_loop(facts, context, *, loop_id, clock, loop_location,
                       sleep_location):
     """The fact that a loop runs at the pace of `clock` (a handle)."""
-    facts.paced_loops.append(PacedLoop(
-        loop=loop_id, function=context.function, rate_handle=clock,
-        location=loop_location, sleep_location=sleep_location))
+    fact_builder.add_paced_loop(
+        facts, loop=loop_id, function=context.function, rate_handle=clock,
+        location=loop_location, sleep_location=sleep_location)

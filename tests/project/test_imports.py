@@ -240,6 +240,102 @@ def test_colcon_calls_do_not_import_heavy_modules():
     assert result.stdout.strip().splitlines()[-1] == '[]'
 
 
+CPP = 'colcon_rsia.frontend.cpp'
+# the C++ walker's helpers: given what they use, never the walker
+WALKER_HELPERS = ('roles', 'hosted', 'clocks', 'wrappers', 'strings',
+                  'callbacks', 'questions')
+
+
+def _walker_references(path):
+    """Where a module names `walker` (a variable, attribute, parameter)."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        name = node.id if isinstance(node, ast.Name) else \
+            node.attr if isinstance(node, ast.Attribute) else \
+            node.arg if isinstance(node, ast.arg) else None
+        if name is not None and name.lstrip('_') == 'walker':
+            found.append(f'{path.name}:{node.lineno}')
+    return found
+
+
+def test_walker_reference_finder_finds_one(tmp_path):
+    path = tmp_path / 'helper.py'
+    path.write_text(
+        'class H:\n'
+        '    def __init__(self, walker):\n'
+        '        self._walker = walker\n')
+    assert _walker_references(path) == [
+        'helper.py:2', 'helper.py:3', 'helper.py:3']
+
+
+def test_cpp_walker_helpers_get_what_they_use_not_the_walker():
+    # the walker hands its helpers the facts, the walk's Places and the
+    # functions they call (questions.py): a helper holding the walker, or
+    # importing it, could reach any of its state
+    wrong = []
+    for helper in WALKER_HELPERS:
+        path = MODULES[f'{CPP}.{helper}']
+        wrong.extend(_walker_references(path))
+        if f'{CPP}.walker' in _imports(path):
+            wrong.append(f'{path.name} imports walker')
+    assert wrong == []
+
+
+def test_cpp_walker_mixes_in_no_helper():
+    # its helpers are objects it builds, not base classes of its own
+    tree = ast.parse(MODULES[f'{CPP}.walker'].read_text())
+    bases = [(node.name, len(node.bases)) for node in ast.walk(tree)
+             if isinstance(node, ast.ClassDef) and node.bases]
+    assert bases == []
+
+
+FRONTEND = PACKAGE_DIR / 'frontend'
+
+
+def _fact_classes():
+    """The classes of frontend/facts.py."""
+    tree = ast.parse((FRONTEND / 'facts.py').read_text())
+    return {node.name for node in tree.body if isinstance(node, ast.ClassDef)}
+
+
+def _fact_constructions(path, classes):
+    """Where a module calls one of `classes` (by name or as facts.X)."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        name = func.id if isinstance(func, ast.Name) else \
+            func.attr if isinstance(func, ast.Attribute) else None
+        if name in classes:
+            found.append(f'{path.name}:{node.lineno} {name}')
+    return found
+
+
+def test_fact_construction_finder_finds_one(tmp_path):
+    path = tmp_path / 'roles.py'
+    path.write_text(
+        'from colcon_rsia.frontend import facts\n'
+        'from colcon_rsia.frontend.facts import TimerFact\n'
+        'isinstance(x, TimerFact)\n'
+        'a = TimerFact(function=None)\n'
+        'b = facts.PublishSite()\n')
+    assert _fact_constructions(path, _fact_classes()) == [
+        'roles.py:4 TimerFact', 'roles.py:5 PublishSite']
+
+
+def test_front_ends_make_facts_through_the_fact_builder():
+    # one place makes facts (frontend/fact_builder.py): the front ends
+    # say what a call's arguments mean, never how a fact is built
+    classes = _fact_classes()
+    assert {'PublisherFact', 'TimerFact', 'Call', 'TuFacts'} <= classes
+    wrong = []
+    for front_end in ('cpp', 'python'):
+        for path in sorted((FRONTEND / front_end).rglob('*.py')):
+            wrong.extend(_fact_constructions(path, classes))
+    assert wrong == []
+
+
 def test_no_module_passes_800_lines():
     # a module past that holds more than one idea: split it (the layout
     # shows the architecture only while each room stays small)

@@ -2,10 +2,10 @@
 # Licensed under the Apache License, Version 2.0
 """Callbacks and what calls bind to a package function's parameters.
 
-A part of the C++ walker (a mixin of ``walker._Walker``): which function a
-callback argument designates (a lambda, ``&C::m``, a bind expression, a
-``std::function`` variable resolved at the end of the walk), and what a
-call passes to the parameters of the package's functions (handles,
+A helper of the C++ walker, given what it uses (see :mod:`.questions`):
+which function a callback argument designates (a lambda, ``&C::m``, a
+bind expression, a ``std::function`` variable resolved at the end of the
+walk), and what a call passes to the parameters of the package's functions (handles,
 string literals, callables), so that a helper's registrations take its
 callers' names and callbacks.
 """
@@ -13,6 +13,7 @@ callers' names and callbacks.
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
@@ -26,8 +27,7 @@ from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.hosted import node_handle_marker
-from colcon_rsia.frontend.facts import ParamBinding
-from colcon_rsia.frontend.facts import StringArgument
+from colcon_rsia.frontend.cpp.strings import written_name
 
 CK = ci.CursorKind
 BIND_FUNCTIONS = frozenset({'boost::bind', 'std::bind'})
@@ -62,14 +62,32 @@ def _holds_no_callable(parameter):
 
 
 class Callbacks:
-    """The walker's callback resolution and parameter binding.
+    """The callbacks of one walk and what calls bind to parameters.
 
-    Methods of the walker kept apart: they use its state (``facts``,
-    ``string_variables``, ``_callables``, ``_consumed``, ``_registered``)
-    and questions (``topic``, ``in_package``, ``key``, ``_lambda_id``).
+    Given what it uses: the unit's facts, where cursors are
+    (:class:`~colcon_rsia.frontend.cpp.questions.Places`) and the string
+    variables (:class:`~colcon_rsia.frontend.cpp.strings.StringVariables`).
+    The walker reads :attr:`consumed`, :attr:`registered` and
+    :attr:`stored_then_registered`.
     """
 
-    def _resolve_stored_callbacks(self):
+    def __init__(self, facts, places, string_variables):  # noqa: D107
+        self.facts = facts
+        self.places = places
+        self.string_variables = string_variables
+        # callables stored in std::function variables/fields:
+        # {variable USR: function ids assigned to it}
+        self._callables = {}
+        # places.key() of expressions used as a registered callback, so
+        # that they do not also count as a plain function reference
+        self.consumed = set()
+        # function ids registered as a callback
+        self.registered = set()
+        # callbacks an options object held before it was registered
+        # (`createTimer(ops)`): named, not called, where the object was made
+        self.stored_then_registered = set()
+
+    def resolve_stored_callbacks(self):
         """Replace ``callable:<usr>`` callbacks by what was stored there.
 
         A callback kept in a ``std::function`` member is registered by
@@ -90,14 +108,14 @@ class Callbacks:
             fact.status_callbacks = [
                 c for c in map(resolve, fact.status_callbacks) if c]
 
-    def _store_callable(self, variable, expression, consume=True):
+    def store_callable(self, variable, expression, consume=True):
         """Remember what a std::function variable/field is set to."""
         callback, _ = self.resolve_callback(expression, consume=consume)
         if callback and not callback.startswith(CALLABLE_PREFIX):
             self._callables.setdefault(variable.get_usr(), set()).add(
                 callback)
 
-    def _bind_parameters(self, callee, arguments):
+    def bind_parameters(self, callee, arguments):
         """A package function's parameters hold what its callers pass.
 
         A helper that makes a subscription from its parameters
@@ -116,32 +134,32 @@ class Callbacks:
                 self.string_variables.assignment(param, argument)
                 self.string_variables.passed(argument, param)
             elif is_callable_argument(argument):
-                self._store_callable(param, argument, consume=False)
+                self.store_callable(param, argument, consume=False)
 
-    def _bind_arguments(self, callee, arguments, first_index=0,
-                        caller=None):
+    def bind_arguments(self, callee, arguments, first_index=0,
+                       caller=None):
         """Record what a call passes to a package function's parameters.
 
         Handles, and string literals (a node name passed to a base class).
         """
         for index, argument in enumerate(arguments, start=first_index):
             if caller is not None and is_string(argument):
-                value, literal = self.topic(argument)
+                value, literal = written_name(argument)
                 if literal:
-                    self.facts.string_arguments.append(StringArgument(
-                        caller=caller, callee=callee, index=index,
-                        value=value))
+                    fact_builder.add_string_argument(
+                        self.facts, caller=caller, callee=callee, index=index,
+                        value=value)
                     continue
             handle = plain_handle(argument)
-            if handle is not None and self.in_package(handle):
-                self.facts.bindings.append(ParamBinding(
-                    callee=callee, index=index, handle=handle.get_usr()))
+            if handle is not None and self.places.in_package(handle):
+                fact_builder.add_binding(
+                    self.facts, callee=callee, index=index, handle=handle.get_usr())
             elif node_handle_marker(argument) is not None:
                 # a handle made in place (getPrivateNodeHandle(),
                 # ros::NodeHandle("~")): its namespace marker
-                self.facts.bindings.append(ParamBinding(
-                    callee=callee, index=index,
-                    handle=node_handle_marker(argument)))
+                fact_builder.add_binding(
+                    self.facts, callee=callee, index=index,
+                    handle=node_handle_marker(argument))
 
     def _bound_arguments(self, argument):
         """Handles bound by boost::bind / std::bind to the callback."""
@@ -154,13 +172,13 @@ class Callbacks:
             if not bound:
                 return
             target = first_function(bound[0])
-            if target is None or not self.in_package(target):
+            if target is None or not self.places.in_package(target):
                 return
             rest = bound[1:]
             # a bound method's first argument is the object, not a parameter
             if target.kind == CK.CXX_METHOD and not target.is_static_method():
                 rest = rest[1:]
-            self._bind_arguments(template_member(target).get_usr(), rest)
+            self.bind_arguments(template_member(target).get_usr(), rest)
             return
 
     def resolve_callback(self, argument, consume=True):
@@ -175,32 +193,32 @@ class Callbacks:
         for current in [argument] + list(walk_preorder(
                 argument, stop=frozenset({CK.LAMBDA_EXPR}))):
             if current.kind == CK.LAMBDA_EXPR:
-                lid = self._lambda_id(current)
+                lid = self.places.lambda_id(current)
                 if consume:
-                    self._consumed.add(self.key(current))
-                    self._registered.add(lid)
+                    self.consumed.add(self.places.key(current))
+                    self.registered.add(lid)
                 return lid, current
             if current.kind not in REF_KINDS:
                 continue
             ref = current.referenced
             if ref is None:
                 continue
-            if ref.kind in FUNCTION_KINDS and self.in_package(ref):
+            if ref.kind in FUNCTION_KINDS and self.places.in_package(ref):
                 ref = template_member(ref)
                 if consume:
-                    self._consumed.add(self.key(current))
-                    self._registered.add(ref.get_usr())
+                    self.consumed.add(self.places.key(current))
+                    self.registered.add(ref.get_usr())
                 return ref.get_usr(), ref
             if ref.kind == CK.VAR_DECL:
                 for child in ref.get_children():
                     if child.kind == CK.LAMBDA_EXPR:
-                        lid = self._lambda_id(child)
-                        self._registered.add(lid)
+                        lid = self.places.lambda_id(child)
+                        self.registered.add(lid)
                         return lid, child
             if ref.kind in HANDLE_KINDS and is_callable(ref) or \
                     ref.kind == CK.PARM_DECL and not _holds_no_callable(ref):
                 # resolved at the end of the walk: see
-                # _resolve_stored_callbacks (a parameter: what the callers
-                # pass, see _bind_parameters)
+                # resolve_stored_callbacks (a parameter: what the callers
+                # pass, see bind_parameters)
                 return CALLABLE_PREFIX + ref.get_usr(), None
         return None, None

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
@@ -42,10 +43,11 @@ from colcon_rsia.frontend.cpp.cursors import first_function
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import TimerFact
+from colcon_rsia.frontend.cpp.questions import paced_loop
+from colcon_rsia.frontend.cpp.questions import record_paced_loop
+from colcon_rsia.frontend.cpp.questions import stored_target
 
 CK = ci.CursorKind
 
@@ -71,8 +73,12 @@ class _Wait:
 class OtherClocks:
     """The non-ROS clocks of one translation unit."""
 
-    def __init__(self, walker):  # noqa: D107
-        self.walker = walker
+    def __init__(self, facts, places, *, resolve_callback):  # noqa: D107
+        # the unit's facts, where cursors are (questions.Places), and
+        # (function id, declaration) of a callback argument
+        self.facts = facts
+        self.places = places
+        self.resolve_callback = resolve_callback
         # (timer fact, QTimer object USR)
         self._connected = []
         # timer object USR -> {(period as written, Hz or None)}
@@ -108,10 +114,10 @@ class OtherClocks:
         callback = self._slot(arguments, written)
         if callback is None:
             return
-        fact = TimerFact(
-            function=ctx.function, api=api.label, callback=callback,
-            period='', rate_hz=None, location=self.walker.location(cursor))
-        self.walker.facts.timers.append(fact)
+        fact = fact_builder.add_timer(
+            self.facts, function=ctx.function, api=api.label,
+            callback=callback, period='', rate_hz=None,
+            location=self.places.location(cursor))
         self._connected.append((fact, sender.get_usr()))
 
     def _slot(self, arguments, written):
@@ -120,22 +126,22 @@ class OtherClocks:
         slot_name = _SLOT_MACRO.search(written)
         if slot_name is None:
             # connect(sender, signal, functor) or (..., receiver, &C::slot)
-            slot = self.walker.argument(arguments, 3) or receiver
-            callback, _ = self.walker.resolve_callback(slot)
+            slot = role_argument(arguments, 3) or receiver
+            callback, _ = self.resolve_callback(slot)
             return callback
         # SLOT(name()): the receiver's method of that name
         method = _method_of(_class_of(receiver), slot_name.group(1))
-        if method is None or not self.walker.in_package(method):
+        if method is None or not self.places.in_package(method):
             return None
         return method.get_usr()
 
     def _on_timer_period(self, cursor, ctx, stack, api, name, arguments):
         if cursor.referenced is not None and \
                 cursor.referenced.kind == CK.CONSTRUCTOR:
-            timer = self.walker.target(cursor, stack)
+            timer = stored_target(cursor, stack)
         else:
             timer = first_handle(call_object(cursor))
-        period = self.walker.argument(arguments, api.period_arg)
+        period = role_argument(arguments, api.period_arg)
         if timer is None or period is None:
             return
         seconds = _period_seconds(period, api.period_unit)
@@ -146,7 +152,7 @@ class OtherClocks:
 
     def _on_single_shot(self, cursor, ctx, stack, api, name, arguments):
         timer = first_handle(call_object(cursor))
-        value = self.walker.argument(arguments, 0)
+        value = role_argument(arguments, 0)
         if timer is not None and value is not None and \
                 expression_text(value) in ('true', '1'):
             self._single_shot.add(timer.get_usr())
@@ -156,22 +162,22 @@ class OtherClocks:
         obj = call_object(cursor)
         owner = _class_of(obj) if obj is not None else ctx.owner
         method = _method_of(owner, QT_TIMER_EVENT)
-        if method is None or not self.walker.in_package(method):
+        if method is None or not self.places.in_package(method):
             return
-        period = self.walker.argument(arguments, api.period_arg)
+        period = role_argument(arguments, api.period_arg)
         seconds = _period_seconds(period, api.period_unit) \
             if period is not None else None
-        self.walker.facts.timers.append(TimerFact(
-            function=ctx.function, api=name, callback=method.get_usr(),
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=name, callback=method.get_usr(),
             period=expression_text(period) if period is not None else '',
-            rate_hz=recorder.rate_of_period(seconds), location=self.walker.location(cursor)))
+            rate_hz=recorder.rate_of_period(seconds), location=self.places.location(cursor))
 
     # --- boost::asio ---------------------------------------------------------
 
     def _on_timer_wait(self, cursor, ctx, stack, api, name, arguments):
         timer = first_handle(call_object(cursor))
-        callback, declaration = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg))
+        callback, declaration = self.resolve_callback(
+            role_argument(arguments, api.callback_arg))
         if timer is None or callback is None:
             return
         reaches = {callback}
@@ -180,41 +186,42 @@ class OtherClocks:
         self._waits.append(_Wait(
             timer=timer.get_usr(), callback=callback, function=ctx.function,
             reaches=frozenset(reaches), api=api.label,
-            location=self.walker.location(cursor), loops=ctx.loop_ids()))
+            location=self.places.location(cursor), loops=ctx.loop_ids()))
 
     # --- fixed-rate loops --------------------------------------------------
 
     def _on_deadline_sleep(self, cursor, ctx, stack, api, name, arguments):
-        deadline = first_handle(self.walker.argument(arguments, 0))
+        deadline = first_handle(role_argument(arguments, 0))
         if deadline is None:
             return
-        paced = self.walker.paced_loop(ctx, cursor, deadline)
+        paced = paced_loop(ctx, cursor, deadline)
         if paced is None:
             return
         loop_id, loop = paced
         step = _advance(loop, deadline)
         if step is None:
             return  # a deadline that never moves
-        self.walker.facts.rates.append(RateObject(
-            handle=deadline.get_usr(),
+        fact_builder.add_rate(
+            self.facts, handle=deadline.get_usr(),
             rate_hz=recorder.rate_of_period(_period_seconds(step, 1.0)),
             expression=expression_text(step),
-            location=self.walker.location(step)))
-        self.walker.record_paced_loop(
-            ctx, loop_id=loop_id, loop=loop, clock=deadline, sleep=cursor)
+            location=self.places.location(step))
+        record_paced_loop(
+            self.facts, self.places.location, ctx, loop_id=loop_id,
+            loop=loop, clock=deadline, sleep=cursor)
 
     # --- the end of the unit -----------------------------------------------
 
     def finish(self):
         """Join connections, periods and waits gathered during the walk."""
-        facts = self.walker.facts
+        facts = self.facts
         for fact, timer in self._connected:
             if timer in self._single_shot:
                 # fires once: called from where it is connected
                 facts.timers.remove(fact)
-                facts.calls.append(Call(
-                    caller=fact.function, callee=fact.callback,
-                    location=fact.location, loops=[], kind='ref'))
+                fact_builder.add_call(
+                    facts, caller=fact.function, callee=fact.callback,
+                    location=fact.location, loops=[], kind='ref')
                 continue
             fact.period, fact.rate_hz = self._period_of(timer)
         added = set()
@@ -223,18 +230,18 @@ class OtherClocks:
                           other.function in wait.reaches
                           for other in self._waits)
             if not rearmed:
-                facts.calls.append(Call(
-                    caller=wait.function, callee=wait.callback,
-                    location=wait.location, loops=wait.loops, kind='ref'))
+                fact_builder.add_call(
+                    facts, caller=wait.function, callee=wait.callback,
+                    location=wait.location, loops=wait.loops, kind='ref')
                 continue
             if (wait.timer, wait.callback) in added:
                 continue
             added.add((wait.timer, wait.callback))
             period, rate_hz = self._period_of(wait.timer)
-            facts.timers.append(TimerFact(
-                function=wait.function, api=wait.api,
+            fact_builder.add_timer(
+                facts, function=wait.function, api=wait.api,
                 callback=wait.callback, period=period, rate_hz=rate_hz,
-                location=wait.location))
+                location=wait.location)
 
     def _period_of(self, timer):
         """(period as written, Hz) of a timer object.

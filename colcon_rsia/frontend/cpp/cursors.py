@@ -322,6 +322,26 @@ def is_written(argument):
     return next(iter(argument.get_tokens()), None) is not None
 
 
+def role_argument(arguments, position):
+    """The argument of a call that has a role of ros_api, or None.
+
+    `position` is an index or one of ros_api's "first argument of this
+    kind" markers (the first string, callable, duration); an argument the
+    code left to its default is None.
+    """
+    by_type = {
+        ros_api.FIRST_STRING: is_string,
+        ros_api.FIRST_CALLABLE: is_callable_argument,
+        ros_api.FIRST_DURATION: is_duration,
+    }.get(position)
+    if by_type is not None:
+        return next((a for a in arguments if by_type(a)), None)
+    if isinstance(position, int) and position < len(arguments):
+        argument = arguments[position]
+        return argument if is_written(argument) else None
+    return None
+
+
 def call_arguments(call):
     """The arguments a call passes to its callee's parameters.
 

@@ -14,14 +14,15 @@ walker's table like those of :mod:`colcon_rsia.frontend.cpp.roles`:
 """
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.strings import unquote
-from colcon_rsia.frontend.facts import HostEvent
-from colcon_rsia.frontend.facts import NodeletLoad
+from colcon_rsia.frontend.cpp.strings import written_name
 
 CK = ci.CursorKind
 
@@ -29,9 +30,12 @@ CK = ci.CursorKind
 class HostedRoles:
     """The handlers of the hosting roles, for one walk."""
 
-    def __init__(self, walker):  # noqa: D107
-        self.walker = walker
-        self.facts = walker.facts
+    def __init__(self, facts, places, *, resolve_callback):  # noqa: D107
+        # the unit's facts, where cursors are (questions.Places), and
+        # (function id, declaration) of a callback argument
+        self.facts = facts
+        self.places = places
+        self.resolve_callback = resolve_callback
 
     def handlers(self):
         """The walker's handlers for the roles of this module."""
@@ -41,22 +45,22 @@ class HostedRoles:
         }
 
     def _on_host_event(self, cursor, ctx, stack, api, name, arguments):
-        callback, _ = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg))
-        self.facts.host_events.append(HostEvent(
-            function=ctx.function, api=name, callback=callback,
-            location=self.walker.location(cursor)))
+        callback, _ = self.resolve_callback(
+            role_argument(arguments, api.callback_arg))
+        fact_builder.add_host_event(
+            self.facts, function=ctx.function, api=name, callback=callback,
+            location=self.places.location(cursor))
 
     def _on_nodelet_load(self, cursor, ctx, stack, api, name, arguments):
-        nodelet_name, name_known = self.walker.topic(
-            self.walker.argument(arguments, api.name_arg))
-        nodelet_type, type_known = self.walker.topic(
-            self.walker.argument(arguments, api.type_name_arg))
-        self.facts.nodelet_loads.append(NodeletLoad(
-            function=ctx.function,
+        nodelet_name, name_known = written_name(
+            role_argument(arguments, api.name_arg))
+        nodelet_type, type_known = written_name(
+            role_argument(arguments, api.type_name_arg))
+        fact_builder.add_nodelet_load(
+            self.facts, function=ctx.function,
             name=nodelet_name if name_known else None,
             type=nodelet_type if type_known else None,
-            location=self.walker.location(cursor)))
+            location=self.places.location(cursor))
 
 
 def node_handle_marker(argument):

@@ -14,6 +14,7 @@ import dataclasses
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import hosted
@@ -34,25 +35,16 @@ from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
+from colcon_rsia.frontend.cpp.questions import paced_loop
+from colcon_rsia.frontend.cpp.questions import record_paced_loop
+from colcon_rsia.frontend.cpp.questions import record_publish_site
+from colcon_rsia.frontend.cpp.questions import stored_target
 from colcon_rsia.frontend.cpp.strings import string_parts
-from colcon_rsia.frontend.facts import ActionFact
-from colcon_rsia.frontend.facts import ClientFact
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import HandleAlias
-from colcon_rsia.frontend.facts import NodeHandleFact
-from colcon_rsia.frontend.facts import NodeNameFact
-from colcon_rsia.frontend.facts import ParamRead
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import PublishSite
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import Registration
-from colcon_rsia.frontend.facts import ServiceFact
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import SyncFact
-from colcon_rsia.frontend.facts import TimerFact
+from colcon_rsia.frontend.cpp.strings import written_name
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
@@ -66,10 +58,19 @@ _OPTIONS_TYPES = frozenset({'ros::SubscribeOptions', 'ros::AdvertiseOptions'})
 class RosRoles:
     """The handlers of the ROS API roles, for one walk."""
 
-    def __init__(self, walker):  # noqa: D107
-        self.walker = walker
-        # the walker's facts: one object for the whole walk
-        self.facts = walker.facts
+    def __init__(  # noqa: D107
+            self, facts, places, *, resolve_callback, string_variables,
+            stored_then_registered):
+        # the unit's facts: one object for the whole walk
+        self.facts = facts
+        # where cursors are (questions.Places)
+        self.places = places
+        # (function id, declaration) of a callback argument (callbacks.py)
+        self.resolve_callback = resolve_callback
+        # what string variables hold (strings.StringVariables)
+        self.string_variables = string_variables
+        # callbacks an options object held before it was registered
+        self.stored_then_registered = stored_then_registered
 
     def handlers(self):
         """The walker's handlers for the roles of ros_api."""
@@ -97,7 +98,9 @@ class RosRoles:
             ros_api.NAME_RESOLVE: self._on_name_resolve,
             ros_api.NODE_FQN: self._on_name_resolve,
             # gzserver's events, nodelets loaded in code
-            **hosted.HostedRoles(self.walker).handlers(),
+            **hosted.HostedRoles(
+                self.facts, self.places,
+                resolve_callback=self.resolve_callback).handlers(),
         }
 
     def _callbacks(self, arguments, position):
@@ -108,10 +111,10 @@ class RosRoles:
         else:
             positions = position if isinstance(position, tuple) \
                 else (position,)
-            candidates = [self.walker.argument(arguments, p) for p in positions]
+            candidates = [role_argument(arguments, p) for p in positions]
         found = []
         for argument in candidates:
-            callback, _ = self.walker.resolve_callback(argument)
+            callback, _ = self.resolve_callback(argument)
             if callback:
                 found.append(callback)
         return found
@@ -134,7 +137,7 @@ class RosRoles:
         (``pnh_`` of a nodelet base class the package derives from): its
         namespace is whatever that library's code gives it.
         """
-        return not self.walker.ros2 and not self.walker.in_package(member)
+        return not self.places.ros2 and not self.places.in_package(member)
 
     # --- roles (named after ros_api roles) ----------------------------------
 
@@ -142,27 +145,27 @@ class RosRoles:
         if self._wrapped_publisher(cursor, stack, api, arguments):
             return
         typed, api, arguments = self._with_options(cursor, api, arguments)
-        topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        topic, literal = written_name(role_argument(arguments, api.name_arg))
         if topic is None and name.endswith('::init'):
             return
         if topic is None and api.name_arg and len(arguments) <= api.name_arg:
             return  # a default constructor: the topic comes with init()
-        msg_type = self.walker.table_msg_type(api.msg_type) or \
+        msg_type = self.places.table_msg_type(api.msg_type) or \
             self._type_name(arguments, api) or \
             self._template_msg_type(typed, name)
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         status_callbacks = [
             callback for position in api.status_callback_args
-            for callback in [self.walker.resolve_callback(
-                self.walker.argument(arguments, position))[0]] if callback]
+            for callback in [self.resolve_callback(
+                role_argument(arguments, position))[0]] if callback]
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.publishers.append(PublisherFact(
-                handle_name=target.spelling if target is not None else None,
-                status_callbacks=status_callbacks, **common))
-        self.walker.string_variables.concatenation(
+            fact_builder.add_publisher(
+                self.facts, handle_name=target.spelling if target is not None else None,
+                status_callbacks=status_callbacks, **common)
+        self.string_variables.concatenation(
             self.facts.publishers[-1:], literal,
-            self.walker.argument(arguments, api.name_arg))
+            role_argument(arguments, api.name_arg))
 
     def _wrapped_publisher(self, cursor, stack, api, arguments):
         """``RealtimePublisher<M>(pub)`` publishes through `pub`.
@@ -173,21 +176,21 @@ class RosRoles:
         if api.wraps_arg is None:
             return False
         written = written_arguments(arguments)
-        wrapped = self.walker.argument(arguments, api.wraps_arg)
+        wrapped = role_argument(arguments, api.wraps_arg)
         if len(written) != 1 or wrapped is None or is_string(wrapped):
             return False
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         handle = first_handle(wrapped)
         if target is not None and handle is not None:
-            self.facts.handle_aliases.append(HandleAlias(
-                alias=target.get_usr(), handle=handle.get_usr(),
-                location=self.walker.location(cursor)))
+            fact_builder.add_handle_alias(
+                self.facts, alias=target.get_usr(), handle=handle.get_usr(),
+                location=self.places.location(cursor))
         return True
 
     def _argument_msg_type(self, arguments, api):
         if api.msg_type_arg is None:
             return None
-        argument = self.walker.argument(arguments, api.msg_type_arg)
+        argument = role_argument(arguments, api.msg_type_arg)
         return normalize_msg_type(argument.type.get_canonical().spelling) \
             if argument is not None else None
 
@@ -195,8 +198,8 @@ class RosRoles:
         """The message type a generic API names: "pkg/msg/Name"."""
         if api.type_name_arg is None:
             return None
-        written, literal = self.walker.topic(
-            self.walker.argument(arguments, api.type_name_arg))
+        written, literal = written_name(
+            role_argument(arguments, api.type_name_arg))
         if not literal or not re.fullmatch(r'\w+/\w+/\w+', written or ''):
             return None
         return written.replace('/', '::')
@@ -217,14 +220,14 @@ class RosRoles:
         """
         nh = self._namespace_of(cursor, api, arguments)
         resolved = None if literal or api.name_arg is None else \
-            self.walker.string_variables.resolved_in_place(
-                self.walker.argument(arguments, api.name_arg))
+            self.string_variables.resolved_in_place(
+                role_argument(arguments, api.name_arg))
         if resolved is not None:
             topic, literal, nh = resolved[0], True, resolved[1]
         topics = [(topic, msg_type)]
         if api.camera:
             topics.append((_camera_info(topic),
-                           self.walker.table_msg_type(ros_api.CAMERA_INFO_MSG)))
+                           self.places.table_msg_type(ros_api.CAMERA_INFO_MSG)))
         topic_handle, affixes = self._topic_handle(arguments, api, literal)
         for each_topic, each_type in topics:
             yield dict(
@@ -233,7 +236,7 @@ class RosRoles:
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
                 handle=target.get_usr() if target is not None else None,
-                location=self.walker.location(cursor), nh=nh)
+                location=self.places.location(cursor), nh=nh)
 
     def _object_type(self, cursor, name):
         """The class type a constructor or method belongs to.
@@ -288,7 +291,7 @@ class RosRoles:
 
     def _with_options(self, cursor, api, arguments):
         """(call with the endpoint's arguments, api, arguments)."""
-        options = self._options_call(self.walker.argument(arguments, api.name_arg))
+        options = self._options_call(role_argument(arguments, api.name_arg))
         if options is None:
             return cursor, api, arguments
         # create/init(topic, queue_size, callback, ...): a subscription's
@@ -300,34 +303,34 @@ class RosRoles:
 
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
         typed, api, arguments = self._with_options(cursor, api, arguments)
-        topic, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        topic, literal = written_name(role_argument(arguments, api.name_arg))
         if api.name_arg is None and len(api.implicit_topics) == 1:
             # a subscription to the one topic the API names
             # (on_parameter_event: /parameter_events)
             topic, literal = api.implicit_topics[0], True
         if topic is None:
             return  # a default-constructed message_filters::Subscriber
-        callback, declaration = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg)) \
+        callback, declaration = self.resolve_callback(
+            role_argument(arguments, api.callback_arg)) \
             if api.callback_arg is not None else (None, None)
         if api.type_name_arg is not None:
             # generic: the callback takes serialized messages of any type
             msg_type = self._type_name(arguments, api)
         else:
-            msg_type = self.walker.table_msg_type(api.msg_type) or \
+            msg_type = self.places.table_msg_type(api.msg_type) or \
                 self._template_msg_type(typed, name) or \
                 self._argument_msg_type(arguments, api) or \
                 callback_msg_type(declaration)
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is None and api.callback_arg is None:
             target = first_handle(call_object(cursor))
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
-            self.facts.subscribers.append(SubscriberFact(
-                callback=callback, **common))
-        self.walker.string_variables.concatenation(
+            fact_builder.add_subscriber(
+                self.facts, callback=callback, **common)
+        self.string_variables.concatenation(
             self.facts.subscribers[-1:], literal,
-            self.walker.argument(arguments, api.name_arg))
+            role_argument(arguments, api.name_arg))
 
     def _topic_handle(self, arguments, api, literal):
         """(handle, affixes): where a non-literal topic comes from.
@@ -340,7 +343,7 @@ class RosRoles:
         """
         if literal:
             return None, None
-        argument = self.walker.argument(arguments, api.name_arg)
+        argument = role_argument(arguments, api.name_arg)
         if argument is None:
             return None, None
         for current in [argument] + list(walk_preorder(argument)):
@@ -348,8 +351,8 @@ class RosRoles:
                 continue
             read = ros_api.lookup_call(qualified_name(current.referenced))
             if read is not None and read.role == ros_api.PARAM_READ:
-                param, is_literal = self.walker.topic(
-                    self.walker.argument(list(current.get_arguments()), 0))
+                param, is_literal = written_name(
+                    role_argument(list(current.get_arguments()), 0))
                 if is_literal:
                     return 'param:' + param, None
         parts = string_parts(argument)
@@ -367,7 +370,7 @@ class RosRoles:
         return (handle.get_usr() if handle is not None else None), None
 
     def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
-        param, literal = self.walker.topic(self.walker.argument(arguments, 0))
+        param, literal = written_name(role_argument(arguments, 0))
         if not literal:
             return
         written = written_arguments(arguments)
@@ -376,7 +379,7 @@ class RosRoles:
             # value = nh.param("name", default);
             # value = node->declare_parameter("name", default);
             # value = node->get_parameter("name").as_string()
-            target = self.walker.target(cursor, stack)
+            target = stored_target(cursor, stack)
             default_argument = written[1] if len(written) > 1 else None
         else:
             # nh.param("name", variable, default) / getParam("name", var)
@@ -384,49 +387,48 @@ class RosRoles:
             default_argument = written[2] if len(written) > 2 else None
         default = None
         if default_argument is not None:
-            default, is_literal = self.walker.topic(default_argument)
+            default, is_literal = written_name(default_argument)
             default = default if is_literal else None
-        read = ParamRead(
-            function=ctx.function, name=param, default=default,
+        read = fact_builder.add_param_read(
+            self.facts, function=ctx.function, name=param, default=default,
             handle=target.get_usr() if target is not None else None,
             nh='~' if api.node_private else self._namespace_of(cursor),
-            location=self.walker.location(cursor))
-        self.facts.param_reads.append(read)
+            location=self.places.location(cursor))
         parts = string_parts(default_argument) \
             if default_argument is not None and default is None else None
         if parts and len(parts) == 1 and parts[0][0] == 'variable':
-            self.walker.string_variables.default_from(read, parts[0][1])
+            self.string_variables.default_from(read, parts[0][1])
 
     def _on_name_resolve(self, cursor, ctx, stack, api, name, arguments):
         """``nh.resolveName("out")``: a value, read where it is used.
 
         The call makes no fact; the string variable set to it takes the
         name in the namespace of the handle (StringVariables.assignment).
-        So does ``ros::this_node::getName()``: the name ``~`` (walker.topic,
+        So does ``ros::this_node::getName()``: the name ``~`` (strings.written_name,
         strings.string_parts).
         """
 
     def _on_node_name(self, cursor, ctx, stack, api, name, arguments):
-        node_name, literal = self.walker.topic(
-            self.walker.argument(arguments, api.name_arg))
+        node_name, literal = written_name(
+            role_argument(arguments, api.name_arg))
         namespace = None
-        argument = self.walker.argument(arguments, api.namespace_arg) \
+        argument = role_argument(arguments, api.namespace_arg) \
             if api.namespace_arg is not None else None
         # Node("name", options) has no namespace argument
         if argument is not None and is_string(argument):
-            namespace, ns_literal = self.walker.topic(argument)
+            namespace, ns_literal = written_name(argument)
             namespace = namespace if ns_literal else None
         name_param = None
         if not literal:
             # Base(const std::string & name) : Node(name): the name the
             # callers of Base pass
-            handle = first_handle(self.walker.argument(arguments, api.name_arg))
+            handle = first_handle(role_argument(arguments, api.name_arg))
             if handle is not None and handle.kind == CK.PARM_DECL:
                 name_param = handle.get_usr()
-        self.facts.node_names.append(NodeNameFact(
-            function=ctx.function, name=node_name if literal else None,
-            namespace=namespace, location=self.walker.location(cursor),
-            name_param=name_param))
+        fact_builder.add_node_name(
+            self.facts, function=ctx.function, name=node_name if literal else None,
+            namespace=namespace, location=self.places.location(cursor),
+            name_param=name_param)
 
     def _on_timed_publisher(self, cursor, ctx, stack, api, name, arguments):
         """An object publishing from a timer of its own (ROS 2 Updater).
@@ -434,34 +436,34 @@ class RosRoles:
         Recorded as what it does: a timer whose callback (a function made
         up for it, at the construction) publishes through the object.
         """
-        if not self.walker.ros2:
+        if not self.places.ros2:
             return  # the ROS 1 Updater publishes only when told to
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is None:
             return
-        location = self.walker.location(cursor)
+        location = self.places.location(cursor)
         # what the real timer calls; the id is unique per object
         callback = f'{api.label}::update@{location}'
-        self.facts.functions.append(Function(
-            id=callback, name=f'{api.label}::update', location=location))
-        period = self.walker.argument(arguments, api.period_arg)
+        fact_builder.add_function(
+            self.facts, id=callback, name=f'{api.label}::update', location=location)
+        period = role_argument(arguments, api.period_arg)
         seconds = evaluate_number(period) if period is not None \
             else api.default_period
         rate_hz = recorder.rate_of_period(seconds)
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=api.label, callback=callback,
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=api.label, callback=callback,
             period=expression_text(period) if period is not None
             else str(api.default_period),
-            rate_hz=rate_hz, location=location))
-        self.facts.publish_sites.append(PublishSite(
-            function=callback, api=api.label, handle=target.get_usr(),
-            location=location))
+            rate_hz=rate_hz, location=location)
+        fact_builder.add_publish_site(
+            self.facts, function=callback, api=api.label, handle=target.get_usr(),
+            location=location)
 
     def _on_client(self, cursor, ctx, stack, api, name, arguments):
-        service, _ = self.walker.topic(self.walker.argument(arguments, api.name_arg))
-        self.facts.clients.append(ClientFact(
-            function=ctx.function, api=name, name=service,
-            location=self.walker.location(cursor)))
+        service, _ = written_name(role_argument(arguments, api.name_arg))
+        fact_builder.add_client(
+            self.facts, function=ctx.function, api=name, name=service,
+            location=self.places.location(cursor))
 
     def _on_timer(self, cursor, ctx, stack, api, name, arguments):
         made = self._timer_options(arguments)
@@ -470,17 +472,17 @@ class RosRoles:
             # TimerOptions(period, callback, queue, ...) it was made with
             api = dataclasses.replace(api, period_arg=0, callback_arg=1)
             arguments = made
-        callback, _ = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg))
+        callback, _ = self.resolve_callback(
+            role_argument(arguments, api.callback_arg))
         if made is not None and callback:
-            self.walker.stored_then_registered.add(callback)
-        period = self.walker.argument(arguments, api.period_arg)
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=ros_api.api_label(name),
+            self.stored_then_registered.add(callback)
+        period = role_argument(arguments, api.period_arg)
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=ros_api.api_label(name),
             callback=callback,
             period=expression_text(period) if period is not None else '',
             rate_hz=_period_rate_hz(period),
-            location=self.walker.location(cursor)))
+            location=self.places.location(cursor))
 
     def _timer_options(self, arguments):
         """The arguments a timer's options object was constructed with."""
@@ -499,17 +501,16 @@ class RosRoles:
         return None
 
     def _on_service(self, cursor, ctx, stack, api, name, arguments):
-        argument = self.walker.argument(arguments, api.name_arg)
-        service, literal = self.walker.topic(argument)
-        callback, _ = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg))
-        fact = ServiceFact(
-            function=ctx.function, api=name, name=service,
-            callback=callback, location=self.walker.location(cursor))
-        self.facts.services.append(fact)
+        argument = role_argument(arguments, api.name_arg)
+        service, literal = written_name(argument)
+        callback, _ = self.resolve_callback(
+            role_argument(arguments, api.callback_arg))
+        fact = fact_builder.add_service(
+            self.facts, function=ctx.function, api=name, name=service,
+            callback=callback, location=self.places.location(cursor))
         handle = first_handle(argument) if not literal else None
         if handle is not None:
-            self.walker.string_variables.name_from(fact, handle.get_usr())
+            self.string_variables.name_from(fact, handle.get_usr())
 
     def _on_action_server(self, cursor, ctx, stack, api, name, arguments):
         self._action(cursor, ctx, stack, api, name, arguments, 'server')
@@ -518,20 +519,20 @@ class RosRoles:
         self._action(cursor, ctx, stack, api, name, arguments, 'client')
 
     def _action(self, cursor, ctx, stack, api, name, arguments, role):
-        action, literal = self.walker.topic(
-            self.walker.argument(arguments, api.name_arg)) \
+        action, literal = written_name(
+            role_argument(arguments, api.name_arg)) \
             if api.name_arg is not None else (None, False)
         callbacks = self._callbacks(arguments, api.callback_arg) \
             if api.callback_arg is not None else []
         is_registration = api.name_arg is None
         target = first_handle(call_object(cursor)) if is_registration \
-            else self.walker.target(cursor, stack)
-        self.facts.actions.append(ActionFact(
-            function=ctx.function, api=ros_api.api_label(name), role=role,
+            else stored_target(cursor, stack)
+        fact_builder.add_action(
+            self.facts, function=ctx.function, api=ros_api.api_label(name), role=role,
             name=action, callbacks=callbacks,
             handle=target.get_usr() if target is not None else None,
-            location=self.walker.location(cursor) if not is_registration
-            else 'registration:' + self.walker.location(cursor)))
+            location=self.places.location(cursor) if not is_registration
+            else 'registration:' + self.places.location(cursor))
         if action is not None and api.action_inputs:
             self._action_inputs(cursor, ctx, api, name, arguments, action,
                                 literal, callbacks, target)
@@ -560,30 +561,30 @@ class RosRoles:
             msg_type = f'{action_type}{suffix.capitalize()}' \
                 if action_type.endswith('Action') and suffix == 'goal' \
                 else 'actionlib_msgs::GoalID' if suffix == 'cancel' else None
-            self.facts.subscribers.append(SubscriberFact(
-                function=ctx.function, api=ros_api.api_label(name),
+            fact_builder.add_subscriber(
+                self.facts, function=ctx.function, api=ros_api.api_label(name),
                 topic=f'{action}/{suffix}', topic_is_literal=literal,
                 msg_type=msg_type,
                 handle=target.get_usr() if target is not None else None,
                 # (cancel runs the preempt callback, registered apart)
                 callback=callbacks[0] if callbacks and suffix == 'goal'
                 else None,
-                location=self.walker.location(cursor), nh=nh,
+                location=self.places.location(cursor), nh=nh,
                 topic_handle=handle,
                 topic_affixes=[prefix, f'{rest}/{suffix}'] if handle
-                else None))
+                else None)
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
-        self.walker.publish_site(
-            ctx, stack, cursor, name,
+        record_publish_site(
+            self.facts, self.places.location, ctx, stack, cursor, name,
             handle.get_usr() if handle is not None else None)
 
     def _on_rate(self, cursor, ctx, stack, api, name, arguments):
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is None:
             return  # a temporary Rate paces nothing
-        argument = self.walker.argument(arguments, api.period_arg)
+        argument = role_argument(arguments, api.period_arg)
         rate_hz = None
         if argument is not None:
             if is_chrono_duration(argument.type):
@@ -592,19 +593,20 @@ class RosRoles:
                 rate_hz = _period_rate_hz(argument)
             else:
                 rate_hz = evaluate_number(argument)
-        self.facts.rates.append(RateObject(
-            handle=target.get_usr(), rate_hz=rate_hz,
+        fact_builder.add_rate(
+            self.facts, handle=target.get_usr(), rate_hz=rate_hz,
             expression=expression_text(argument) if argument else '',
-            location=self.walker.location(cursor)))
+            location=self.places.location(cursor))
 
     def _on_rate_sleep(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
-        paced = self.walker.paced_loop(ctx, cursor, handle)
+        paced = paced_loop(ctx, cursor, handle)
         if paced is None:
             return
         loop_id, loop = paced
-        self.walker.record_paced_loop(
-            ctx, loop_id=loop_id, loop=loop, clock=handle, sleep=cursor)
+        record_paced_loop(
+            self.facts, self.places.location, ctx, loop_id=loop_id,
+            loop=loop, clock=handle, sleep=cursor)
 
     def _on_sync(self, cursor, ctx, stack, api, name, arguments):
         inputs = []
@@ -615,23 +617,23 @@ class RosRoles:
         if name.endswith('::connectInput'):
             target = first_handle(call_object(cursor))
         else:
-            target = self.walker.target(cursor, stack)
-        self.facts.syncs.append(SyncFact(
-            handle=target.get_usr() if target is not None else None,
-            inputs=inputs, location=self.walker.location(cursor)))
+            target = stored_target(cursor, stack)
+        fact_builder.add_sync(
+            self.facts, handle=target.get_usr() if target is not None else None,
+            inputs=inputs, location=self.places.location(cursor))
 
     def _on_register_callback(self, cursor, ctx, stack, api, name,
                               arguments):
-        callback, _ = self.walker.resolve_callback(
-            self.walker.argument(arguments, api.callback_arg))
+        callback, _ = self.resolve_callback(
+            role_argument(arguments, api.callback_arg))
         handle = first_handle(call_object(cursor))
-        self.facts.registrations.append(Registration(
-            function=ctx.function,
+        fact_builder.add_registration(
+            self.facts, function=ctx.function,
             handle=handle.get_usr() if handle is not None else None,
-            callback=callback, location=self.walker.location(cursor)))
+            callback=callback, location=self.places.location(cursor))
 
     def _on_node_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is None:
             return
         namespace = ''
@@ -643,50 +645,50 @@ class RosRoles:
             if len(written) > 1:
                 # NodeHandle(parent, "arm"); a sub-namespace not known
                 # is marked so
-                sub, literal = self.walker.topic(written[1])
+                sub, literal = written_name(written[1])
                 namespace += '|' + (
                     sub if literal else UNKNOWN_NAMESPACE + (sub or '?'))
         elif named:
             # ros::NodeHandle nh("arm") / nh(real_name): a string variable
             # set once is its literal (see StringVariables.resolve); a name
             # not known is marked so, never taken for the node's namespace
-            namespace, literal = self.walker.topic(written[0])
+            namespace, literal = written_name(written[0])
             if not literal:
                 variable = first_handle(written[0])
                 namespace = UNKNOWN_NAMESPACE + (namespace or '?')
                 if variable is not None:
-                    fact = NodeHandleFact(
-                        handle=target.get_usr(), namespace=namespace)
-                    self.walker.string_variables.namespace_from(
+                    fact = fact_builder.add_node_handle(
+                        self.facts, handle=target.get_usr(),
+                        namespace=namespace)
+                    self.string_variables.namespace_from(
                         fact, variable.get_usr())
-                    self.facts.node_handles.append(fact)
                     return
         # (ImageTransport(shared_from_this()): a node, not a namespace)
-        self.facts.node_handles.append(NodeHandleFact(
-            handle=target.get_usr(), namespace=namespace or ''))
+        fact_builder.add_node_handle(
+            self.facts, handle=target.get_usr(), namespace=namespace or '')
 
     def _on_sub_node(self, cursor, ctx, stack, api, name, arguments):
         """``node->create_sub_node("arm")``: a handle in a sub-namespace."""
-        target = self.walker.target(cursor, stack)
-        sub, literal = self.walker.topic(self.walker.argument(arguments, api.name_arg))
+        target = stored_target(cursor, stack)
+        sub, literal = written_name(role_argument(arguments, api.name_arg))
         if target is None or not literal:
             return
         parent = self._namespace_of(cursor)
-        self.facts.node_handles.append(NodeHandleFact(
-            handle=target.get_usr(),
-            namespace=f'ref:{parent}|{sub}' if parent else sub))
+        fact_builder.add_node_handle(
+            self.facts, handle=target.get_usr(),
+            namespace=f'ref:{parent}|{sub}' if parent else sub)
 
     def _on_private_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(NodeHandleFact(
-                handle=target.get_usr(), namespace='~'))
+            fact_builder.add_node_handle(
+                self.facts, handle=target.get_usr(), namespace='~')
 
     def _on_public_handle(self, cursor, ctx, stack, api, name, arguments):
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         if target is not None:
-            self.facts.node_handles.append(NodeHandleFact(
-                handle=target.get_usr(), namespace=''))
+            fact_builder.add_node_handle(
+                self.facts, handle=target.get_usr(), namespace='')
 
 
 def _wrapped_call_object(call):

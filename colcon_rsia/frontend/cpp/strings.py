@@ -16,6 +16,7 @@ import clang.cindex as ci
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
+from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
 from colcon_rsia.frontend.cpp.cursors import handle_marker
@@ -23,7 +24,10 @@ from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
+from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import same_cursor
+from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
 
 CK = ci.CursorKind
 
@@ -31,8 +35,11 @@ CK = ci.CursorKind
 class StringVariables:
     """The string variables of one unit and the facts they name."""
 
-    def __init__(self, walker):  # noqa: D107
-        self.walker = walker
+    def __init__(self, facts, in_package):  # noqa: D107
+        # the unit's facts, which the strings resolve in place
+        self.facts = facts
+        # whether a declaration is the package's own
+        self._in_package = in_package
         # string variables/fields: the literals they are set to, and those
         # also set otherwise (see resolve)
         self._values = {}
@@ -108,8 +115,8 @@ class StringVariables:
             return None
         call, api = resolving
         marker = _resolving_marker(
-            call, api, lambda member: not self.walker.in_package(member))
-        name, literal = self.walker.topic(self.walker.argument(
+            call, api, lambda member: not self._in_package(member))
+        name, literal = written_name(role_argument(
             list(call.get_arguments()), api.name_arg))
         if marker is None or not literal:
             return None
@@ -127,8 +134,8 @@ class StringVariables:
             # namespace, when the handle is known
             call, api = resolving
             marker = _resolving_marker(
-                call, api, lambda member: not self.walker.in_package(member))
-            expression = self.walker.argument(
+                call, api, lambda member: not self._in_package(member))
+            expression = role_argument(
                 list(call.get_arguments()), api.name_arg)
             if marker is None or expression is None:
                 self._written.add(usr)
@@ -138,7 +145,7 @@ class StringVariables:
                     string_parts(expression) == [('variable', usr)]:
                 self._resolved_again.setdefault(usr, set()).add(marker)
                 return
-        value, literal = self.walker.topic(expression)
+        value, literal = written_name(expression)
         if literal:
             self._values.setdefault(usr, set()).add(value)
             self._resolved_in.setdefault(usr, set()).add(marker)
@@ -169,11 +176,11 @@ class StringVariables:
         variable also set otherwise, read from a parameter or handed to a
         function of the package is left as written.
         """
-        endpoints = self.walker.facts.publishers + \
-            self.walker.facts.subscribers
+        endpoints = self.facts.publishers + \
+            self.facts.subscribers
         bound = self._bound()
         written = (self._written - self._echoed(endpoints)) | {
-            r.handle for r in self.walker.facts.param_reads if r.handle} | \
+            r.handle for r in self.facts.param_reads if r.handle} | \
             bound
 
         def value(handle):
@@ -222,7 +229,7 @@ class StringVariables:
         handles bound otherwise (``std::bind``) count as passed.
         """
         read_only = self._passed_read_only - self._passed_writable
-        return {b.handle for b in self.walker.facts.bindings} - read_only
+        return {b.handle for b in self.facts.bindings} - read_only
 
     def _echoed(self, endpoints):
         """Variables set only to the topic name of the endpoint they name.
@@ -268,7 +275,7 @@ class StringVariables:
                 handle in self._written_otherwise or \
                 handle in self._values or handle in bound or \
                 any(r.handle == handle
-                    for r in self.walker.facts.param_reads):
+                    for r in self.facts.param_reads):
             return handle
         return next(iter(copies))
 
@@ -333,6 +340,36 @@ def _resolving_marker(call, api, foreign):
     if not qualified_name(call.referenced).startswith(_ROS1_HANDLE):
         return ''  # a free function or a ROS 2 interface: the node's
     return handle_marker(call_object(call), foreign)
+
+
+def written_name(argument):
+    """Return (a name argument as written, is it a literal).
+
+    One string literal and no variable: its text; the node's fully
+    qualified name: its private namespace ``~``; else the expression's
+    text (not a literal), None for no argument.
+    """
+    if argument is None:
+        return None, False
+    if is_node_fqn(argument):
+        return '~', True  # the node's own name: its private namespace
+    literals = []
+    has_variable = False
+    for current in [argument] + list(walk_preorder(argument)):
+        if current.kind == CK.STRING_LITERAL:
+            literals.append(current)
+        elif current.kind in REF_KINDS and current.referenced is not None \
+                and current.referenced.kind in HANDLE_KINDS:
+            has_variable = True
+        elif current.kind == CK.CALL_EXPR and \
+                current.referenced is not None and \
+                current.referenced.kind in VALUE_FUNCTION_KINDS:
+            # get_parameter("topic").as_string(): a value, not a name
+            has_variable = True
+    if len(literals) == 1 and not has_variable:
+        return unquote(literals[0].spelling), True
+    text = expression_text(argument)
+    return (text or None), False
 
 
 def is_node_fqn(expression):

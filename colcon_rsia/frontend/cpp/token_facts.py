@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -36,8 +37,6 @@ from colcon_rsia.frontend.cpp.token_text import OPENING
 from colcon_rsia.frontend.cpp.token_text import seconds_of
 from colcon_rsia.frontend.cpp.token_text import string_literal
 from colcon_rsia.frontend.cpp.token_text import tokens_of
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import Function
 from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 
 CK = ci.CursorKind
@@ -354,10 +353,10 @@ class _Reader(CallFacts):
         lambda_id = self._lambda_id(i)
         if lambda_id not in self.known_functions:
             self.known_functions.add(lambda_id)
-            self.facts.functions.append(Function(
-                id=lambda_id,
+            fact_builder.add_function(
+                self.facts, id=lambda_id,
                 name=f'lambda@{self.function_.relative}:{tokens[i].line}',
-                location=self._location(i), class_id=None))
+                location=self._location(i), class_id=None)
             if (ctx.function, tokens[i].offset) not in self.consumed:
                 self._call_edge(ctx, lambda_id, i, kind='ref')
         self._scan(j + 1, body_end, recorder.Context(
@@ -766,6 +765,6 @@ class _Reader(CallFacts):
         if any(c.caller == ctx.function and c.callee == callee and
                c.location == location for c in self.facts.calls):
             return
-        self.facts.calls.append(Call(
-            caller=ctx.function, callee=callee, location=location,
-            loops=ctx.loop_ids(), kind=kind))
+        fact_builder.add_call(
+            self.facts, caller=ctx.function, callee=callee, location=location,
+            loops=ctx.loop_ids(), kind=kind)

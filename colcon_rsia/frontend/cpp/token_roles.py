@@ -12,6 +12,7 @@ fact the AST would have made (``origin='tokens'``).
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
@@ -19,13 +20,6 @@ from colcon_rsia.frontend.cpp.token_text import arithmetic
 from colcon_rsia.frontend.cpp.token_text import joined_text
 from colcon_rsia.frontend.cpp.token_text import seconds_of
 from colcon_rsia.frontend.cpp.token_text import tokens_of
-from colcon_rsia.frontend.facts import NodeNameFact
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import PublishSite
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import ServiceFact
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import TimerFact
 from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 
 CK = ci.CursorKind
@@ -155,9 +149,9 @@ class CallFacts:
             callback for position in self._current['api'].status_callback_args
             for callback in [self._callback(
                 self._argument(arguments, position), ctx)[0]] if callback]
-        self.facts.publishers.append(PublisherFact(
-            handle_name=handle_name, status_callbacks=status_callbacks,
-            **common))
+        fact_builder.add_publisher(
+            self.facts, handle_name=handle_name, status_callbacks=status_callbacks,
+            **common)
 
     def _subscriber(self, arguments, ctx):
         if self._is_recorded('subscriber'):
@@ -169,8 +163,8 @@ class CallFacts:
         common, _ = self._endpoint(arguments, ctx, declaration)
         if common['topic'] is None:
             return
-        self.facts.subscribers.append(SubscriberFact(
-            callback=callback, **common))
+        fact_builder.add_subscriber(
+            self.facts, callback=callback, **common)
 
     def _timer(self, arguments, ctx):
         if self._is_recorded('timer'):
@@ -183,11 +177,11 @@ class CallFacts:
         seconds = seconds_of(tokens)
         if seconds is not None:
             seconds *= api.period_unit
-        self.facts.timers.append(TimerFact(
-            function=ctx.function, api=ros_api.api_label(self._current['name']),
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api=ros_api.api_label(self._current['name']),
             callback=callback, period=joined_text(tokens),
             rate_hz=recorder.rate_of_period(seconds), location=self._here(),
-            origin=TOKENS))
+            origin=TOKENS)
 
     def _service(self, arguments, ctx):
         if self._is_recorded('service'):
@@ -196,17 +190,17 @@ class CallFacts:
         name, _, _ = self._topic(self._argument(arguments, api.name_arg))
         callback, _ = self._callback(
             self._argument(arguments, api.callback_arg), ctx)
-        self.facts.services.append(ServiceFact(
-            function=ctx.function, api=self._current['name'], name=name,
-            callback=callback, location=self._here()))
+        fact_builder.add_service(
+            self.facts, function=ctx.function, api=self._current['name'], name=name,
+            callback=callback, location=self._here())
 
     def _publish(self, arguments, ctx):
         if self._is_recorded('publish'):
             return
-        self.facts.publish_sites.append(PublishSite(
-            function=ctx.function, api=self._current['name'],
+        fact_builder.add_publish_site(
+            self.facts, function=ctx.function, api=self._current['name'],
             handle=self._object_handle(self._current['object']),
-            location=self._here(), loops=ctx.loop_ids(), origin=TOKENS))
+            location=self._here(), loops=ctx.loop_ids(), origin=TOKENS)
 
     def _node_name(self, arguments, ctx):
         api = self._current['api']
@@ -214,9 +208,9 @@ class CallFacts:
         if not literal or any(f.location == self._here()
                               for f in self.facts.node_names):
             return
-        self.facts.node_names.append(NodeNameFact(
-            function=ctx.function, name=name, namespace=None,
-            location=self._here()))
+        fact_builder.add_node_name(
+            self.facts, function=ctx.function, name=name, namespace=None,
+            location=self._here())
 
     def _rate_type(self, i):
         """Whether the declaration at `i` is of an adaptive-sleep class."""
@@ -245,9 +239,9 @@ class CallFacts:
             if arguments else []
         hz = arithmetic([t.text for t in tokens])
         self.rate_handles.add(handle)
-        self.facts.rates.append(RateObject(
-            handle=handle, rate_hz=recorder.round_rate(hz),
-            expression=joined_text(tokens), location=location))
+        fact_builder.add_rate(
+            self.facts, handle=handle, rate_hz=recorder.round_rate(hz),
+            expression=joined_text(tokens), location=location)
 
     def _rate_sleep(self, arguments, ctx):
         i = self._current['index']

@@ -11,47 +11,40 @@ functions, calls between them, references, lambdas and the callbacks they
 are registered as. A ROS call is recognised by the qualified name of the
 declaration it calls, looked up in :mod:`colcon_rsia.frontend.ros_api`,
 and handed to the handler of its role (:mod:`.roles`, :mod:`.clocks`);
-calls of the workspace's wrappers go to :mod:`.wrappers`. The answers the
-handlers ask for -- a name argument as written, the callback an argument
-names, the variable a created object is stored in -- are public methods
-here.
+calls of the workspace's wrappers go to :mod:`.wrappers`. The helpers get
+what they use, never the walker: the unit's facts, the
+:class:`~.questions.Places` of the walk, the callback resolution of
+:mod:`.callbacks`; a name argument as written, the variable a created
+object is stored in, are answered from the cursors alone
+(:mod:`.questions`, :mod:`.strings`, :mod:`.cursors`).
 """
 
-import os
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import clocks
+from colcon_rsia.frontend.cpp import questions
 from colcon_rsia.frontend.cpp import roles
 from colcon_rsia.frontend.cpp import strings
 from colcon_rsia.frontend.cpp import token_facts
 from colcon_rsia.frontend.cpp import wrappers
 from colcon_rsia.frontend.cpp.callbacks import Callbacks
 from colcon_rsia.frontend.cpp.callbacks import is_callable
-from colcon_rsia.frontend.cpp.const_eval import binary_operator
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import aliased_class
 from colcon_rsia.frontend.cpp.cursors import base_class_names
 from colcon_rsia.frontend.cpp.cursors import call_arguments
-from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
-from colcon_rsia.frontend.cpp.cursors import continue_before
-from colcon_rsia.frontend.cpp.cursors import declared_in
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
-from colcon_rsia.frontend.cpp.cursors import expression_text
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
-from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
 from colcon_rsia.frontend.cpp.cursors import initializer
-from colcon_rsia.frontend.cpp.cursors import is_callable_argument
-from colcon_rsia.frontend.cpp.cursors import is_duration
 from colcon_rsia.frontend.cpp.cursors import is_logical
 from colcon_rsia.frontend.cpp.cursors import is_node_handle
-from colcon_rsia.frontend.cpp.cursors import is_string
-from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
 from colcon_rsia.frontend.cpp.cursors import made_class
 from colcon_rsia.frontend.cpp.cursors import overload_candidate
@@ -62,37 +55,14 @@ from colcon_rsia.frontend.cpp.cursors import REPAIRED_CONSTRUCTOR
 from colcon_rsia.frontend.cpp.cursors import REPAIRED_PREFIX
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
-from colcon_rsia.frontend.cpp.cursors import STATEMENT_KINDS
 from colcon_rsia.frontend.cpp.cursors import template_member
-from colcon_rsia.frontend.cpp.cursors import top_level_scopes
-from colcon_rsia.frontend.cpp.cursors import VALUE_FUNCTION_KINDS
-from colcon_rsia.frontend.cpp.cursors import walk_preorder
-from colcon_rsia.frontend.cpp.cursors import written_arguments
-from colcon_rsia.frontend.cpp.every_nth import every_nth
-from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
 from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
-from colcon_rsia.frontend.cpp.strings import unquote
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import HandleAlias
-from colcon_rsia.frontend.facts import NodeHandleFact
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import PublishSite
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import TuFacts
+from colcon_rsia.frontend.cpp.questions import dependent_call_name
+from colcon_rsia.frontend.cpp.questions import MemberInit
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
-
-
-class _MemberInit:
-    """Stands on the expression stack for a constructor's member init."""
-
-    kind = None
-
-    def __init__(self, member):
-        self.member = member
 
 
 def extract_facts(tu, *, package_path, source, external_wrappers=None):
@@ -105,38 +75,33 @@ def extract_facts(tu, *, package_path, source, external_wrappers=None):
       workspace's other packages, for calls of functions with no body here
     :rtype: colcon_rsia.frontend.facts.TuFacts
     """
-    walker = _Walker(package_path, TuFacts(source=source),
+    walker = _Walker(package_path, fact_builder.unit_facts(source),
                      external_wrappers=external_wrappers)
     walker.walk(tu)
     walker.facts.diagnostics = walker.problems + walker.facts.diagnostics
     return walker.facts
 
 
-class _Walker(Callbacks):
+class _Walker:
     """Collects the facts of one TU; see :func:`extract_facts`."""
 
     def __init__(self, package_path, facts, external_wrappers=None):
-        self.package_path = package_path.rstrip('/') + '/'
         self.facts = facts
-        self._in_package_cache = {}
-        # (file, offset) of expressions used as a registered callback, so
-        # that they do not also count as a plain function reference
-        self._consumed = set()
+        # where cursors are, the unit's ROS version: what every helper asks
+        self.places = questions.Places(package_path)
         self._lambdas_in_variables = set()
-        # callbacks an options object held before it was registered
-        # (`createTimer(ops)`): named, not called, where the object was made
-        self.stored_then_registered = set()
-        self._registered = set()
-        self.ros2 = False
-        # callables stored in std::function variables/fields:
-        # {variable USR: function ids assigned to it}
-        self._callables = {}
         # what string variables hold, resolved at the end of the walk
-        self.string_variables = strings.StringVariables(self)
+        self.string_variables = strings.StringVariables(
+            facts, self.places.in_package)
+        # the callbacks arguments name, what calls bind to parameters
+        self.callbacks = Callbacks(facts, self.places, self.string_variables)
+        resolve_callback = self.callbacks.resolve_callback
         # declarations whose walk failed: one line each, the rest goes on
         self.problems = []
         # the workspace's wrapper functions this unit calls
-        self._wrappers = wrappers.Summaries(self, external_wrappers)
+        self._wrappers = wrappers.Summaries(
+            facts, self.places, resolve_callback=resolve_callback,
+            problems=self.problems, external=external_wrappers)
         # {function id: definition} of the package's functions walked
         self._definitions = {}
         # {class name: [definition]} of the package's classes
@@ -146,48 +111,17 @@ class _Walker(Callbacks):
         # by where its `)` ends: its callee's spelling may be an operator's)
         self._resolved_calls = {}
         # Qt and boost::asio timers, sleep_until loops
-        self._clocks = clocks.OtherClocks(self)
+        self._clocks = clocks.OtherClocks(
+            facts, self.places, resolve_callback=resolve_callback)
         # what each role of ros_api does to the facts
         self._handlers = {
-            **roles.RosRoles(self).handlers(),
+            **roles.RosRoles(
+                facts, self.places, resolve_callback=resolve_callback,
+                string_variables=self.string_variables,
+                stored_then_registered=(
+                    self.callbacks.stored_then_registered)).handlers(),
             **self._clocks.handlers(),
         }
-
-    # --- locations ---------------------------------------------------------
-
-    def in_package(self, cursor):
-        file = cursor.location.file
-        if file is None:
-            return False
-        name = file.name
-        cached = self._in_package_cache.get(name)
-        if cached is None:
-            cached = os.path.abspath(name).startswith(self.package_path)
-            self._in_package_cache[name] = cached
-        return cached
-
-    def is_workspace_declaration(self, cursor):
-        """Whether a declaration is in another package of the workspace.
-
-        Its body is the workspace's code: not a system, model or stand-in
-        header.
-        """
-        file = cursor.location.file
-        if file is None:
-            return False
-        name = os.path.abspath(file.name)
-        return not name.startswith(('/usr/', '/opt/', MODEL_HEADERS_DIR)) \
-            and '/rsia/stubs/' not in name and '/rsia_model/' not in name
-
-    def relpath(self, cursor):
-        return self.relative_path(cursor.location.file.name)
-
-    def relative_path(self, file_name):
-        """A file's path relative to the package (absolute outside it)."""
-        name = os.path.abspath(file_name)
-        if name.startswith(self.package_path):
-            return name[len(self.package_path):]
-        return name
 
     def _note_resolved(self, cursor):
         """Remember a call the AST resolved (see token_facts)."""
@@ -196,35 +130,23 @@ class _Walker(Callbacks):
             ends = self._resolved_calls.setdefault(start.file.name, {})
             ends[end.offset] = min(start.offset, ends.get(end.offset, start.offset))
 
-    def location(self, cursor):
-        if cursor.location.file is None:
-            return '?:0'
-        return f'{self.relpath(cursor)}:{cursor.location.line}'
-
-    def key(self, cursor):
-        file = cursor.location.file
-        return (file.name if file else '', cursor.extent.start.offset)
-
-    def loop_id(self, cursor):
-        return f'{self.relpath(cursor)}@{cursor.extent.start.offset}'
-
     # --- declarations ------------------------------------------------------
 
     def walk(self, tu):
         self.facts.plugin_exports.extend(plugin_exports(tu.spelling))
         # a ROS 2 unit: some APIs (diagnostic_updater) keep their ROS 1
         # names but behave differently
-        self.ros2 = any(
+        self.places.ros2 = any(
             c.kind == CK.NAMESPACE and c.spelling == 'rclcpp'
             for c in tu.cursor.get_children())
         for cursor in tu.cursor.get_children():
-            if self.in_package(cursor):
+            if self.places.in_package(cursor):
                 self._declaration(cursor)
         # what the AST lost of the bodies walked, from their tokens
         token_facts.recover_facts(
             tu, self.facts, definitions=self._definitions,
-            classes=self._classes, relpath=self.relative_path,
-            ros2=self.ros2, resolved_calls=self._resolved_calls)
+            classes=self._classes, relpath=self.places.relative_path,
+            ros2=self.places.ros2, resolved_calls=self._resolved_calls)
         if len(self.problems) > MAX_DIAGNOSTICS_PER_TU:
             lost = len(self.problems) - MAX_DIAGNOSTICS_PER_TU
             del self.problems[MAX_DIAGNOSTICS_PER_TU:]
@@ -233,11 +155,11 @@ class _Walker(Callbacks):
         # is a root, not something its defining function calls
         self.facts.calls = [
             c for c in self.facts.calls
-            if not (c.kind == 'ref' and c.callee in self._registered and
+            if not (c.kind == 'ref' and c.callee in self.callbacks.registered and
                     (c.callee in self._lambdas_in_variables or
-                     c.callee in self.stored_then_registered))]
+                     c.callee in self.callbacks.stored_then_registered))]
         self._clocks.finish()
-        self._resolve_stored_callbacks()
+        self.callbacks.resolve_stored_callbacks()
         self.string_variables.resolve()
         self.facts.wrappers = self._wrappers.exported(self._definitions)
         # cursors keep their unit's AST alive: not past the walk
@@ -261,7 +183,7 @@ class _Walker(Callbacks):
                     [name, base] for base in base_class_names(cursor)
                     if [name, base] not in self.facts.class_bases)
             for child in cursor.get_children():
-                if self.in_package(child):
+                if self.places.in_package(child):
                     self._declaration(child)
             return
         if kind in (CK.TYPEDEF_DECL, CK.TYPE_ALIAS_DECL):
@@ -284,7 +206,7 @@ class _Walker(Callbacks):
                     self._initialized_string(cursor)
         except Exception as e:  # noqa: B902
             self.problems.append(
-                f'{self.location(cursor)}: {cursor.spelling or kind.name} '
+                f'{self.places.location(cursor)}: {cursor.spelling or kind.name} '
                 f'not analysed (internal error: {type(e).__name__}: {e}); '
                 'please report it')
 
@@ -324,26 +246,26 @@ class _Walker(Callbacks):
         if ctx is None:
             return
         if is_callable(member):
-            self._store_callable(member, expression)
-        self._visit(expression, ctx, [_MemberInit(member)])
+            self.callbacks.store_callable(member, expression)
+        self._visit(expression, ctx, [MemberInit(member)])
 
     def _function(self, cursor):
         fid = cursor.get_usr()
         self._definitions[fid] = cursor
         params = [c for c in cursor.get_children() if c.kind == CK.PARM_DECL]
-        self.facts.functions.append(Function(
-            id=fid, name=qualified_name(cursor),
-            location=self.location(cursor),
+        fact_builder.add_function(
+            self.facts, id=fid, name=qualified_name(cursor),
+            location=self.places.location(cursor),
             class_id=self._class_id(cursor),
-            params=[c.get_usr() for c in params]))
+            params=[c.get_usr() for c in params])
         for param in params:
             if is_node_handle(param):
                 # a NodeHandle its callers give: their handle's namespace
                 # when the node's calls show it (node_facts), else one the
                 # analysis does not know, never the root's
-                self.facts.node_handles.append(NodeHandleFact(
-                    handle=param.get_usr(),
-                    namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}'))
+                fact_builder.add_node_handle(
+                    self.facts, handle=param.get_usr(),
+                    namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}')
         parent = cursor.semantic_parent
         owner = parent if parent is not None and \
             parent.kind in CLASS_KINDS else None
@@ -380,15 +302,15 @@ class _Walker(Callbacks):
                 common = dict(
                     function=function, api=class_name, topic=topic,
                     topic_is_literal=True,
-                    msg_type=self.table_msg_type(api.msg_type),
-                    handle=cursor.get_usr(), location=self.location(cursor),
+                    msg_type=self.places.table_msg_type(api.msg_type),
+                    handle=cursor.get_usr(), location=self.places.location(cursor),
                     class_id=class_id)
                 if api.role == ros_api.DECLARED_PUBLISHER:
-                    self.facts.publishers.append(PublisherFact(
-                        handle_name=cursor.spelling, **common))
+                    fact_builder.add_publisher(
+                        self.facts, handle_name=cursor.spelling, **common)
                 else:
-                    self.facts.subscribers.append(SubscriberFact(
-                        callback=None, **common))
+                    fact_builder.add_subscriber(
+                        self.facts, callback=None, **common)
             return
 
     # --- function bodies ---------------------------------------------------
@@ -408,13 +330,13 @@ class _Walker(Callbacks):
             self._initialized_string(cursor)
             init = initializer(cursor)
             if init is not None and init.kind == CK.LAMBDA_EXPR:
-                self._lambdas_in_variables.add(self._lambda_id(init))
+                self._lambdas_in_variables.add(self.places.lambda_id(init))
             elif init is not None and is_callable(cursor):
-                self._store_callable(cursor, init)
+                self.callbacks.store_callable(cursor, init)
         children = child_cursors(cursor)
         stack.append(cursor)
         if kind in LOOP_KINDS:
-            with ctx.loop(self.loop_id(cursor), cursor):
+            with ctx.loop(self.places.loop_id(cursor), cursor):
                 for child in children:
                     self._visit(child, ctx, stack)
         elif children and (
@@ -455,24 +377,20 @@ class _Walker(Callbacks):
         handle = first_handle(init)
         # the package's own handles: not the fields of a message
         if handle is not None and handle != variable and \
-                self.in_package(handle):
-            self.facts.handle_aliases.append(HandleAlias(
-                alias=variable.get_usr(), handle=handle.get_usr(),
-                location=self.location(variable)))
-
-    def _lambda_id(self, cursor):
-        loc = cursor.location
-        return f'lambda@{self.relpath(cursor)}:{loc.line}:{loc.column}'
+                self.places.in_package(handle):
+            fact_builder.add_handle_alias(
+                self.facts, alias=variable.get_usr(), handle=handle.get_usr(),
+                location=self.places.location(variable))
 
     def _lambda(self, cursor, ctx):
-        lid = self._lambda_id(cursor)
-        self.facts.functions.append(Function(
-            id=lid, name=f'lambda@{self.location(cursor)}',
-            location=self.location(cursor),
+        lid = self.places.lambda_id(cursor)
+        fact_builder.add_function(
+            self.facts, id=lid, name=f'lambda@{self.places.location(cursor)}',
+            location=self.places.location(cursor),
             class_id=None,
             params=[c.get_usr() for c in cursor.get_children()
-                    if c.kind == CK.PARM_DECL]))
-        if self.key(cursor) not in self._consumed:
+                    if c.kind == CK.PARM_DECL])
+        if self.places.key(cursor) not in self.callbacks.consumed:
             self._add_call(ctx, lid, cursor, kind='ref')
         inner = recorder.Context(lid, owner=ctx.owner)
         for child in cursor.get_children():
@@ -480,18 +398,18 @@ class _Walker(Callbacks):
                 self._visit(child, inner, [])
 
     def _add_call(self, ctx, callee, cursor, kind='call', virtual=None):
-        self.facts.calls.append(Call(
-            caller=ctx.function, callee=callee,
-            location=self.location(cursor), loops=ctx.loop_ids(), kind=kind,
-            virtual=virtual))
+        fact_builder.add_call(
+            self.facts, caller=ctx.function, callee=callee,
+            location=self.places.location(cursor), loops=ctx.loop_ids(), kind=kind,
+            virtual=virtual)
 
     def _reference(self, cursor, ctx, stack):
         """A function named but not called here: it may be called later."""
         ref = cursor.referenced
         if ref is None or ref.kind not in FUNCTION_KINDS or \
-                not self.in_package(ref):
+                not self.places.in_package(ref):
             return
-        if self.key(cursor) in self._consumed:
+        if self.places.key(cursor) in self.callbacks.consumed:
             return
         for parent in stack[-2:]:
             if getattr(parent, 'kind', None) == CK.CALL_EXPR and \
@@ -512,11 +430,11 @@ class _Walker(Callbacks):
             children = child_cursors(cursor)
             target = first_handle(children[0]) if children else None
             if target is not None and is_callable(target):
-                self._store_callable(target, children[-1])
+                self.callbacks.store_callable(target, children[-1])
             elif target is not None and len(children) > 1:
                 self.string_variables.assignment(target, children[-1])
         name = qualified_name(ref)
-        if ref.kind in FUNCTION_KINDS and self.in_package(ref) and \
+        if ref.kind in FUNCTION_KINDS and self.places.in_package(ref) and \
                 ros_api.lookup_call(name) is None:
             # (an API is the API wherever it is declared: in the package
             # that implements it, image_transport's own advertise() is one)
@@ -539,7 +457,7 @@ class _Walker(Callbacks):
             name, api = self._forwarded_constructor(cursor)
         if api is None:
             if ref.kind in FUNCTION_KINDS and \
-                    self.is_workspace_declaration(ref):
+                    self.places.is_workspace_declaration(ref):
                 self._wrappers.record_call(cursor, ctx, stack, ref)
             return
         arguments = call_arguments(cursor)
@@ -554,44 +472,13 @@ class _Walker(Callbacks):
         their name (see ros_api.METHODS_BY_NAME). So are they on a value
         whose type the model mode could not know (a catch-all).
         """
-        name = self.dependent_call_name(cursor)
+        name = dependent_call_name(cursor, ros2=self.places.ros2)
         if name is None:
             return
         self._note_resolved(cursor)
         api = ros_api.lookup_call(name)
         self._handlers[api.role](
             cursor, ctx, stack, api, name, call_arguments(cursor))
-
-    def dependent_call_name(self, cursor):
-        """The API a call on a template-dependent object names, or None."""
-        children = child_cursors(cursor)
-        callee = children[0] if children else None
-        while callee is not None and callee.kind == CK.UNEXPOSED_EXPR:
-            # (a static member's, decayed to a pointer: the catch-all's
-            # member templates are static)
-            inner = child_cursors(callee)
-            callee = inner[0] if len(inner) == 1 else None
-        if callee is None or callee.kind != CK.MEMBER_REF_EXPR:
-            return None
-        # a dependent member has no spelling: the name follows `.`/`->`,
-        # or the last `::` of `Base::create_publisher<M>(…)` (this->)
-        tokens = [t.spelling for t in source_tokens(callee)]
-        accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')] or \
-            top_level_scopes(tokens)
-        if not accesses:
-            return None
-        rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
-        if not rest:
-            return None
-        return ros_api.dependent_method(
-            rest[0], ros2=self.ros2, arguments=len(written_arguments(
-                call_arguments(cursor))))
-
-    def publish_site(self, ctx, stack, cursor, api, handle):
-        self.facts.publish_sites.append(PublishSite(
-            function=ctx.function, api=api, handle=handle,
-            location=self.location(cursor), loops=ctx.loop_ids(),
-            every=every_nth(stack + [cursor])))
 
     def _forwarded_package_constructor(self, cursor, ctx):
         """make_shared<C>(args) of a package class calls C's constructor.
@@ -602,7 +489,7 @@ class _Walker(Callbacks):
         (``std::make_shared<Talker>("talker")``).
         """
         declaration = made_class(cursor)
-        if declaration is None or not self.in_package(declaration):
+        if declaration is None or not self.places.in_package(declaration):
             return
         arguments = list(cursor.get_arguments())
         candidates = []
@@ -625,9 +512,9 @@ class _Walker(Callbacks):
         virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
         self._add_call(ctx, callee.get_usr(), cursor,
                        virtual=qualified_name(callee) if virtual else None)
-        self._bind_arguments(callee.get_usr(), arguments,
-                             caller=ctx.function)
-        self._bind_parameters(callee, arguments)
+        self.callbacks.bind_arguments(callee.get_usr(), arguments,
+                                      caller=ctx.function)
+        self.callbacks.bind_parameters(callee, arguments)
 
     def _forwarded_constructor(self, cursor):
         """make_shared<X>(args) reads like X's constructor.
@@ -648,100 +535,6 @@ class _Walker(Callbacks):
         short = class_name.split('::')[-1]
         name = f'{class_name}::{short}'
         return name, ros_api.lookup_call(name)
-
-    # --- argument helpers --------------------------------------------------
-
-    def topic(self, argument):
-        """Return (topic as written, is it a literal)."""
-        if argument is None:
-            return None, False
-        if strings.is_node_fqn(argument):
-            return '~', True  # the node's own name: its private namespace
-        literals = []
-        has_variable = False
-        for current in [argument] + list(walk_preorder(argument)):
-            if current.kind == CK.STRING_LITERAL:
-                literals.append(current)
-            elif current.kind in REF_KINDS and current.referenced is not None \
-                    and current.referenced.kind in HANDLE_KINDS:
-                has_variable = True
-            elif current.kind == CK.CALL_EXPR and \
-                    current.referenced is not None and \
-                    current.referenced.kind in VALUE_FUNCTION_KINDS:
-                # get_parameter("topic").as_string(): a value, not a name
-                has_variable = True
-        if len(literals) == 1 and not has_variable:
-            text = literals[0].spelling
-            return unquote(text), True
-        text = expression_text(argument)
-        return (text or None), False
-
-    def argument(self, arguments, position):
-        by_type = {
-            ros_api.FIRST_STRING: is_string,
-            ros_api.FIRST_CALLABLE: is_callable_argument,
-            ros_api.FIRST_DURATION: is_duration,
-        }.get(position)
-        if by_type is not None:
-            return next((a for a in arguments if by_type(a)), None)
-        if isinstance(position, int) and position < len(arguments):
-            argument = arguments[position]
-            return argument if is_written(argument) else None
-        return None
-
-    def target(self, cursor, stack):
-        """The variable/field a created object is stored in, or None."""
-        start = cursor.extent.start.offset
-        for parent in reversed(stack):
-            if isinstance(parent, _MemberInit):
-                return parent.member
-            kind = parent.kind
-            if kind == CK.VAR_DECL:
-                return parent
-            if kind in STATEMENT_KINDS:
-                return None
-            if kind == CK.CALL_EXPR:
-                children = child_cursors(parent)
-                if parent.spelling == 'operator=' and children:
-                    return first_handle(children[0])
-                obj = call_object(parent)
-                if obj is not None and obj.extent.end.offset <= start:
-                    # x.reset(new ...), v.push_back(nh.advertise(...))
-                    return first_handle(obj)
-            if kind == CK.BINARY_OPERATOR:
-                children = child_cursors(parent)
-                if children and binary_operator(parent, children[0]) == '=':
-                    return first_handle(children[0])
-        return None
-
-    def table_msg_type(self, msg_type):
-        """A message type the API table spells the ROS 1 way, for this unit.
-
-        ROS 2 spells ``sensor_msgs::Image`` as ``sensor_msgs::msg::Image``.
-        """
-        if not msg_type or not self.ros2 or '::msg::' in msg_type:
-            return msg_type
-        package, _, name = msg_type.partition('::')
-        return f'{package}::msg::{name}'
-
-    def paced_loop(self, ctx, sleep, clock):
-        """(loop id, loop cursor) a sleep on `clock` paces, or None.
-
-        The rule is the recorder's (:func:`recorder.paced_loop`); this
-        answers its questions about the C++ syntax.
-        """
-        if clock is None:
-            return None
-        return recorder.paced_loop(
-            ctx, continue_before=lambda loop: continue_before(loop, sleep),
-            made_in_loop=lambda loop: declared_in(clock, loop))
-
-    def record_paced_loop(self, ctx, *, loop_id, loop, clock, sleep):
-        """Record that `loop` runs at the pace of the `clock` handle."""
-        recorder.record_paced_loop(
-            self.facts, ctx, loop_id=loop_id, clock=clock.get_usr(),
-            loop_location=self.location(loop),
-            sleep_location=self.location(sleep))
 
 
 def _is_static_factory(function):

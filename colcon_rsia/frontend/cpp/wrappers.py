@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import call_arguments
@@ -42,9 +43,12 @@ from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import first_template_argument
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import SubscriberFact
+from colcon_rsia.frontend.cpp.questions import dependent_call_name
+from colcon_rsia.frontend.cpp.questions import record_publish_site
+from colcon_rsia.frontend.cpp.questions import stored_target
+from colcon_rsia.frontend.cpp.strings import written_name
 from colcon_rsia.summary.wrapper_store import WrapperSummary
 
 CK = ci.CursorKind
@@ -117,8 +121,16 @@ class ExternalWrappers:
 class Summaries:
     """Wrapper summaries of one unit, computed once per wrapper."""
 
-    def __init__(self, walker, external=None):  # noqa: D107
-        self.walker = walker
+    def __init__(  # noqa: D107
+            self, facts, places, *, resolve_callback, problems,
+            external=None):
+        # the unit's facts, where cursors are (questions.Places), and
+        # (function id, declaration) of a callback argument
+        self.facts = facts
+        self.places = places
+        self.resolve_callback = resolve_callback
+        # the unit's problems (one line each), appended to
+        self.problems = problems
         self.external = external
         self._done = {}
 
@@ -143,7 +155,7 @@ class Summaries:
           package's functions the walk met; those with endpoint facts or
           publish sites are summarised (``main`` is nobody's wrapper)
         """
-        facts = self.walker.facts
+        facts = self.facts
         candidates = {f.function for f in facts.publishers + facts.subscribers
                       + facts.publish_sites if f.function}
         result = []
@@ -156,8 +168,8 @@ class Summaries:
             except Exception as e:  # noqa: B902
                 # what invalid code leaves may surprise the summary: the
                 # function's callers lose its facts, the unit keeps its own
-                self.walker.problems.append(
-                    f'{self.walker.location(definition)}: '
+                self.problems.append(
+                    f'{self.places.location(definition)}: '
                     f'{definition.spelling} not summarised for other '
                     f'packages (internal error: {type(e).__name__}: {e})')
                 continue
@@ -212,7 +224,7 @@ class Summaries:
         name = qualified_name(ref) if ref is not None else None
         api = ros_api.lookup_call(name) if name else None
         if api is None and ref is None:
-            name = self.walker.dependent_call_name(call)
+            name = dependent_call_name(call, ros2=self.places.ros2)
             api = ros_api.lookup_call(name) if name else None
         arguments = call_arguments(call)
         if api is not None and api.role in (ROLE_PUBLISHER, ROLE_SUBSCRIBER):
@@ -231,7 +243,7 @@ class Summaries:
                     endpoint.publishes = True
             return
         if api is None and ref is not None and \
-                self.walker.is_workspace_declaration(ref):
+                self.places.is_workspace_declaration(ref):
             inner = self.of(ref, depth + 1)
             for endpoint in inner.endpoints:
                 endpoints.append(self._through(
@@ -250,7 +262,7 @@ class Summaries:
         topic_param = _parameter_index(argument(endpoint.topic_param), params)
         topic, literal = endpoint.topic, endpoint.topic_is_literal
         if endpoint.topic_param is not None and topic_param is None:
-            topic, literal = self.walker.topic(
+            topic, literal = written_name(
                 argument(endpoint.topic_param))
         msg_type, from_call = endpoint.msg_type, endpoint.msg_type_from_call
         if from_call:
@@ -264,15 +276,15 @@ class Summaries:
             member=None, publishes=endpoint.publishes)
 
     def _endpoint(self, call, api, arguments, params, type_params, member):
-        topic_argument = self.walker.argument(arguments, api.name_arg)
+        topic_argument = role_argument(arguments, api.name_arg)
         topic_param = _parameter_index(topic_argument, params)
         topic, literal = (None, False) if topic_param is not None else \
-            self.walker.topic(topic_argument)
+            written_name(topic_argument)
         msg_type, from_call = _message_type(call, type_params)
         callback_param = None
         if api.callback_arg is not None:
             callback_param = _parameter_index(
-                self.walker.argument(arguments, api.callback_arg), params)
+                role_argument(arguments, api.callback_arg), params)
         return Endpoint(
             role=api.role, topic_param=topic_param, topic=topic,
             topic_is_literal=literal, msg_type=msg_type,
@@ -292,12 +304,12 @@ class Summaries:
         if not summary.endpoints and not summary.publishes_members:
             return
         arguments = call_arguments(cursor)
-        target = self.walker.target(cursor, stack)
+        target = stored_target(cursor, stack)
         obj = first_handle(call_object(cursor))
         name = qualified_name(ref)
         written = explicit_template_type(cursor) or \
             first_template_argument(cursor.type.get_canonical().spelling)
-        location = self.walker.location(cursor)
+        location = self.places.location(cursor)
         # the helper object the wrapper's members belong to
         holder = target if ref.kind == CK.CONSTRUCTOR else obj
 
@@ -306,7 +318,7 @@ class Summaries:
                 if index is not None and index < len(arguments) else None
         for endpoint in summary.endpoints:
             if endpoint.topic_param is not None:
-                topic, literal = self.walker.topic(argument(endpoint.topic_param))
+                topic, literal = written_name(argument(endpoint.topic_param))
             else:
                 topic, literal = endpoint.topic, endpoint.topic_is_literal
             msg_type = endpoint.msg_type or (
@@ -323,23 +335,25 @@ class Summaries:
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 location=location)
             if endpoint.role == ROLE_PUBLISHER:
-                self.walker.facts.publishers.append(PublisherFact(
-                    handle_name=target.spelling if target is not None
-                    else None, **common))
+                fact_builder.add_publisher(
+                    self.facts, handle_name=target.spelling if target is not None
+                    else None, **common)
             else:
-                callback, declaration = self.walker.resolve_callback(
+                callback, declaration = self.resolve_callback(
                     argument(endpoint.callback_param))
                 # a message type the wrapper deduces from the callback
                 common['msg_type'] = common['msg_type'] or \
                     callback_msg_type(declaration)
-                self.walker.facts.subscribers.append(SubscriberFact(
-                    callback=callback, **common))
+                fact_builder.add_subscriber(
+                    self.facts, callback=callback, **common)
             if endpoint.publishes:
-                self.walker.publish_site(ctx, stack, cursor, name, handle)
+                record_publish_site(self.facts, self.places.location, ctx,
+                                    stack, cursor, name, handle)
         if obj is not None:
             for member in sorted(summary.publishes_members):
-                self.walker.publish_site(ctx, stack, cursor, name,
-                                         f'{obj.get_usr()}|{member}')
+                record_publish_site(self.facts, self.places.location, ctx,
+                                    stack, cursor, name,
+                                    f'{obj.get_usr()}|{member}')
 
 
 def _definition(declaration):

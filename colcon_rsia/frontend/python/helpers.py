@@ -23,10 +23,10 @@ same node give a name, that one is dropped too: the name is not known).
 
 import ast
 
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import region
 from colcon_rsia.frontend.python.values import EXT
@@ -69,7 +69,7 @@ class Helpers:
             if value is not None and value.kind == EXT:
                 types[name] = self._msg_type(expr, context)
         for scope, site in sites:
-            facts = TuFacts(source=self.facts.source)
+            facts = fact_builder.unit_facts(self.facts.source)
             replay = type(self)(self.project, scope.module, facts)
             del used[:]
             with self.project.substituting(substitute):

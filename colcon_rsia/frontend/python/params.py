@@ -19,9 +19,9 @@ file gives the parameter, else its default.
 
 import ast
 
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.facts import ParamRead
 from colcon_rsia.frontend.python.values import call_argument
 from colcon_rsia.frontend.python.values import EXT
 from colcon_rsia.frontend.python.values import EXTBOUND
@@ -114,10 +114,10 @@ class Params:
             param, namespace = param[1:], '~'
         default = self.project.string(
             call_argument(node, api.default), context.scope)
-        self.facts.param_reads.append(ParamRead(
-            function=context.function, name=param, default=default,
+        fact_builder.add_param_read(
+            self.facts, function=context.function, name=param, default=default,
             handle=self._param_handle(node, context.scope), nh=namespace,
-            location=self.location(node)))
+            location=self.location(node))
 
     def _param_list(self, api, node, context):
         """``declare_parameters('ns', [('topic', 'scan'), ...])``.
@@ -139,9 +139,9 @@ class Params:
                 continue
             default = self.project.string(entry.elts[1], context.scope) \
                 if len(entry.elts) > 1 else None
-            self.facts.param_reads.append(ParamRead(
-                function=context.function,
+            fact_builder.add_param_read(
+                self.facts, function=context.function,
                 name=f'{prefix}.{param}' if prefix else param,
                 default=default,
                 handle=self._param_handle(entry, context.scope), nh='~',
-                location=self.location(entry)))
+                location=self.location(entry))

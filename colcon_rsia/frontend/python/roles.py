@@ -10,21 +10,9 @@ are the recorder's (:mod:`colcon_rsia.frontend.recorder`).
 
 import ast
 
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
-from colcon_rsia.frontend.facts import ActionFact
-from colcon_rsia.frontend.facts import ClientFact
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import HandleAlias
-from colcon_rsia.frontend.facts import NodeNameFact
-from colcon_rsia.frontend.facts import PublisherFact
-from colcon_rsia.frontend.facts import PublishSite
-from colcon_rsia.frontend.facts import RateObject
-from colcon_rsia.frontend.facts import Registration
-from colcon_rsia.frontend.facts import ServiceFact
-from colcon_rsia.frontend.facts import SubscriberFact
-from colcon_rsia.frontend.facts import SyncFact
-from colcon_rsia.frontend.facts import TimerFact
 from colcon_rsia.frontend.python.scopes import region
 from colcon_rsia.frontend.python.scopes import SCOPE_NODES
 from colcon_rsia.frontend.python.values import call_argument
@@ -48,10 +36,10 @@ class Roles:
         # name its subclasses pass
         name_param = self.project.handle(written, context.scope) \
             if isinstance(written, ast.Name) else None
-        self.facts.node_names.append(NodeNameFact(
-            function=context.function, name=node_name if literal else None,
+        fact_builder.add_node_name(
+            self.facts, function=context.function, name=node_name if literal else None,
             namespace=namespace if ns_literal else None,
-            location=self.location(node), name_param=name_param))
+            location=self.location(node), name_param=name_param)
 
     def _topics(self, api, node, name_arg, context):
         """([(topic, literal)], the topic's argument) of an endpoint call.
@@ -95,11 +83,11 @@ class Roles:
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
                 self._topic_source_of(api, argument, context)
-            self.facts.publishers.append(PublisherFact(
-                function=context.function, api=name, topic=topic,
+            fact_builder.add_publisher(
+                self.facts, function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 handle_name=handle_name, location=self.location(node),
-                topic_handle=source, topic_affixes=affixes))
+                topic_handle=source, topic_affixes=affixes)
 
     def _given_object(self, argument, context):
         """Whether an argument is written and is no string."""
@@ -121,8 +109,8 @@ class Roles:
         alias, _ = self._target(node, context)
         handle = self._object_handle(wrapped, context)
         if alias is not None and handle is not None:
-            self.facts.handle_aliases.append(HandleAlias(
-                alias=alias, handle=handle, location=self.location(node)))
+            fact_builder.add_handle_alias(
+                self.facts, alias=alias, handle=handle, location=self.location(node))
         return True
 
     def _own_timer(self, api, name, node, context, handle):
@@ -135,19 +123,19 @@ class Roles:
         location = self.location(node)
         # what the real timer calls; the id is unique per object
         callback = f'{name}.update@{location}'
-        self.facts.functions.append(Function(
-            id=callback, name=f'{name}.update', location=location))
+        fact_builder.add_function(
+            self.facts, id=callback, name=f'{name}.update', location=location)
         period = call_argument(node, api.period)
         rate_hz = self._rate_hz(period, api.period_unit, context) \
             if period is not None \
             else recorder.rate_of_period(api.default_period)
-        self.facts.timers.append(TimerFact(
-            function=context.function, api=name, callback=callback,
+        fact_builder.add_timer(
+            self.facts, function=context.function, api=name, callback=callback,
             period=self.text(period) if period is not None
             else str(api.default_period),
-            rate_hz=rate_hz, location=location))
-        self.facts.publish_sites.append(PublishSite(
-            function=callback, api=name, handle=handle, location=location))
+            rate_hz=rate_hz, location=location)
+        fact_builder.add_publish_site(
+            self.facts, function=callback, api=name, handle=handle, location=location)
 
     def _on_subscriber(self, api, name, node, context):
         name_arg, type_arg = api.name, api.msg_type_arg
@@ -170,35 +158,35 @@ class Roles:
         for topic, literal in topics:
             source, affixes = (None, None) if literal else \
                 self._topic_source_of(api, argument, context)
-            self.facts.subscribers.append(SubscriberFact(
-                function=context.function, api=name, topic=topic,
+            fact_builder.add_subscriber(
+                self.facts, function=context.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
                 callback=callback, location=self.location(node),
-                topic_handle=source, topic_affixes=affixes))
+                topic_handle=source, topic_affixes=affixes)
 
     def _on_timer(self, api, name, node, context):
         callback, _, _ = self._callback(
             call_argument(node, api.callback), context)
         period = call_argument(node, api.period)
-        self.facts.timers.append(TimerFact(
-            function=context.function, api=name, callback=callback,
+        fact_builder.add_timer(
+            self.facts, function=context.function, api=name, callback=callback,
             period=self.text(period) if period is not None else '',
             rate_hz=self._rate_hz(period, api.period_unit, context),
-            location=self.location(node)))
+            location=self.location(node))
 
     def _on_service(self, api, name, node, context):
         service, _ = self._topic(call_argument(node, api.name), context)
         callback, _, _ = self._callback(
             call_argument(node, api.callback), context)
-        self.facts.services.append(ServiceFact(
-            function=context.function, api=name, name=service,
-            callback=callback, location=self.location(node)))
+        fact_builder.add_service(
+            self.facts, function=context.function, api=name, name=service,
+            callback=callback, location=self.location(node))
 
     def _on_service_client(self, api, name, node, context):
         service, _ = self._topic(call_argument(node, api.name), context)
-        self.facts.clients.append(ClientFact(
-            function=context.function, api=name, name=service,
-            location=self.location(node)))
+        fact_builder.add_client(
+            self.facts, function=context.function, api=name, name=service,
+            location=self.location(node))
 
     def _on_action_server(self, api, name, node, context):
         self._action(api, name, node, context, 'server')
@@ -226,26 +214,26 @@ class Roles:
             handle, _ = self._target(node, context)
             label = name
             location = self.location(node)
-        self.facts.actions.append(ActionFact(
-            function=context.function, api=label, role=role, name=action,
-            callbacks=callbacks, handle=handle, location=location))
+        fact_builder.add_action(
+            self.facts, function=context.function, api=label, role=role, name=action,
+            callbacks=callbacks, handle=handle, location=location)
 
     def _on_publish(self, api, name, node, context):
-        self.facts.publish_sites.append(PublishSite(
-            function=context.function, api=name,
+        fact_builder.add_publish_site(
+            self.facts, function=context.function, api=name,
             handle=self._receiver(node, context),
-            location=self.location(node), loops=context.loop_ids()))
+            location=self.location(node), loops=context.loop_ids())
 
     def _on_rate(self, api, name, node, context):
         handle, _ = self._target(node, context)
         if handle is None or handle.startswith('new@'):
             return  # a temporary Rate paces nothing
         argument = call_argument(node, api.period)
-        self.facts.rates.append(RateObject(
-            handle=handle,
+        fact_builder.add_rate(
+            self.facts, handle=handle,
             rate_hz=self._rate_hz(argument, api.period_unit, context),
             expression=self.text(argument) if argument is not None else '',
-            location=self.location(node)))
+            location=self.location(node))
 
     def _on_rate_sleep(self, api, name, node, context):
         handle = self._receiver(node, context)
@@ -287,8 +275,8 @@ class Roles:
             if handle is not None:
                 inputs.append(handle)
         handle, _ = self._target(node, context)
-        self.facts.syncs.append(SyncFact(
-            handle=handle, inputs=inputs, location=self.location(node)))
+        fact_builder.add_sync(
+            self.facts, handle=handle, inputs=inputs, location=self.location(node))
 
     def _on_register_callback(self, api, name, node, context):
         specs = (api.callback,) + api.extra_callbacks
@@ -296,10 +284,10 @@ class Roles:
             if argument is None:
                 continue
             callback, _, _ = self._callback(argument, context)
-            self.facts.registrations.append(Registration(
-                function=context.function,
+            fact_builder.add_registration(
+                self.facts, function=context.function,
                 handle=self._receiver(node, context), callback=callback,
-                location=self.location(node)))
+                location=self.location(node))
 
 
 def _continue_before(loop, sleep):

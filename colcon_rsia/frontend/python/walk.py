@@ -8,14 +8,10 @@ Part of the Python front end (see :mod:`colcon_rsia.frontend.python`).
 import ast
 import os
 
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import python_api
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
-from colcon_rsia.frontend.facts import Call
-from colcon_rsia.frontend.facts import Function
-from colcon_rsia.frontend.facts import ParamBinding
-from colcon_rsia.frontend.facts import StringArgument
-from colcon_rsia.frontend.facts import TuFacts
 from colcon_rsia.frontend.python.helpers import Helpers
 from colcon_rsia.frontend.python.params import Params
 from colcon_rsia.frontend.python.roles import Roles
@@ -68,7 +64,7 @@ def extract_python_facts(path, *, package_path, module_name,
     """
     package_path = os.path.abspath(package_path)
     relpath = os.path.relpath(os.path.abspath(path), package_path)
-    facts = TuFacts(source=relpath, files=[relpath])
+    facts = fact_builder.unit_facts(relpath, files=[relpath])
     modules = dict(package_modules)
     modules[module_name] = path
     project = Project(package_path, modules)
@@ -80,7 +76,7 @@ def extract_python_facts(path, *, package_path, module_name,
     try:
         _Extractor(project, module, facts).run()
     except RecursionError:
-        return TuFacts(source=relpath, diagnostics=[
+        return fact_builder.unit_facts(relpath, diagnostics=[
             f'{relpath}: too deeply nested to analyse'])
     return facts
 
@@ -142,9 +138,9 @@ class _Extractor(Roles, Params, Helpers):
             location = self.location(scope.node)
             name = scope.qualname
             class_id = scope.cls.id if scope.cls is not None else None
-        self.facts.functions.append(Function(
-            id=scope.id, name=name, location=location, class_id=class_id,
-            params=[scope.handle(p) for p in scope.params]))
+        fact_builder.add_function(
+            self.facts, id=scope.id, name=name, location=location, class_id=class_id,
+            params=[scope.handle(p) for p in scope.params])
         context = recorder.Context(scope.id, scope=scope)
         body = [scope.node.body] if scope.kind == 'lambda' \
             else scope.node.body
@@ -164,9 +160,9 @@ class _Extractor(Roles, Params, Helpers):
         stub_id = f'{cls.id}.{name}'
         if stub_id not in self._stubs:
             self._stubs.add(stub_id)
-            self.facts.functions.append(Function(
-                id=stub_id, name=f'{cls.qualname}.{name}',
-                location=cls.location, class_id=cls.id))
+            fact_builder.add_function(
+                self.facts, id=stub_id, name=f'{cls.qualname}.{name}',
+                location=cls.location, class_id=cls.id)
         return stub_id
 
     def _dispatch_edges(self):
@@ -177,15 +173,15 @@ class _Extractor(Roles, Params, Helpers):
                 if name.startswith('__') and name.endswith('__'):
                     continue
                 for base in bases:
-                    self.facts.calls.append(Call(
-                        caller=f'{base.id}.{name}', callee=method.id,
-                        location=self.location(method.node)))
+                    fact_builder.add_call(
+                        self.facts, caller=f'{base.id}.{name}', callee=method.id,
+                        location=self.location(method.node))
 
     def _add_call(self, context, callee, node, kind='call'):
-        self.facts.calls.append(Call(
-            caller=context.function, callee=callee,
+        fact_builder.add_call(
+            self.facts, caller=context.function, callee=callee,
             location=self.location(node), loops=context.loop_ids(),
-            kind=kind))
+            kind=kind)
 
     # --- statements and expressions ---------------------------------------
 
@@ -386,14 +382,14 @@ class _Extractor(Roles, Params, Helpers):
     def _bind_one(self, function, position, argument, context):
         if isinstance(argument, ast.Constant) and \
                 isinstance(argument.value, str):
-            self.facts.string_arguments.append(StringArgument(
-                caller=context.function, callee=function.id, index=position,
-                value=argument.value))
+            fact_builder.add_string_argument(
+                self.facts, caller=context.function, callee=function.id, index=position,
+                value=argument.value)
             return
         handle = self._object_handle(argument, context)
         if handle is not None:
-            self.facts.bindings.append(ParamBinding(
-                callee=function.id, index=position, handle=handle))
+            fact_builder.add_binding(
+                self.facts, callee=function.id, index=position, handle=handle)
 
     def _object_handle(self, expr, context):
         if isinstance(expr, ast.Call):
