@@ -41,8 +41,9 @@ def _frontend_digest():
         # the colcon_rsia directory: this module is in colcon_rsia/package
         here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
         files = [os.path.join(here, relative) for relative in (
-            'frontend/facts.py', 'summary/kinds.py', 'summary/wrapper_store.py',
-            'frontend/ros_api.py')]
+            'frontend/facts.py', 'frontend/fact_builder.py',
+            'frontend/recorder.py', 'summary/kinds.py',
+            'summary/wrapper_store.py', 'frontend/ros_api.py')]
         # the C++ front end's modules (the model mode's too), and the
         # model headers
         for root, dirs, names in sorted(os.walk(
