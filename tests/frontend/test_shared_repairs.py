@@ -102,7 +102,11 @@ def test_names_the_workspace_declares_are_not_offered_to_it(tmp_path):
         # (the names the workspace's code declares: namespaces and classes)
         str(tmp_path / 'workspace.json'), {'gizmo', 'Lens'})
     store.share_repairs(str(header), {
-        ('type', 'gizmo::Lens'), ('type', 'gizmo::Focus')}, workspace)
+        ('type', 'gizmo::Lens'), ('type', 'gizmo::Focus'),
+        # a stand-in header, written into this package's stub directory
+        # only, and a standard header, found from everywhere
+        ('header', 'gizmo_msgs/msg/lens.hpp'), ('std-header', 'optional')},
+        workspace)
 
     other = tmp_path / 'other' / 'rsia_model' / 'repair' / 'unit.h'
     other.parent.mkdir(parents=True)
@@ -111,11 +115,14 @@ def test_names_the_workspace_declares_are_not_offered_to_it(tmp_path):
     seeded = store.read_repairs(str(other))
     assert ('type', 'gizmo::Focus') in seeded
     assert ('type', 'gizmo::Lens') not in seeded
+    assert ('std-header', 'optional') in seeded
+    assert ('header', 'gizmo_msgs/msg/lens.hpp') not in seeded
     # its own package's units are offered everything shareable
     same = header.parent / 'second.h'
     store.ensure_repair_header(str(same), 'src/second.cpp')
     store.seed_repairs(str(same), 'src/second.cpp', set())
-    assert ('type', 'gizmo::Lens') in store.read_repairs(str(same))
+    assert {('type', 'gizmo::Lens'), ('header', 'gizmo_msgs/msg/lens.hpp')} \
+        <= store.read_repairs(str(same))
 
 
 def test_the_workspace_file_lies_beside_the_packages_outputs(tmp_path):

@@ -23,6 +23,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     one_kind_each
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import FUNCTION
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import INCLUDES
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import is_edit
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import MEMBER
@@ -30,6 +31,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import MEMBER_KINDS
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import \
     MEMBER_TEMPLATE
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import OBJECT
+from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import STD_HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TEMPLATE_USE
 from colcon_rsia.frontend.cpp.model_mode.recovery.render import render
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
@@ -155,9 +157,13 @@ def share_repairs(header, repairs, workspace=None):
     offered = {r for r in repairs if _shareable(r)}
     _offer(os.path.join(os.path.dirname(header), SHARED_REPAIRS), offered)
     if workspace is not None:
+        # (not a model or stand-in header: a stand-in is written into the
+        # package's own stub directory, which another package's units do
+        # not see)
         _offer(workspace.path, {
-            r for r in offered if r[0] in INCLUDES or
-            not is_declared(r[1], workspace.declared)})
+            r for r in offered if r[0] != HEADER and (
+                r[0] == STD_HEADER or
+                not is_declared(r[1], workspace.declared))})
 
 
 def _offer(path, offered):
