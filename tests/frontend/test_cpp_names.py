@@ -326,3 +326,35 @@ def test_a_parameter_default_held_by_the_variable_it_sets(tmp_path):
     assert params['frame_'] is None or params['frame_'][1] is None
     frame = next(p for p in node.publishers if p.topic == 'frame_')
     assert not frame.topic_is_literal
+
+
+# the topic of an options object given to its constructor, also through a
+# helper of the package (whose caller then names the topic)
+OPTIONS_CONSTRUCTED = r"""
+#include <ros/ros.h>
+
+ros::Publisher advertiseRaw(ros::NodeHandle & nh, const std::string & topic)
+{
+  ros::AdvertiseOptions opts(topic, 10, "*", "*", "");
+  opts.latch = true;
+  return nh.advertise(opts);
+}
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "raw");
+  ros::NodeHandle nh;
+  ros::AdvertiseOptions direct("status", 1, "*", "*", "");
+  ros::Publisher status = nh.advertise(direct);
+  ros::Publisher relayed = advertiseRaw(nh, "relayed");
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_the_topic_an_options_constructor_took(tmp_path):
+    summary = analyze_source(tmp_path, 'raw', OPTIONS_CONSTRUCTED)
+    [node] = summary.nodes
+    # not the options variable's name (`direct`, `opts`)
+    assert sorted(p.topic for p in node.publishers) == ['relayed', 'status']

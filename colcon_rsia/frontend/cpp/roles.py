@@ -257,12 +257,14 @@ class RosRoles:
         return spelling
 
     def _options_call(self, argument):
-        """The create()/init() call that filled a ros::*Options object.
+        """The call that filled a ros::*Options object.
 
         ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` take the topic, the
         message type and the callback from ``ops =
         ros::SubscribeOptions::create<M>(topic, queue, callback, ...)`` or
-        from ``ops.init<M>(topic, queue, callback)`` in the same function.
+        from ``ops.init<M>(topic, queue, callback)`` in the same function,
+        or the topic from the constructor that took it first (``ros::
+        AdvertiseOptions ops(topic, queue, md5sum, datatype, definition)``).
         """
         if argument is None:
             return None
@@ -273,7 +275,8 @@ class RosRoles:
         handle = first_handle(argument)
         if handle is None:
             return None
-        fillers = {f'{options}::create', f'{options}::init'}
+        fillers = {f'{options}::create', f'{options}::init',
+                   f"{options}::{options.rsplit('::', 1)[-1]}"}
         found = None
         scopes = [handle] + ([handle.semantic_parent]
                              if handle.kind == CK.VAR_DECL else [])
@@ -282,6 +285,9 @@ class RosRoles:
                 if node.kind != CK.CALL_EXPR or node.referenced is None or \
                         qualified_name(node.referenced) not in fillers:
                     continue
+                if node.referenced.kind == CK.CONSTRUCTOR and \
+                        len(list(node.get_arguments())) < 2:
+                    continue  # a default or copy construction: no topic
                 if scope is handle or same_cursor(
                         first_handle(call_object(node)), handle):
                     found = node  # the last one written wins
@@ -295,10 +301,12 @@ class RosRoles:
         if options is None:
             return cursor, api, arguments
         # create/init(topic, queue_size, callback, ...): a subscription's
-        # callback is the third argument, an advertisement has none
+        # callback is the third argument, an advertisement has none; the
+        # constructors take none (their third argument is the checksum)
+        takes_callback = api.callback_arg is not None and \
+            options.referenced.kind != CK.CONSTRUCTOR
         return options, dataclasses.replace(
-            api, name_arg=0,
-            callback_arg=2 if api.callback_arg is not None else None), \
+            api, name_arg=0, callback_arg=2 if takes_callback else None), \
             list(options.get_arguments())
 
     def _on_subscriber(self, cursor, ctx, stack, api, name, arguments):
