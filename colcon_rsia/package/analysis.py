@@ -7,6 +7,7 @@ The event handler and ``colcon rsia analyze`` both call
 """
 
 import collections
+import functools
 import glob
 import os
 import threading
@@ -139,7 +140,10 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         precompiled_dir = build_paths.precompiled_dir(build_base)
         if entries:
             from colcon_rsia.frontend.cpp.model_mode import recovery
-            shared_repairs = recovery.workspace_repairs(
+            # made only when a unit is parsed: it reads the workspace's
+            # sources, which a run whose units are all cached need not
+            shared_repairs = functools.partial(
+                recovery.workspace_repairs,
                 build_paths.workspace_repairs_file(build_base),
                 workspace_package_dirs)
 

@@ -165,8 +165,9 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     :param repair: when the model mode repairs a unit (for unit_facts)
     :param shared: the shared_cache.SharedCache looked in after ``cache``
       (and given to unit_facts, which stores the facts it makes), or None
-    :param shared_repairs: the model mode's repairs the workspace's units
-      share (for unit_facts), or None
+    :param shared_repairs: a function making the model mode's repairs the
+      workspace's units share (for unit_facts), called only when a unit is
+      parsed; or None
     :raises Interrupted: when :func:`request_stop` was called
     """
     hidden = _unsafe_includes(entries, package_path)
@@ -178,6 +179,8 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     found = [_checked_or_cached(entry, package_path, cache, digest, shared)
              for entry in entries]
     todo = [i for i, result in enumerate(found) if result is None]
+    if shared_repairs is not None:
+        shared_repairs = shared_repairs() if todo else None
     results, diagnostics = parse(
         _guarded, [entries[i] for i in todo], context=dict(
             unit_facts=unit_facts, package_path=package_path,
