@@ -360,7 +360,7 @@ def printable_lines(lines):
 
 # directories whose files a pull request cannot change: the include walk
 # stops there (it only looks for files libclang must not open)
-_SYSTEM_PREFIXES = ('/usr/', '/opt/', '/lib/', '/lib64/')
+SYSTEM_PREFIXES = ('/usr/', '/opt/', '/lib/', '/lib64/')
 _INCLUDE = re.compile(
     rb'^[ \t]*#[ \t]*(?:include|include_next|import)[ \t]*'
     rb'([<"])([^>"\r\n]+)[>"]', re.MULTILINE)
@@ -423,7 +423,7 @@ def unsafe_inputs(sources, *, search_dirs, roots, skip=()):
                 if reason:
                     found[candidate] = reason
                     break
-                if not candidate.startswith(_SYSTEM_PREFIXES + tuple(skip)):
+                if not candidate.startswith(SYSTEM_PREFIXES + tuple(skip)):
                     todo.append(candidate)
                 break  # the first directory that has it wins
     return found
@@ -441,7 +441,7 @@ def _unsafe_target(path, roots, limit):
         if os.path.islink(path) or path != os.path.realpath(path):
             real = os.path.realpath(path)
             # a link is fine within the roots, or into the system's files
-            if not real.startswith(_SYSTEM_PREFIXES):
+            if not real.startswith(SYSTEM_PREFIXES):
                 _check_root(path, roots)
         _check_stat(st, limit)
     except UnsafeFileError as e:

@@ -49,7 +49,6 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         self._pool = None
         self._pending = []
         self._outcomes = []
-        self._started = None
         self._packages = None
         self._interrupted = False
         # a bad environment variable: said once, nothing analysed
@@ -94,7 +93,6 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
             self._pool = ThreadPoolExecutor(
                 max_workers=self.PACKAGE_WORKERS,
                 thread_name_prefix='rsia', initializer=self._lower_priority)
-            self._started = time.monotonic()
         self._pending.append(self._pool.submit(
             analyze, name=pkg.name, package_type=pkg.type,
             path=str(pkg.path), build_base=args.build_base,
@@ -174,6 +172,8 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
         from colcon_rsia.package import workers
         if self._pool is None:
             return
+        # every build job has ended: from here on, the build waits for us
+        waiting_since = time.monotonic()
         for future in self._pending:
             self._report(future)  # waits for the analysis to end
         self._pending = []
@@ -190,10 +190,14 @@ class RsiaEventHandler(EventHandlerExtensionPoint):
                 f'({nodes} nodes) before that, the others not: build again '
                 "or run 'colcon rsia analyze'", flush=True)
             return
+        # the packages' own analysis time, not the time since the first
+        # package's job ended: most of that is the build of the others,
+        # which the analysis runs beside
+        work = sum(o.summary.seconds for o in analysed)
         print(
             f'rsia: analysed {len(analysed)} of {len(considered)} '
-            f'packages ({nodes} nodes) in '
-            f'{time.monotonic() - self._started:.1f}s; '
+            f'packages ({nodes} nodes): {work:.1f}s of analysis, the build '
+            f'waited {time.monotonic() - waiting_since:.1f}s for it; '
             "see 'colcon rsia graph' and 'colcon rsia impact'", flush=True)
         from colcon_rsia.package.shared_cache import statistics_line
         if statistics_line():

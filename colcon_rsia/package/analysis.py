@@ -10,6 +10,7 @@ import collections
 import functools
 import glob
 import os
+import shutil
 import threading
 import time
 
@@ -74,7 +75,7 @@ SKIPPED_DIRECTORIES = frozenset({
 def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                     nothing_compiled=False, header_mode='exact',
                     workspace_package_dirs=(), extra_arguments=(),
-                    repair=REPAIR_WHEN_IT_PAYS):
+                    repair=REPAIR_WHEN_IT_PAYS, write=True):
     """Analyse a C++ package; store the summary.
 
     The translation units and their flags come from the package's compile
@@ -100,6 +101,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
       when the AST lost some of its calls (the tokens have them);
       REPAIR_ALWAYS repairs every unit with errors in its own code (fewer
       parse errors, more parses)
+    :param bool write: store the summary (a caller that adds to it first
+      stores it itself)
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
     :rtype: colcon_rsia.summary.package_summary.PackageSummary
     :raises AnalysisError: when the package cannot be analysed at all
@@ -132,7 +135,12 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     resource_dir = find_resource_dir()
     if resource_dir is None and entries:
         raise AnalysisError(RESOURCE_DIR_HINT)
-    precompiled_dir = shared_repairs = None
+    precompiled_dir = shared_repairs = plan_headers = None
+    if header_mode == 'exact':
+        from colcon_rsia.frontend.cpp import shared_headers
+        # the system headers units share, compiled once for them
+        precompiled_dir = build_paths.shared_headers_dir(build_base)
+        plan_headers = shared_headers.plan
     if header_mode == 'model':
         entries = _model_entries(
             entries, path, workspace_package_dirs,
@@ -160,8 +168,13 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         cache=build_paths.cache_dir(build_base) if use_cache else None,
         jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
         shared=shared, shared_repairs=shared_repairs,
+        plan_headers=plan_headers,
         wrappers=wrapper_store.read_workspace_wrappers(
             build_base, workspace_package_dirs))
+    if plan_headers is not None:
+        # a few tens of MB each, worth nothing to the next run (it parses
+        # only what changed)
+        shutil.rmtree(precompiled_dir, ignore_errors=True)
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units,
         parsed={e.file for e in entries})
@@ -171,7 +184,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         _unknown_namespace_notes(summary.nodes)
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
-    store.write_summary(build_base, summary)
+    if write:
+        store.write_summary(build_base, summary)
     wrapper_store.write_wrappers(build_base, path, _exported_wrappers(units))
     return summary
 
@@ -366,7 +380,8 @@ def _inside(file, directory):
 
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
                 wrappers=(), wrappers_digest=None, precompiled_dir=None,
-                repair=REPAIR_WHEN_IT_PAYS, shared=None, shared_repairs=None):
+                repair=REPAIR_WHEN_IT_PAYS, shared=None, shared_repairs=None,
+                package_headers=None):
     """Facts of one TU, parsed (in a worker process: see workers.py).
 
     :param hidden: {file: why} of files libclang is given as empty
@@ -375,6 +390,9 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     :param shared: the shared_cache.SharedCache the facts are kept in too
     :param shared_repairs: the model mode's repairs every package's units
       share (recovery.workspace_repairs), or None
+    :param package_headers: exact mode: {unit file: the system headers it
+      shares with other units of its package} (shared_headers.plan); the
+      PCH of them is kept in ``precompiled_dir``
     """
     hidden = hidden or {}
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
@@ -391,9 +409,21 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     # the files that failed the checks are seen by libclang as empty
     hidden_files = [(file, '') for file in sorted(
         set(hidden) | {os.path.realpath(h) for h in hidden})]
-    pch = [precompiled.precompiled_header(
-        precompiled_dir, entry.file, entry.arguments, resource_dir)
-        if precompiled_dir else None]
+    # the files a precompiled header read are the unit's inputs too (the
+    # unit's include list lacks them)
+    pch_inputs = []
+    if package_headers is None:
+        pch = [precompiled.precompiled_header(
+            precompiled_dir, entry.file, entry.arguments, resource_dir)
+            if precompiled_dir else None]
+    else:
+        from colcon_rsia.frontend.cpp import shared_headers
+        built = shared_headers.precompiled(
+            precompiled_dir, package_headers[entry.file], entry.arguments,
+            entry.directory, resource_dir) \
+            if precompiled_dir and entry.file in package_headers else None
+        pch = [None] if built is None else [built[0]]
+        pch_inputs = [] if built is None else built[1]
     index = ci.Index.create()
 
     def parse(arguments, edited_files):
@@ -409,7 +439,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         except ci.TranslationUnitLoadError:
             # raises again when the unit itself is the problem
             tu = parse_with(arguments)
-            precompiled.discard(pch[0])
+            if package_headers is None:
+                precompiled.discard(pch[0])
             pch[0] = None
             return tu
 
@@ -444,7 +475,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         _unrecorded_calls(tu, facts, package_path)
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
-        if i.include is not None})
+        if i.include is not None} | set(pch_inputs if pch[0] else ()))
     facts.diagnostics += [
         f"{relative}: includes '{safe_files.display(_relative(h, package_path))}'"
         f', which {reason}' for h, reason in sorted(hidden.items())

@@ -41,6 +41,15 @@ def precompiled_dir(package_build_base):
         '.' + RSIA_DIRNAME, 'precompiled')
 
 
+def shared_headers_dir(package_build_base):
+    """Where the exact mode's precompiled headers of a package are built.
+
+    Its own (they are made with the package's flags), deleted when its
+    analysis ends.
+    """
+    return os.path.join(package_build_base, RSIA_DIRNAME, 'shared-headers')
+
+
 def workspace_repairs_file(package_build_base):
     """Where the model mode's repairs every package may need are kept.
 

@@ -148,7 +148,8 @@ class WorkersUnavailable(Exception):
 
 def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
                 jobs, timeout, wrappers=(), precompiled_dir=None,
-                repair=None, shared=None, shared_repairs=None):
+                repair=None, shared=None, shared_repairs=None,
+                plan_headers=None):
     """Facts of a package's TUs; return (facts by file, messages).
 
     The units whose facts are cached are read here; the others are parsed
@@ -168,6 +169,9 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     :param shared_repairs: a function making the model mode's repairs the
       workspace's units share (for unit_facts), called only when a unit is
       parsed; or None
+    :param plan_headers: exact mode: the function that plans which system
+      headers the units to parse share, precompiled in ``precompiled_dir``
+      (shared_headers.plan); None for the model mode
     :raises Interrupted: when :func:`request_stop` was called
     """
     hidden = _unsafe_includes(entries, package_path)
@@ -181,13 +185,18 @@ def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
     todo = [i for i, result in enumerate(found) if result is None]
     if shared_repairs is not None:
         shared_repairs = shared_repairs() if todo else None
+    package_headers = None
+    if plan_headers is not None:
+        # (a file libclang must see empty could be among those headers)
+        package_headers = {} if hidden else \
+            plan_headers([entries[i] for i in todo])
     results, diagnostics = parse(
         _guarded, [entries[i] for i in todo], context=dict(
             unit_facts=unit_facts, package_path=package_path,
             resource_dir=resource_dir, cache=cache, hidden=hidden,
             wrappers=wrappers, wrappers_digest=digest,
             precompiled_dir=precompiled_dir, repair=repair, shared=shared,
-            shared_repairs=shared_repairs),
+            shared_repairs=shared_repairs, package_headers=package_headers),
         jobs=jobs, timeout=timeout, cleanup_dirs=[cache, precompiled_dir])
     if shared is not None and todo:
         shared.evict()  # what the workers added may pass the size limit
@@ -400,8 +409,10 @@ class _Run:
         _failed_precompiled.add(directory)
         self.context = dict(self.context, precompiled_dir=None)
         self.key = next(self._keys)  # the workers need the new context
+        headers = 'standard' if self.context.get('package_headers') is None \
+            else 'system'
         self.notes.append(
-            f'the precompiled standard headers could not be built ({what}): '
+            f'the precompiled {headers} headers could not be built ({what}): '
             'units are parsed without them (slower)')
 
     def _wait(self, busy):
@@ -722,11 +733,13 @@ def _worker_main(connection, error_path, niceness):
         fd = os.open(error_path, os.O_WRONLY | os.O_APPEND)
         os.dup2(fd, 2)
         os.close(fd)
+    from colcon_rsia.frontend.cpp import shared_headers
     from colcon_rsia.frontend.cpp.model_mode import precompiled
 
     def on_build(path):
         connection.send(('phase', (PRECOMPILING, path) if path else None))
     precompiled.on_build = on_build
+    shared_headers.on_build = on_build
     context = {}
     while True:
         try:

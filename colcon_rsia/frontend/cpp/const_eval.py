@@ -141,8 +141,6 @@ def source_tokens(cursor):
 _DEFINE = re.compile(r'^[ \t]*#[ \t]*define[ \t]+(\w+)(?![\w(])(.*)$', re.MULTILINE)
 _TOKEN = re.compile(r'0[xX][0-9a-fA-F]+|(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?'
                     r'[uUlLfF]*|\w+|\S')
-# system headers define no rates of the package: do not read them
-_SYSTEM_PREFIXES = ('/usr/', '/opt/', '/lib/')
 
 
 class _Macros:
@@ -163,7 +161,8 @@ class _Macros:
                 i.include.name for i in self._tu.get_includes()
                 if i.include is not None]
             for name in files:
-                if name.startswith(_SYSTEM_PREFIXES):
+                # system headers define no rates of the package
+                if name.startswith(safe_files.SYSTEM_PREFIXES):
                     continue
                 try:
                     # checked: a header may be a link to /dev/zero

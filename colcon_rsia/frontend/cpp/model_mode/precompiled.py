@@ -28,7 +28,7 @@ PRECOMPILED_HEADER = os.path.join(
     MODEL_HEADERS_DIR, 'rsia_model', 'precompiled.h')
 
 # the sources a C++ precompiled header can be loaded by (not C, not CUDA)
-_CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C', '.cp', '.CPP')
+CXX_EXTENSIONS = ('.cpp', '.cc', '.cxx', '.c++', '.C', '.cp', '.CPP')
 
 _lock = threading.Lock()
 # (directory, standard) -> the PCH's path, or None when none can be had
@@ -52,7 +52,7 @@ def precompiled_header(directory, source, arguments, resource_dir):
     :param str resource_dir: clang's resource directory, as the parse has it
     """
     standard = language_standard(arguments)
-    if not source.endswith(_CXX_EXTENSIONS) or standard is None:
+    if not source.endswith(CXX_EXTENSIONS) or standard is None:
         return None
     key = (os.path.abspath(directory), standard)
     with _lock:
@@ -93,7 +93,7 @@ def _built(directory, standard, resource_dir):
     with open(PRECOMPILED_HEADER, 'rb') as h:
         text = h.read()
     digest = hashlib.sha1(repr(
-        (_library_stamp(ci), resource_dir, text)).encode()).hexdigest()[:12]
+        (library_stamp(ci), resource_dir, text)).encode()).hexdigest()[:12]
     path = os.path.join(
         directory, f'std-{standard or "default"}-{digest}.pch')
     if os.path.isfile(path):
@@ -137,7 +137,7 @@ def _compile(path, standard, resource_dir, ci):
     return path
 
 
-def _library_stamp(ci):
+def library_stamp(ci):
     """The libclang library file: its path, size and time."""
     try:
         library = ci.conf.get_filename()
