@@ -75,7 +75,8 @@ SKIPPED_DIRECTORIES = frozenset({
 def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                     nothing_compiled=False, header_mode='exact',
                     workspace_package_dirs=(), extra_arguments=(),
-                    repair=REPAIR_WHEN_IT_PAYS, write=True):
+                    repair=REPAIR_WHEN_IT_PAYS, write=True,
+                    dependency_dirs=None):
     """Analyse a C++ package; store the summary.
 
     The translation units and their flags come from the package's compile
@@ -103,6 +104,11 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
       parse errors, more parses)
     :param bool write: store the summary (a caller that adds to it first
       stores it itself)
+    :param dependency_dirs: source directories of the workspace's packages
+      this one depends on: only their wrappers are read (a package calls
+      into no library it does not depend on), so that the facts, and the
+      cache, do not depend on which other packages were analysed first.
+      None: those of every package of ``workspace_package_dirs``
     :returns: the summary, also written to ``<build_base>/rsia/summary.json``
     :rtype: colcon_rsia.summary.package_summary.PackageSummary
     :raises AnalysisError: when the package cannot be analysed at all
@@ -170,7 +176,8 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         shared=shared, shared_repairs=shared_repairs,
         plan_headers=plan_headers,
         wrappers=wrapper_store.read_workspace_wrappers(
-            build_base, workspace_package_dirs))
+            build_base, workspace_package_dirs if dependency_dirs is None
+            else dependency_dirs))
     if plan_headers is not None:
         # a few tens of MB each, worth nothing to the next run (it parses
         # only what changed)

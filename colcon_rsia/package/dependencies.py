@@ -18,8 +18,8 @@ from colcon_rsia.summary.store import SummaryError
 def dependency_problems(package_build_base, dependencies):
     """Say which dependencies have no analysis of their sources here.
 
-    A package's C++ analysis reads the wrappers of the workspace's other
-    packages from its siblings under the build base
+    A package's C++ analysis reads the wrappers of the packages it depends
+    on from its siblings under the build base
     (``summary.wrapper_store.read_workspace_wrappers``); a dependency with no summary there,
     or one made from another source tree, offers none, and the calls into
     its libraries give no facts. (A summary without ``wrappers.json`` is a

@@ -299,7 +299,8 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         name=name, path=path, build_base=build_base, jobs=jobs,
         nothing_compiled=exported and not has_database,
         header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
-        repair=repair, write=False)
+        repair=repair, write=False,
+        dependency_dirs=[d for _, d in cpp_dependencies(dependencies)])
     # the wrappers of dependencies analysed elsewhere were not read: say so
     # rather than give other facts than a run that analysed them first
     summary.diagnostics += dependency_problems(

@@ -3,8 +3,8 @@
 """The wrappers a package offers the packages analysed after it.
 
 ``<build base>/<pkg>/rsia/wrappers.json`` holds the summaries of a
-library package's functions that make endpoints; the analysis of every
-package reads those of the others.
+library package's functions that make endpoints; the analysis of a
+package reads those of the packages it depends on.
 """
 
 from dataclasses import asdict

@@ -4,6 +4,7 @@
 
 import json
 import re
+import shutil
 
 from colcon_rsia.render.graph import graph_to_json
 from colcon_rsia.summary.store import read_summary
@@ -72,6 +73,43 @@ def test_unbuilt_workspace_in_model_mode_matches_expected_file(
     assert summary['header_mode'] == 'model'
     assert project_nodes(summary['nodes']) == \
         project_nodes(expected.get('nodes') or [])
+
+
+@pytest.fixture(scope='module')
+def built_exact_summaries(ros1_workspace, tmp_path_factory):
+    """The built ros1 workspace analysed in exact mode, into another base.
+
+    Its compile databases and CMake's codemodel are copied, so the units
+    are parsed again, with the real headers (units of one target share
+    them precompiled: frontend/cpp/shared_headers.py).
+    """
+    build = tmp_path_factory.mktemp('ros1_exact') / 'build'
+    for package in ros1_workspace.build_base.iterdir():
+        if (package / 'compile_commands.json').is_file():
+            shutil.copytree(package / '.cmake', build / package.name / '.cmake')
+            shutil.copy(package / 'compile_commands.json',
+                        build / package.name)
+    result = run_colcon(
+        ['rsia', 'analyze', '--build-base', str(build), '--header-mode',
+         'exact'], cwd=ros1_workspace.root, check=True)
+    assert 'Traceback' not in result.stdout + result.stderr
+    assert 'precompiled' not in result.stdout, result.stdout
+    return build
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
+def test_built_workspace_in_exact_mode_matches_expected_file(
+        built_exact_summaries, path):
+    expected = read_yaml(path)
+    summary = json.loads((
+        built_exact_summaries / expected['package'] / 'rsia' /
+        'summary.json').read_text())
+    assert summary['header_mode'] == 'exact'
+    assert project_nodes(summary['nodes']) == \
+        project_nodes(expected.get('nodes') or [])
+    # the precompiled headers are gone with the analysis
+    assert not list(built_exact_summaries.glob('*/rsia/shared-headers'))
 
 
 def test_node_names_come_from_ros_init(ros1_workspace):

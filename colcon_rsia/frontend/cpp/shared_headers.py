@@ -18,8 +18,10 @@ What goes into a PCH keeps every unit's meaning:
   other directive or code (a macro defined first could change what a
   header declares); a quoted include there (the unit's own header) is
   passed over, it is resolved next to the unit;
-- only headers that every unit of the group includes there: never one a
-  unit does not include, which could clash with the unit's own names;
+- only headers that every unit sharing the PCH includes there: never one
+  a unit does not include, which could clash with the unit's own names
+  (the units that include the header most of them include share one, the
+  others are grouped again);
 - only system headers (``/usr``, ``/opt``): the workspace's headers, whose
   code and macros the analysis reads, each unit parses itself. A PCH that
   reached any other file is not used.
@@ -29,6 +31,7 @@ built by the first unit's worker (the others wait for it) and deleted when
 the package's analysis ends: the next run parses only what changed.
 """
 
+import collections
 import hashlib
 import json
 import os
@@ -91,22 +94,45 @@ def plan(entries, *, read_text=safe_files.read_text):
     for group in groups.values():
         if len(group) < MIN_UNITS:
             continue
-        shared = None
+        headers = {}
         for entry in group:
             try:
-                headers = leading_includes(read_text(entry.file))
+                included = leading_includes(read_text(entry.file))
             except OSError:
-                headers = []
-            system = [h for h in headers
-                      if _is_system_header(h, entry.arguments,
-                                           entry.directory)]
-            shared = system if shared is None else \
-                [h for h in shared if h in set(system)]
-        if shared:
+                included = []
+            headers[entry.file] = [
+                h for h in included
+                if _is_system_header(h, entry.arguments, entry.directory)]
+        for files, shared in _subgroups(headers):
             text = ''.join(f'#include <{h}>\n' for h in shared)
-            for entry in group:
-                plans[entry.file] = text
+            plans.update(dict.fromkeys(files, text))
     return plans
+
+
+def _subgroups(headers):
+    """[(unit files, the headers all of them include)] to precompile.
+
+    The units that include the header most of them include share what they
+    all include (in the order of the first); the others are grouped again
+    the same way: a unit that includes none of them does not keep the
+    others from sharing theirs.
+
+    :param headers: {unit file: its leading system headers}
+    """
+    found = []
+    left = {f: h for f, h in headers.items() if h}
+    while len(left) >= MIN_UNITS:
+        counts = collections.Counter(h for hs in left.values() for h in set(hs))
+        most, count = max(counts.items(), key=lambda item: (item[1], item[0]))
+        if count < MIN_UNITS:
+            break
+        files = [f for f in left if most in left[f]]
+        shared = [h for h in left[files[0]]
+                  if all(h in left[f] for f in files)]
+        found.append((files, shared))
+        for file in files:
+            del left[file]
+    return found
 
 
 def _is_system_header(header, arguments, directory):
