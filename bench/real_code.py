@@ -13,7 +13,8 @@ compares what the summaries record with what the source text shows:
   call spread over several);
 - translation units, and those with parse errors located in package code;
 - packages that failed (internal errors are bugs);
-- wall seconds per translation unit and the peak memory of the analysis.
+- wall seconds per translation unit and the peak memory of the analysis;
+- where the time went: the summaries' ``phases`` summed over the packages.
 
 Ends with one line:
 
@@ -248,6 +249,7 @@ def main():
     internal = [line for line in failed if 'internal error' in line]
     packages = re.search(r'analysed \d+ of (\d+) packages', output)
     totals = collections.Counter()
+    phases = collections.Counter()
     missed = []
     for package, path in _packages(ws, output):
         summary = _summary(build_base, package)
@@ -267,6 +269,8 @@ def main():
             totals[role + '_hits'] += sum(1 for s in hits if s.role == role)
             totals[role + '_nodes'] += sum(
                 1 for s in in_nodes if s.role == role)
+        for phase, seconds in ((summary or {}).get('phases') or {}).items():
+            phases[phase] += seconds
         internal += [line for line in (summary or {}).get('diagnostics', [])
                      if 'internal error' in line]
         missed += [(package, s) for s in sites if s not in hits]
@@ -276,6 +280,11 @@ def main():
         for package, site in missed:
             print(f'missed {site.role}: {package}/{site.file}:{site.line} '
                   f'({site.api})')
+    # summed over the packages (analysed one after another; each parses
+    # its units in parallel)
+    print('phases (s): ' + ' '.join(
+        f'{phase}={seconds:.1f}' for phase, seconds in phases.items()) +
+        f' total={elapsed:.1f}')
     units = totals['units']
     parses_per_unit = totals['parses'] / totals['parsed_units'] \
         if totals['parsed_units'] else 0

@@ -53,6 +53,7 @@ from colcon_rsia.summary.kinds import ORIGIN_AST
 from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.package_summary import Phases
 
 
 class AnalysisError(RuntimeError):
@@ -161,6 +162,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                 build_paths.workspace_repairs_file(build_base),
                 workspace_package_dirs)
 
+    prepared_at = time.monotonic()
     try:
         shared = shared_cache.SharedCache.from_environment(
             package_path=path, build_base=build_base,
@@ -182,6 +184,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         # a few tens of MB each, worth nothing to the next run (it parses
         # only what changed)
         shutil.rmtree(precompiled_dir, ignore_errors=True)
+    parsed_at = time.monotonic()
     summary = build_summary(
         name=name, path=path, build_base=build_base, units=units,
         parsed={e.file for e in entries})
@@ -190,6 +193,10 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     summary.diagnostics = diagnostics + summary.diagnostics + \
         _unknown_namespace_notes(summary.nodes)
     summary.seconds = round(time.monotonic() - started, 3)
+    summary.phases = Phases(
+        prepare=round(prepared_at - started, 3),
+        parse=round(parsed_at - prepared_at, 3),
+        assemble=round(time.monotonic() - parsed_at, 3))
     check_stop()
     if write:
         store.write_summary(build_base, summary)

@@ -15,7 +15,7 @@ The rules (docs/usage.md, ``colcon rsia merge``):
 
 - a package in one shard only: its files replace those of the target;
 - a package in several shards: merged once when the analyses are the
-  same (all but the time they took, ``seconds``); when they differ, it is
+  same (all but the time they took, ``seconds`` and ``phases``); when they differ, it is
   a conflict, the package is not merged and the target keeps what it had.
   A build base carries no reliable time (an artifact download resets
   modification times), so there is no "newer" to keep;
@@ -46,7 +46,7 @@ from colcon_rsia.summary.wrapper_store import WrapperSummary
 RESULT_FILES = (store.SUMMARY_FILENAME, store.FAILURE_FILENAME,
                 wrapper_store.WRAPPERS_FILENAME)
 # what two analyses of the same sources may differ in
-VOLATILE_SUMMARY_FIELDS = ('seconds',)
+VOLATILE_SUMMARY_FIELDS = ('seconds', 'phases')
 
 
 @dataclass

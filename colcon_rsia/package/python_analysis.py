@@ -34,6 +34,7 @@ from colcon_rsia.summary.coverage import Coverage
 from colcon_rsia.summary.kinds import ROOT_MAIN
 from colcon_rsia.summary.nodes import Root
 from colcon_rsia.summary.package_summary import PackageSummary
+from colcon_rsia.summary.package_summary import Phases
 
 
 def analyze_python_package(*, name, path, build_base):
@@ -48,6 +49,7 @@ def analyze_python_package(*, name, path, build_base):
     started = time.monotonic()
     summary = build_python_summary(name=name, path=path)
     summary.seconds = round(time.monotonic() - started, 3)
+    summary.phases = Phases(python=summary.seconds)
     store.write_summary(build_base, summary)
     return summary
 

@@ -283,6 +283,7 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         os.path.join(build_base, COMPILE_DB_FILENAME))
     exported = exports_compile_commands(build_base)
     has_cpp = bool(find_executables(package_path=path, build_base=build_base))
+    configured = time.monotonic() - started
     if not has_database and not exported and not without_build:
         if has_python and not has_cpp:
             # a package of Python scripts needs no compile database
@@ -305,6 +306,8 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
     # rather than give other facts than a run that analysed them first
     summary.diagnostics += dependency_problems(
         build_base, cpp_dependencies(dependencies))
+    summary.phases.configure = round(configured, 3)
+    python_started = time.monotonic()
     if has_python:
         python = build_python_summary(name=name, path=path)
         summary.nodes = sorted(summary.nodes + python.nodes,
@@ -317,6 +320,7 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         summary.coverage.call_sites += coverage.call_site_coverage(
             coverage.package_call_sites(path, python=True), nodes=[],
             units=[])
+    summary.phases.python = round(time.monotonic() - python_started, 3)
     summary.seconds = round(time.monotonic() - started, 3)
     check_stop()
     store.write_summary(build_base, summary)

@@ -39,6 +39,28 @@ SUMMARY_SCHEMA = 'colcon-rsia/summary@1'
 
 
 @dataclass
+class Phases:
+    """Where a package's analysis time went (wall seconds)."""
+
+    # CMake asked which sources make which node (a package never built is
+    # configured in the sandbox first)
+    configure: float = 0.0
+    # the units and their arguments: the compile database, the model
+    # mode's stand-ins and include scan
+    prepare: float = 0.0
+    # the units' facts: the caches, then libclang's parses and the walks
+    parse: float = 0.0
+    # nodes, labels, coverage from the facts
+    assemble: float = 0.0
+    # the Python nodes
+    python: float = 0.0
+
+    @classmethod
+    def from_dict(cls, data):  # noqa: D102
+        return cls(**data)
+
+
+@dataclass
 class PackageSummary:
     """The analysis result of one package: the content of summary.json."""
 
@@ -52,6 +74,7 @@ class PackageSummary:
     schema: str = SUMMARY_SCHEMA
     # optional: summaries of older versions have none
     coverage: Optional[Coverage] = None
+    phases: Optional[Phases] = None
 
     def to_dict(self):
         r"""The summary as JSON data; undecodable names escaped (``\\xe9``).
@@ -77,7 +100,9 @@ class PackageSummary:
                 nodes=nodes, diagnostics=list(data.get('diagnostics', [])),
                 seconds=data.get('seconds', 0.0),
                 coverage=Coverage.from_dict(data['coverage'])
-                if data.get('coverage') else None)
+                if data.get('coverage') else None,
+                phases=Phases.from_dict(data['phases'])
+                if data.get('phases') else None)
         except (KeyError, TypeError, AttributeError) as e:
             raise ValueError(f'malformed summary: {e!r}') from None
         _check_types(summary, 'summary')
@@ -145,4 +170,4 @@ def _escaped(data):
 _FIELD_TYPES = {cls: get_type_hints(cls) for cls in (
     PackageSummary, Node, LabelledPublisher, Evidence, TopicParam, Trigger,
     NodeSubscriber, NodeTimer, NodeService, NodeClient, NodeAction, Root,
-    LoadedNodelet, Coverage, UnitCoverage, CallSiteCoverage)}
+    LoadedNodelet, Coverage, UnitCoverage, CallSiteCoverage, Phases)}
