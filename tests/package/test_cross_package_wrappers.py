@@ -196,3 +196,72 @@ def test_a_lifecycle_node_subclass_of_another_package_wraps_the_api(
         ('goal', 'geometry_msgs::msg::PoseStamped',
          'acme_common::LifecycleNode::create_subscription',
          'lambda@src/planner.cpp:14')]
+
+
+CONSTANT_CALLER = """
+#include <memory>
+#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "rsia_ros2_common/endpoints.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace
+{
+constexpr char kStatusTopic[] = "named_by_constant";
+}
+
+class Caller : public rclcpp::Node
+{
+public:
+  Caller()
+  : Node("caller"),
+    input_topic_(declare_parameter("input_topic", "named_by_default"))
+  {
+    status_pub_ = rsia_ros2_common::make_publisher<std_msgs::msg::String>(
+      this, kStatusTopic);
+    input_sub_ = rsia_ros2_common::make_subscription<std_msgs::msg::String>(
+      this, input_topic_,
+      [this](const std_msgs::msg::String::SharedPtr msg) {
+        status_pub_->publish(*msg);
+      });
+  }
+
+private:
+  std::string input_topic_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr status_pub_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr input_sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Caller>());
+}
+"""
+
+
+def test_a_wrapper_topic_passed_as_a_constant_or_parameter_is_named(
+        tmp_path):
+    # the call passes no literal: the topic comes from where a direct
+    # call's would, a constant and a parameter's default
+    src = tmp_path / 'src'
+    shutil.copytree(SRC / 'rsia_ros2_common', src / 'rsia_ros2_common')
+    caller = src / 'rsia_caller'
+    (caller / 'src').mkdir(parents=True)
+    (caller / 'src' / 'caller.cpp').write_text(CONSTANT_CALLER)
+    (caller / 'package.xml').write_text(
+        (SRC / 'rsia_ros2_wrapped' / 'package.xml').read_text().replace(
+            'rsia_ros2_wrapped', 'rsia_caller'))
+    (caller / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\nproject(rsia_caller)\n'
+        'find_package(ament_cmake REQUIRED)\n'
+        'add_executable(caller src/caller.cpp)\nament_package()\n')
+    summary = _analyze(src, tmp_path / 'build', 'rsia_caller',
+                       ('rsia_ros2_common', 'rsia_caller'))
+    (node,) = summary.nodes
+    assert [(p.topic, p.topic_is_literal) for p in node.publishers] == [
+        ('named_by_constant', True)]
+    (subscriber,) = node.subscribers
+    assert subscriber.topic_param is not None
+    assert (subscriber.topic_param.name, subscriber.topic_param.default) == \
+        ('input_topic', 'named_by_default')

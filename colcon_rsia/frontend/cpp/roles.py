@@ -44,6 +44,7 @@ from colcon_rsia.frontend.cpp.questions import record_paced_loop
 from colcon_rsia.frontend.cpp.questions import record_publish_site
 from colcon_rsia.frontend.cpp.questions import stored_target
 from colcon_rsia.frontend.cpp.strings import string_parts
+from colcon_rsia.frontend.cpp.strings import topic_source
 from colcon_rsia.frontend.cpp.strings import written_name
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
@@ -341,41 +342,10 @@ class RosRoles:
             role_argument(arguments, api.name_arg))
 
     def _topic_handle(self, arguments, api, literal):
-        """(handle, affixes): where a non-literal topic comes from.
-
-        A variable, or a parameter: ``create_publisher<M>(get_parameter(
-        "topic").as_string(), 10)`` reads the parameter in place, recorded
-        as ``param:<name>``. A variable joined with literals (``topic +
-        "_filtered"``) gives [prefix, suffix] too, so that the value a
-        launch file gives the parameter read into it makes the name.
-        """
+        """(handle, affixes): where a non-literal topic comes from."""
         if literal:
             return None, None
-        argument = role_argument(arguments, api.name_arg)
-        if argument is None:
-            return None, None
-        for current in [argument] + list(walk_preorder(argument)):
-            if current.kind != CK.CALL_EXPR or current.referenced is None:
-                continue
-            read = ros_api.lookup_call(qualified_name(current.referenced))
-            if read is not None and read.role == ros_api.PARAM_READ:
-                param, is_literal = written_name(
-                    role_argument(list(current.get_arguments()), 0))
-                if is_literal:
-                    return 'param:' + param, None
-        parts = string_parts(argument)
-        if parts is not None and len(parts) > 1:
-            # `ns + "/pose"` is not the value of `ns` alone
-            variables = [i for i, (kind, _) in enumerate(parts)
-                         if kind == 'variable']
-            if len(variables) != 1:
-                return None, None
-            index = variables[0]
-            return parts[index][1], [
-                ''.join(text for _, text in parts[:index]),
-                ''.join(text for _, text in parts[index + 1:])]
-        handle = first_handle(argument)
-        return (handle.get_usr() if handle is not None else None), None
+        return topic_source(role_argument(arguments, api.name_arg))
 
     def _on_param_read(self, cursor, ctx, stack, api, name, arguments):
         param, literal = written_name(role_argument(arguments, 0))

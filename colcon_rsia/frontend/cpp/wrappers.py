@@ -48,6 +48,7 @@ from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.questions import dependent_call_name
 from colcon_rsia.frontend.cpp.questions import record_publish_site
 from colcon_rsia.frontend.cpp.questions import stored_target
+from colcon_rsia.frontend.cpp.strings import topic_source
 from colcon_rsia.frontend.cpp.strings import written_name
 from colcon_rsia.summary.wrapper_store import WrapperSummary
 
@@ -317,8 +318,14 @@ class Summaries:
             return arguments[index] \
                 if index is not None and index < len(arguments) else None
         for endpoint in summary.endpoints:
+            # a topic the call passes that is no literal comes from where a
+            # direct call's would: a constant, a parameter read, a variable
+            topic_handle = affixes = None
             if endpoint.topic_param is not None:
                 topic, literal = written_name(argument(endpoint.topic_param))
+                if not literal:
+                    topic_handle, affixes = topic_source(
+                        argument(endpoint.topic_param))
             else:
                 topic, literal = endpoint.topic, endpoint.topic_is_literal
             msg_type = endpoint.msg_type or (
@@ -333,7 +340,8 @@ class Summaries:
             common = dict(
                 function=ctx.function, api=name, topic=topic,
                 topic_is_literal=literal, msg_type=msg_type, handle=handle,
-                location=location)
+                location=location, topic_handle=topic_handle,
+                topic_affixes=affixes)
             if endpoint.role == ROLE_PUBLISHER:
                 fact_builder.add_publisher(
                     self.facts, handle_name=target.spelling if target is not None
