@@ -18,6 +18,7 @@ from colcon_rsia.frontend.facts import ClientFact
 from colcon_rsia.frontend.facts import Function
 from colcon_rsia.frontend.facts import HandleAlias
 from colcon_rsia.frontend.facts import HostEvent
+from colcon_rsia.frontend.facts import NameArgument
 from colcon_rsia.frontend.facts import NodeHandleFact
 from colcon_rsia.frontend.facts import NodeletLoad
 from colcon_rsia.frontend.facts import NodeNameFact
@@ -54,6 +55,11 @@ def add_call(facts, **fields):
     fact = Call(**fields)
     facts.calls.append(fact)
     return fact
+
+
+def name_argument(**fields):
+    """A :class:`NameArgument`, for the call (:func:`add_call`) passing it."""
+    return NameArgument(**fields)
 
 
 def add_publisher(facts, **fields):

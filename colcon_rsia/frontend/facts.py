@@ -44,6 +44,21 @@ class ParamBinding:
 
 
 @dataclass
+class NameArgument:
+    """A string a call passes to a package function, read as a topic would be.
+
+    What one call gives a parameter that the callee makes an endpoint's
+    topic of (see node_facts: one endpoint per call).
+    """
+
+    index: int                    # the parameter's
+    topic: Optional[str]          # the literal, else the expression
+    topic_is_literal: bool
+    topic_handle: Optional[str] = None
+    topic_affixes: Optional[List[str]] = None
+
+
+@dataclass
 class Call:
     """A call edge; `kind` is 'call' or 'ref' (address taken, called later)."""
 
@@ -55,6 +70,14 @@ class Call:
     # a call of a virtual method: its qualified name (`ns::Base::run`),
     # which every override of a derived class of the package answers
     virtual: Optional[str] = None
+    # the strings it passes to the callee's string parameters
+    name_arguments: List[NameArgument] = field(default_factory=list)
+
+    def __post_init__(self):  # noqa: D105
+        # (read back from a cache as dicts)
+        self.name_arguments = [
+            a if isinstance(a, NameArgument) else NameArgument(**a)
+            for a in self.name_arguments]
 
 
 @dataclass
@@ -80,6 +103,9 @@ class PublisherFact:
     # function ids of the callbacks run when a subscriber connects or
     # disconnects (roots of the node: a lazy node subscribes there)
     status_callbacks: List[str] = field(default_factory=list)
+    # the topic is this parameter of the function making the endpoint:
+    # each call makes one, of what it passes (node_facts)
+    topic_argument: Optional[int] = None
 
 
 @dataclass
@@ -99,6 +125,7 @@ class SubscriberFact:
     topic_handle: Optional[str] = None
     topic_affixes: Optional[List[str]] = None
     origin: str = ORIGIN_AST           # as PublisherFact.origin
+    topic_argument: Optional[int] = None  # as PublisherFact.topic_argument
 
 
 @dataclass

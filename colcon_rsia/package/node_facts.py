@@ -276,8 +276,10 @@ def node_facts(facts, function_ids):
                 argument.index < len(callee.params):
             result.string_arguments.setdefault(
                 callee.params[argument.index], set()).add(argument.value)
-    result.publishers = _named_by_callers(result.publishers, result)
-    result.subscribers = _named_by_callers(result.subscribers, result)
+    result.publishers = _named_by_callers(
+        _made_per_call(result.publishers, result), result)
+    result.subscribers = _named_by_callers(
+        _made_per_call(result.subscribers, result), result)
     result.clients = unique(c for c in facts.clients if owned(c))
     result.rates = {r.handle: r for r in facts.rates}
     result.syncs = unique(facts.syncs)
@@ -292,6 +294,52 @@ def node_facts(facts, function_ids):
         r.name: r.default for r in reads if r.default is not None}
     _attach_filter_callbacks(result)
     return result
+
+
+def _made_per_call(endpoints, facts):
+    """One endpoint per call of a function that makes it of its parameter.
+
+    ``SubscribeWithHandler<M>(handler, id, topic, nh, node)`` subscribes to
+    its parameter ``topic``: each call the node makes subscribes to what
+    that call passes (``kImuTopic``, ``kOdometryTopic``), as the calls of
+    another package's wrapper do (frontend/cpp/wrappers.py). The copies
+    keep the place the function makes the endpoint. An endpoint one of
+    whose calls passes nothing readable keeps its parameter (named by
+    :func:`_named_by_callers` when every caller passes one literal).
+    """
+    made = []
+    for endpoint in endpoints:
+        index = endpoint.topic_argument
+        calls = [] if index is None else [
+            c for c in facts.calls
+            if c.callee == endpoint.function and c.kind == 'call']
+        passed = [next((a for a in c.name_arguments if a.index == index),
+                       None) for c in calls]
+        if not calls or None in passed:
+            made.append(endpoint)
+            continue
+        made += [_passed_topic(endpoint, argument) for argument in passed]
+    return unique(made)
+
+
+def _passed_topic(endpoint, argument):
+    """The endpoint, of the topic one call passes (a NameArgument)."""
+    prefix, suffix = endpoint.topic_affixes or ('', '')
+    if argument.topic_is_literal and \
+            ros_api.joins_after_node_name(argument.topic, suffix):
+        return replace(
+            endpoint, topic=prefix + argument.topic + suffix,
+            topic_is_literal=True, topic_handle=None, topic_affixes=None,
+            topic_argument=None)
+    if argument.topic_is_literal or (
+            endpoint.topic_affixes and argument.topic_affixes):
+        # (the code joins what the caller passes: left as written)
+        return replace(endpoint, topic_argument=None)
+    return replace(
+        endpoint, topic=argument.topic, topic_is_literal=False,
+        topic_handle=argument.topic_handle,
+        topic_affixes=argument.topic_affixes or endpoint.topic_affixes,
+        topic_argument=None)
 
 
 def _named_by_callers(endpoints, facts):

@@ -37,6 +37,7 @@ from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import same_cursor
+from colcon_rsia.frontend.cpp.cursors import template_member
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.cursors import written_arguments
 from colcon_rsia.frontend.cpp.questions import paced_loop
@@ -230,9 +231,13 @@ class RosRoles:
             topics.append((_camera_info(topic),
                            self.places.table_msg_type(ros_api.CAMERA_INFO_MSG)))
         topic_handle, affixes = self._topic_handle(arguments, api, literal)
+        # (a camera's second topic is made of the first: not a parameter)
+        from_argument = None if api.camera else _parameter_index(
+            role_argument(arguments, api.name_arg), topic_handle, ctx)
         for each_topic, each_type in topics:
             yield dict(
                 topic_handle=topic_handle, topic_affixes=affixes,
+                topic_argument=from_argument,
                 function=ctx.function, api=ros_api.api_label(name),
                 topic=each_topic, topic_is_literal=literal,
                 msg_type=each_type,
@@ -713,4 +718,26 @@ def _period_rate_hz(argument):
         values = [evaluate_number(a) for a in current.get_arguments()]
         if len(values) == 1:
             return recorder.round_rate(values[0]) if values[0] else None
+    return None
+
+
+def _parameter_index(argument, topic_handle, ctx):
+    """The index of the walked function's parameter a topic is, or None.
+
+    ``advertise(nh, topic)`` inside ``ShapeShifter::advertise(nh, topic,
+    …)``: each call of the function makes an endpoint of what it passes
+    (package/node_facts.py).
+    """
+    handle = first_handle(argument) if argument is not None else None
+    if handle is None or handle.kind != CK.PARM_DECL or \
+            handle.get_usr() != topic_handle:
+        return None
+    function = handle.semantic_parent
+    if function is None or ctx.function not in (
+            function.get_usr(), template_member(function).get_usr()):
+        return None
+    params = [c for c in function.get_children() if c.kind == CK.PARM_DECL]
+    for index, param in enumerate(params):
+        if param.get_usr() == topic_handle:
+            return index
     return None

@@ -13,6 +13,7 @@ one literal a variable is only ever set to in the facts that named it.
 import re
 
 import clang.cindex as ci
+from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
@@ -21,6 +22,7 @@ from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import HANDLE_KINDS
 from colcon_rsia.frontend.cpp.cursors import handle_marker
 from colcon_rsia.frontend.cpp.cursors import is_string
+from colcon_rsia.frontend.cpp.cursors import is_written
 from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
@@ -200,6 +202,19 @@ class StringVariables:
                 fact.nh = fact.nh if marker is None else marker
             elif not fact.topic_is_literal:
                 fact.topic_handle = self._copied(fact.topic_handle, bound)
+        for call in self.facts.calls:
+            # what a call passes to a package function's string parameter
+            for argument in call.name_arguments:
+                if argument.topic_is_literal:
+                    continue
+                topic = value(argument.topic_handle)
+                prefix, suffix = argument.topic_affixes or ('', '')
+                if topic and self._marker(argument.topic_handle) is None \
+                        and ros_api.joins_after_node_name(topic, suffix):
+                    argument.topic = prefix + topic + suffix
+                    argument.topic_is_literal = True
+                    argument.topic_handle = None
+                    argument.topic_affixes = None
         for fact, handle in self._named_by_variable:
             fact.name = value(handle) or fact.name
         for fact, handle in self._namespaced_by_variable:
@@ -340,6 +355,29 @@ def _resolving_marker(call, api, foreign):
     if not qualified_name(call.referenced).startswith(_ROS1_HANDLE):
         return ''  # a free function or a ROS 2 interface: the node's
     return handle_marker(call_object(call), foreign)
+
+
+def name_arguments(callee, arguments):
+    """What a call passes to the string parameters of a package function.
+
+    Read as a topic argument of the API would be (see topic_source): the
+    callee may make an endpoint's topic of any of them.
+
+    :rtype: [facts.NameArgument]
+    """
+    definition = callee.get_definition() or callee
+    params = [c for c in definition.get_children() if c.kind == CK.PARM_DECL]
+    found = []
+    for index, (param, argument) in enumerate(zip(params, arguments)):
+        if argument is None or not is_string(param) or \
+                not is_written(argument):
+            continue
+        topic, literal = written_name(argument)
+        handle, affixes = (None, None) if literal else topic_source(argument)
+        found.append(fact_builder.name_argument(
+            index=index, topic=topic, topic_is_literal=literal,
+            topic_handle=handle, topic_affixes=affixes))
+    return found
 
 
 def topic_source(argument):

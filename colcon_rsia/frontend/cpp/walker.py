@@ -397,11 +397,12 @@ class _Walker:
             if child.kind == CK.COMPOUND_STMT:
                 self._visit(child, inner, [])
 
-    def _add_call(self, ctx, callee, cursor, kind='call', virtual=None):
+    def _add_call(self, ctx, callee, cursor, kind='call', virtual=None,
+                  name_arguments=()):
         fact_builder.add_call(
             self.facts, caller=ctx.function, callee=callee,
             location=self.places.location(cursor), loops=ctx.loop_ids(), kind=kind,
-            virtual=virtual)
+            virtual=virtual, name_arguments=list(name_arguments))
 
     def _reference(self, cursor, ctx, stack):
         """A function named but not called here: it may be called later."""
@@ -511,7 +512,8 @@ class _Walker:
         callee = template_member(callee)
         virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
         self._add_call(ctx, callee.get_usr(), cursor,
-                       virtual=qualified_name(callee) if virtual else None)
+                       virtual=qualified_name(callee) if virtual else None,
+                       name_arguments=strings.name_arguments(callee, arguments))
         self.callbacks.bind_arguments(callee.get_usr(), arguments,
                                       caller=ctx.function)
         self.callbacks.bind_parameters(callee, arguments)
