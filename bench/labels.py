@@ -36,7 +36,9 @@ Matching, one to one (never two labelled items to one tool item):
   `` (`` comment, a leading ``/`` ignored); else the same non-null
   resolved name. In each pass the closest pairs go first (same file, then
   same file name stem: a member declared in the header and constructed
-  in the source, then line distance).
+  in the source, then line distance), and of pairs as close, those that
+  agree on the name (endpoints a function makes at one place, once per
+  call).
 
 Scores (the table shows them as hit/total; the percentages are over the
 denominators named here, everywhere):
@@ -311,12 +313,22 @@ def _topic_key(fact, tool_side):
     return str(topic or '').strip().lstrip('/')
 
 
+def _disagree(label, fact):
+    """0 when a tool endpoint has the labelled one's name, else 1."""
+    same_resolved = label.get('resolved') is not None and \
+        label.get('resolved') == fact.get('resolved')
+    same_topic = bool(_topic_key(label, False)) and \
+        _topic_key(label, False) == _topic_key(fact, True)
+    return 0 if same_resolved or same_topic else 1
+
+
 def match_endpoints(labelled, tool):
     """({labelled index: (tool index, how)}, set of unmatched tool indexes).
 
     By location (same file, line within LINE_SLACK), then by topic as
     written, then by the same non-null resolved name; in each pass the
-    closest pairs first (see _near).
+    closest pairs first (see _near), and of those as close, the pairs that
+    agree on the name.
     """
     matched, used = {}, set()
     passes = (
@@ -329,11 +341,13 @@ def match_endpoints(labelled, tool):
         ('resolved', lambda label, fact: label.get('resolved') is not None
          and label.get('resolved') == fact.get('resolved')))
     for how, fits in passes:
-        pairs = sorted((_near(label, fact), i, j)
+        # among pairs as close, those that agree on the name first (several
+        # endpoints made at one place: a function called once per topic)
+        pairs = sorted((_near(label, fact), _disagree(label, fact), i, j)
                        for i, label in enumerate(labelled) if i not in matched
                        for j, fact in enumerate(tool) if j not in used
                        and fits(label, fact))
-        for _, i, j in pairs:
+        for _, _, i, j in pairs:
             if i not in matched and j not in used:
                 matched[i] = (j, how)
                 used.add(j)

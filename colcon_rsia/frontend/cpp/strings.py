@@ -357,12 +357,15 @@ def _resolving_marker(call, api, foreign):
     return handle_marker(call_object(call), foreign)
 
 
-def name_arguments(callee, arguments):
+def name_arguments(callee, arguments, in_package):
     """What a call passes to the string parameters of a package function.
 
     Read as a topic argument of the API would be (see topic_source): the
-    callee may make an endpoint's topic of any of them.
+    callee may make an endpoint's topic of any of them. Only what can name
+    a topic: a literal, a parameter read, or a variable of the package (a
+    message's field is data, not a name).
 
+    :param in_package: whether a declaration is the package's own
     :rtype: [facts.NameArgument]
     """
     definition = callee.get_definition() or callee
@@ -374,6 +377,10 @@ def name_arguments(callee, arguments):
             continue
         topic, literal = written_name(argument)
         handle, affixes = (None, None) if literal else topic_source(argument)
+        variable = first_handle(argument)
+        if not literal and not (handle or '').startswith('param:') and (
+                variable is None or not in_package(variable)):
+            continue
         found.append(fact_builder.name_argument(
             index=index, topic=topic, topic_is_literal=literal,
             topic_handle=handle, topic_affixes=affixes))

@@ -513,7 +513,8 @@ class _Walker:
         virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
         self._add_call(ctx, callee.get_usr(), cursor,
                        virtual=qualified_name(callee) if virtual else None,
-                       name_arguments=strings.name_arguments(callee, arguments))
+                       name_arguments=strings.name_arguments(
+                           callee, arguments, self.places.in_package))
         self.callbacks.bind_arguments(callee.get_usr(), arguments,
                                       caller=ctx.function)
         self.callbacks.bind_parameters(callee, arguments)
