@@ -303,9 +303,9 @@ def _made_per_call(endpoints, facts):
     its parameter ``topic``: each call the node makes subscribes to what
     that call passes (``kImuTopic``, ``kOdometryTopic``), as the calls of
     another package's wrapper do (frontend/cpp/wrappers.py). The copies
-    keep the place the function makes the endpoint. An endpoint one of
-    whose calls passes nothing readable keeps its parameter (named by
-    :func:`_named_by_callers` when every caller passes one literal).
+    keep the place the function makes the endpoint. A call that passes
+    nothing that can name a topic (a message's field) makes one as written:
+    never the name another call passes.
     """
     made = []
     for endpoint in endpoints:
@@ -315,10 +315,15 @@ def _made_per_call(endpoints, facts):
             if c.callee == endpoint.function and c.kind == 'call']
         passed = [next((a for a in c.name_arguments if a.index == index),
                        None) for c in calls]
-        if not calls or None in passed:
+        if not calls or (None in passed and endpoint.topic_is_literal):
+            # (a name the unit resolved: every call it saw passed it)
             made.append(endpoint)
             continue
-        made += [_passed_topic(endpoint, argument) for argument in passed]
+        made += [
+            _passed_topic(endpoint, argument) if argument is not None else
+            replace(endpoint, topic_handle=None, topic_affixes=None,
+                    topic_argument=None)
+            for argument in passed]
     return unique(made)
 
 

@@ -97,3 +97,36 @@ def test_what_the_function_adds_is_added_to_what_each_call_passes(tmp_path):
         ('left_arm/status', True, 'src/announcer.cpp:8'),
         ('right/status', True, 'src/announcer.cpp:8'),
     ]
+
+
+NAMED_BY_ONE_CALLER_ONLY = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+ros::Publisher Advertise(ros::NodeHandle& nh, const std::string& topic) {
+  return nh.advertise<std_msgs::String>(topic, 1);
+}
+
+void onName(const std_msgs::String::ConstPtr& name) {
+  static ros::NodeHandle nh;
+  static ros::Publisher echo = Advertise(nh, name->data);
+}
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "echo");
+  ros::NodeHandle nh;
+  ros::Publisher fixed = Advertise(nh, "fixed");
+  ros::Subscriber sub = nh.subscribe("names", 1, onName);
+  ros::spin();
+}
+"""
+
+
+def test_a_name_one_call_passes_is_not_given_to_another(tmp_path):
+    summary = analyze_source(tmp_path, 'echo', NAMED_BY_ONE_CALLER_ONLY)
+    [node] = summary.nodes
+    # "fixed" is one call's; the other passes a message's data, which the
+    # code does not tell
+    assert sorted((p.topic, p.topic_is_literal) for p in node.publishers) \
+        == [('fixed', True), ('topic', False)]
