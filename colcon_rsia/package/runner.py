@@ -294,6 +294,7 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         return Outcome(name, warning=missing_compile_db_message(cmake_args))
     if header_mode is None:
         header_mode = default_header_mode()
+    wrapping = cpp_dependencies(dependencies)
     # CMake asked for a database but wrote none: nothing is compiled (a
     # header-only or launch-only package), so it has no C++ nodes
     summary = analyze_package(
@@ -301,11 +302,10 @@ def _analyze_cpp(*, name, path, build_base, cmake_args, jobs, header_mode,
         nothing_compiled=exported and not has_database,
         header_mode=header_mode, workspace_package_dirs=workspace_package_dirs,
         repair=repair, write=False,
-        dependency_dirs=[d for _, d in cpp_dependencies(dependencies)])
+        dependency_dirs=[d for _, d in wrapping])
     # the wrappers of dependencies analysed elsewhere were not read: say so
     # rather than give other facts than a run that analysed them first
-    summary.diagnostics += dependency_problems(
-        build_base, cpp_dependencies(dependencies))
+    summary.diagnostics += dependency_problems(build_base, wrapping)
     summary.phases.configure = round(configured, 3)
     python_started = time.monotonic()
     if has_python:

@@ -733,13 +733,12 @@ def _worker_main(connection, error_path, niceness):
         fd = os.open(error_path, os.O_WRONLY | os.O_APPEND)
         os.dup2(fd, 2)
         os.close(fd)
-    from colcon_rsia.frontend.cpp import shared_headers
     from colcon_rsia.frontend.cpp.model_mode import precompiled
 
     def on_build(path):
         connection.send(('phase', (PRECOMPILING, path) if path else None))
+    # (both modes' precompiled headers say so through it)
     precompiled.on_build = on_build
-    shared_headers.on_build = on_build
     context = {}
     while True:
         try:

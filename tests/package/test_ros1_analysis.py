@@ -63,16 +63,20 @@ def unbuilt_model_summaries(tmp_path_factory):
     return root / 'build'
 
 
+def _assert_matches_expected_file(build_base, path, header_mode):
+    expected = read_yaml(path)
+    summary = json.loads((
+        build_base / expected['package'] / 'rsia' /
+        'summary.json').read_text())
+    assert summary['header_mode'] == header_mode
+    assert project_nodes(summary['nodes']) == \
+        project_nodes(expected.get('nodes') or [])
+
+
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_unbuilt_workspace_in_model_mode_matches_expected_file(
         unbuilt_model_summaries, path):
-    expected = read_yaml(path)
-    summary = json.loads((
-        unbuilt_model_summaries / expected['package'] / 'rsia' /
-        'summary.json').read_text())
-    assert summary['header_mode'] == 'model'
-    assert project_nodes(summary['nodes']) == \
-        project_nodes(expected.get('nodes') or [])
+    _assert_matches_expected_file(unbuilt_model_summaries, path, 'model')
 
 
 @pytest.fixture(scope='module')
@@ -101,13 +105,7 @@ def built_exact_summaries(ros1_workspace, tmp_path_factory):
 @pytest.mark.parametrize('path', EXPECTED, ids=[p.stem for p in EXPECTED])
 def test_built_workspace_in_exact_mode_matches_expected_file(
         built_exact_summaries, path):
-    expected = read_yaml(path)
-    summary = json.loads((
-        built_exact_summaries / expected['package'] / 'rsia' /
-        'summary.json').read_text())
-    assert summary['header_mode'] == 'exact'
-    assert project_nodes(summary['nodes']) == \
-        project_nodes(expected.get('nodes') or [])
+    _assert_matches_expected_file(built_exact_summaries, path, 'exact')
     # the precompiled headers are gone with the analysis
     assert not list(built_exact_summaries.glob('*/rsia/shared-headers'))
 

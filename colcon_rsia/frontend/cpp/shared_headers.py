@@ -38,17 +38,13 @@ import os
 import re
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.precompiled import building
 from colcon_rsia.frontend.cpp.model_mode.precompiled import CXX_EXTENSIONS
 from colcon_rsia.frontend.cpp.model_mode.precompiled import language_standard
 from colcon_rsia.frontend.cpp.model_mode.precompiled import library_stamp
 
 # a header worth sharing is included by this many units to parse
 MIN_UNITS = 2
-
-# called with the PCH's path before it is built, and with None after (see
-# model_mode/precompiled.py: a worker tells its parent, so that a crash of
-# libclang while it builds is said to be the PCH's, not the unit's)
-on_build = None
 
 _ANGLE_INCLUDE = re.compile(r'#\s*include\s*<([^<>\n]+)>\s*$')
 _QUOTED_INCLUDE = re.compile(r'#\s*include\s*"[^"\n]+"\s*$')
@@ -165,14 +161,10 @@ def precompiled(directory, text, arguments, working_directory,
     try:
         with safe_files.directory_lock(directory):
             if not os.path.isfile(path + '.json'):
-                if on_build is not None:
-                    on_build(path)
-                try:
+                # (a crash meanwhile is the PCH's, not the unit's)
+                with building(path):
                     _build(path, text, arguments, working_directory,
                            resource_dir, ci)
-                finally:
-                    if on_build is not None:
-                        on_build(None)
             with open(path + '.json', encoding='utf-8') as f:
                 inputs = json.load(f)
     except (OSError, ValueError):

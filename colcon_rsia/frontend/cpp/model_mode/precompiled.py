@@ -17,6 +17,7 @@ it was built) is deleted, and the units parse without one: the next run
 builds it again.
 """
 
+import contextlib
 import hashlib
 import os
 import threading
@@ -37,8 +38,20 @@ _known = {}
 # called with the PCH's path before it is built, and with None after: a
 # worker process tells its parent (package/workers.py), so that a crash
 # of libclang while it writes the PCH (an abort on a full disk) is said to
-# be the PCH's, not the unit's
+# be the PCH's, not the unit's (also the exact mode's: shared_headers.py)
 on_build = None
+
+
+@contextlib.contextmanager
+def building(path):
+    """While a PCH is built at `path`: :data:`on_build` is told."""
+    if on_build is not None:
+        on_build(path)
+    try:
+        yield
+    finally:
+        if on_build is not None:
+            on_build(None)
 
 
 def precompiled_header(directory, source, arguments, resource_dir):
@@ -104,13 +117,8 @@ def _built(directory, standard, resource_dir):
         with safe_files.directory_lock(directory):
             if os.path.isfile(path):
                 return path
-            if on_build is not None:
-                on_build(path)
-            try:
+            with building(path):
                 return _compile(path, standard, resource_dir, ci)
-            finally:
-                if on_build is not None:
-                    on_build(None)
     except OSError:
         return None
 
