@@ -106,6 +106,9 @@ class PublisherFact:
     # the topic is this parameter of the function making the endpoint:
     # each call makes one, of what it passes (node_facts)
     topic_argument: Optional[int] = None
+    # where a function of the package's library makes it, when `location`
+    # is the executable's call of that function (node_facts)
+    made_in: Optional[str] = None
 
 
 @dataclass
@@ -126,6 +129,7 @@ class SubscriberFact:
     topic_affixes: Optional[List[str]] = None
     origin: str = ORIGIN_AST           # as PublisherFact.origin
     topic_argument: Optional[int] = None  # as PublisherFact.topic_argument
+    made_in: Optional[str] = None      # as PublisherFact.made_in
 
 
 @dataclass

@@ -593,7 +593,8 @@ def build_summary(*, name, path, build_base, units, parsed=None):
             seeds |= {f.id for f in merged.functions
                       if f.name.rsplit('::', 1)[0] in hierarchy}
         nodes = executable_nodes(
-            name, executable, sources, path, merged, seeds)
+            name, executable, sources, path, merged, seeds,
+            library_files={unit.source for unit in library})
         if wraps is not None and len(nodes) == 1:
             nodes[0].plugin_class = wraps
             wrapped.add(wraps)

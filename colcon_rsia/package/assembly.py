@@ -27,25 +27,29 @@ from colcon_rsia.summary.nodes import NodeSubscriber
 from colcon_rsia.summary.nodes import NodeTimer
 
 
-def executable_nodes(package, executable, sources, path, merged, seeds):
+def executable_nodes(package, executable, sources, path, merged, seeds,
+                     library_files=frozenset()):
     """The node(s) an executable runs.
 
     One, unless its code names nodes in two or more classes (a ROS 2
     ``main`` spinning several ``rclcpp::Node`` subclasses in one
     executor): then each class is a node of its own, with its methods and
     what they call, and the id ``package/executable/node_name``.
+
+    :param library_files: the sources of the package's library it links,
+      relative to `path` (see node_facts.node_facts)
     """
     classes = _node_classes(merged, select_functions(merged, seeds))
     if len(classes) < 2:
         return [build_node(package, executable, 'executable', sources, path,
-                           merged, seeds)]
+                           merged, seeds, library_files=library_files)]
     nodes = []
     for class_id, class_name in sorted(
             classes.items(), key=lambda item: item[1]):
         class_seeds = {f.id for f in merged.functions
                        if f.class_id == class_id}
         node = build_node(package, executable, 'executable', sources, path,
-                          merged, class_seeds)
+                          merged, class_seeds, library_files=library_files)
         short = node.name or class_name.split('::')[-1]
         node.id = f'{package}/{executable}/{short}'
         if any(n.id == node.id for n in nodes):
@@ -90,7 +94,7 @@ def _node_name(facts):
 
 def build_node(package, executable, kind, sources, path, merged, seeds,
                node_id=None, host=None, host_roots=None,
-               private_handles=()):
+               private_handles=(), library_files=frozenset()):
     """The labelled node that runs the functions `seeds` and what they call.
 
     :param sources: the files (absolute) the node is built from
@@ -100,8 +104,10 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
     :param host_roots: {function id: root kind} of the methods it calls
     :param private_handles: NodeHandle parameters the host gives in the
       plugin's own namespace
+    :param library_files: see :func:`executable_nodes`
     """
-    facts = node_facts(merged, select_functions(merged, seeds))
+    facts = node_facts(merged, select_functions(merged, seeds),
+                       library_files)
     facts.host = host
     facts.host_roots = dict(host_roots or {})
     for event in facts.host_events:
@@ -130,7 +136,7 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
                 callback=names.get(s.callback, s.callback),
                 namespace=resolve_namespace(facts, s.nh),
                 location=s.location, topic_param=topic_param(facts, s),
-                origin=s.origin)
+                origin=s.origin, made_in=s.made_in)
             for s in facts.subscribers),
             key=lambda s: (s.location, s.topic or '')),
         timers=[NodeTimer(

@@ -47,12 +47,19 @@ def fact_lines(holders, origins=None):
         for role, facts in ((PUBLISHER, holder.publishers),
                             (SUBSCRIBER, holder.subscribers)):
             for fact in facts:
-                file, _, line = fact.location.rpartition(':')
-                if line.isdigit():
-                    lines[(file, role)].append(int(line))
-                    if origins is not None:
-                        origins[(file, role, int(line))].add(fact.origin)
+                for location in _places(fact):
+                    file, _, line = location.rpartition(':')
+                    if line.isdigit():
+                        lines[(file, role)].append(int(line))
+                        if origins is not None:
+                            origins[(file, role, int(line))].add(fact.origin)
     return lines
+
+
+def _places(fact):
+    """A fact's location, and the library's place that made it (made_in)."""
+    made_in = getattr(fact, 'made_in', None)
+    return [fact.location] + ([made_in] if made_in else [])
 
 
 def _origin(site, origins):
@@ -172,10 +179,10 @@ def _through_package_functions(sites, nodes, units):
             reached_from[function] = found
         return reached_from[function]
 
-    in_nodes = {(role, f.location) for node in nodes
+    in_nodes = {(role, location) for node in nodes
                 for role, facts in ((PUBLISHER, node.publishers),
                                     (SUBSCRIBER, node.subscribers))
-                for f in facts}
+                for f in facts for location in _places(f)}
     # {(file, role): [(line, endpoints the call makes)]}
     call_lines = collections.defaultdict(list)
     for unit in units:

@@ -183,7 +183,7 @@ def label_publishers(facts):
             location=publisher.location,
             publish_sites=sorted({s.location for s in sites}),
             topic_param=topic_param(facts, publisher),
-            origin=publisher.origin)
+            origin=publisher.origin, made_in=publisher.made_in)
         if not driven:
             evidence.append(Evidence(
                 'no_subscribers', publisher.location,

@@ -235,8 +235,13 @@ def select_functions(facts, seeds):
     return selected
 
 
-def node_facts(facts, function_ids):
-    """Restrict merged package facts to the functions of one node."""
+def node_facts(facts, function_ids, library_files=frozenset()):
+    """Restrict merged package facts to the functions of one node.
+
+    :param library_files: the sources of the package's library the node
+      links (``file`` as in locations): an endpoint one of their functions
+      makes per call is placed at the node's call (see _made_per_call)
+    """
     functions = {}
     for function in facts.functions:
         if function.id in function_ids:
@@ -277,9 +282,9 @@ def node_facts(facts, function_ids):
             result.string_arguments.setdefault(
                 callee.params[argument.index], set()).add(argument.value)
     result.publishers = _named_by_callers(
-        _made_per_call(result.publishers, result), result)
+        _made_per_call(result.publishers, result, library_files), result)
     result.subscribers = _named_by_callers(
-        _made_per_call(result.subscribers, result), result)
+        _made_per_call(result.subscribers, result, library_files), result)
     result.clients = unique(c for c in facts.clients if owned(c))
     result.rates = {r.handle: r for r in facts.rates}
     result.syncs = unique(facts.syncs)
@@ -296,16 +301,21 @@ def node_facts(facts, function_ids):
     return result
 
 
-def _made_per_call(endpoints, facts):
+def _made_per_call(endpoints, facts, library_files=frozenset()):
     """One endpoint per call of a function that makes it of its parameter.
 
     ``SubscribeWithHandler<M>(handler, id, topic, nh, node)`` subscribes to
     its parameter ``topic``: each call the node makes subscribes to what
     that call passes (``kImuTopic``, ``kOdometryTopic``), as the calls of
-    another package's wrapper do (frontend/cpp/wrappers.py). The copies
-    keep the place the function makes the endpoint. A call that passes
-    nothing that can name a topic (a message's field) makes one as written:
-    never the name another call passes.
+    another package's wrapper do (frontend/cpp/wrappers.py). A call that
+    passes nothing that can name a topic (a message's field) makes one as
+    written: never the name another call passes.
+
+    The copies keep the place the function makes the endpoint, but for a
+    function of the package's library (`library_files`) called from the
+    node's own code: that library is linked as another package's would be,
+    and its endpoint is placed, as a wrapper's is, at the call, with the
+    place it is made in ``made_in``.
     """
     made = []
     for endpoint in endpoints:
@@ -319,12 +329,21 @@ def _made_per_call(endpoints, facts):
             # (a name the unit resolved: every call it saw passed it)
             made.append(endpoint)
             continue
-        made += [
-            _passed_topic(endpoint, argument) if argument is not None else
-            replace(endpoint, topic_handle=None, topic_affixes=None,
+        for call, argument in zip(calls, passed):
+            copy = _passed_topic(endpoint, argument) \
+                if argument is not None else replace(
+                    endpoint, topic_handle=None, topic_affixes=None,
                     topic_argument=None)
-            for argument in passed]
+            if _file_of(endpoint.location) in library_files and \
+                    _file_of(call.location) not in library_files:
+                copy = replace(copy, location=call.location,
+                               made_in=endpoint.location)
+            made.append(copy)
     return unique(made)
+
+
+def _file_of(location):
+    return location.rpartition(':')[0]
 
 
 def _passed_topic(endpoint, argument):

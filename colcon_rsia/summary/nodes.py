@@ -77,6 +77,9 @@ class LabelledPublisher:
     paced_by: Optional[str] = None
     # 'ast', or 'tokens': read from the tokens of a call the parse lost
     origin: str = ORIGIN_AST
+    # where a function of the package's library makes it, when `location`
+    # is the node's call of that function
+    made_in: Optional[str] = None
 
 
 @dataclass
@@ -92,6 +95,7 @@ class NodeSubscriber:
     location: str
     topic_param: Optional[TopicParam] = None
     origin: str = ORIGIN_AST           # as LabelledPublisher.origin
+    made_in: Optional[str] = None      # as LabelledPublisher.made_in
 
 
 @dataclass

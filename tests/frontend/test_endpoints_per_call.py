@@ -130,3 +130,65 @@ def test_a_name_one_call_passes_is_not_given_to_another(tmp_path):
     # code does not tell
     assert sorted((p.topic, p.topic_is_literal) for p in node.publishers) \
         == [('fixed', True), ('topic', False)]
+
+
+LIBRARY_ADVERTISER = r"""#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+ros::Publisher Advertise(ros::NodeHandle& nh, const std::string& topic) {
+  return nh.advertise<std_msgs::String>(topic, 1);
+}
+"""
+
+LIBRARY_USER = r"""#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+ros::Publisher Advertise(ros::NodeHandle& nh, const std::string& topic);
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "talker");
+  ros::NodeHandle nh;
+  ros::Publisher left = Advertise(nh, "left");
+  ros::Publisher right = Advertise(nh, "right");
+  ros::Rate rate(5);
+  while (ros::ok()) {
+    left.publish(std_msgs::String());
+    right.publish(std_msgs::String());
+    rate.sleep();
+  }
+}
+"""
+
+LIBRARY_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(talking)
+find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+catkin_package()
+add_library(advertiser src/advertiser.cpp)
+add_executable(talker src/talker.cpp)
+target_link_libraries(talker advertiser ${catkin_LIBRARIES})
+"""
+
+
+def test_a_library_function_of_the_package_is_placed_at_its_call(tmp_path):
+    package = tmp_path / 'talking'
+    (package / 'src').mkdir(parents=True)
+    (package / 'src' / 'advertiser.cpp').write_text(LIBRARY_ADVERTISER)
+    summary = analyze_source(tmp_path, 'talking', LIBRARY_USER,
+                             file='src/talker.cpp', cmake=LIBRARY_CMAKE)
+    [node] = summary.nodes
+    assert node.id == 'talking/talker'
+    # the executable links the library as it would another package's: each
+    # publisher is where the node calls Advertise (talker.cpp:10 and 11),
+    # made by the library at advertiser.cpp:6; the Rate loop paces both
+    assert sorted((p.topic, p.location, p.made_in, p.label)
+                  for p in node.publishers) == [
+        ('left', 'src/talker.cpp:10', 'src/advertiser.cpp:6', 'independent'),
+        ('right', 'src/talker.cpp:11', 'src/advertiser.cpp:6',
+         'independent'),
+    ]
+    # the library's advertise is the node's: covered, not an orphan
+    [site] = [c for c in summary.coverage.call_sites
+              if c.file == 'src/advertiser.cpp']
+    assert (site.line, site.recorded) == (6, 'node')
