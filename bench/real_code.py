@@ -37,8 +37,14 @@ The recall counts a call site with a fact anywhere in the package's units;
 ``*_in_nodes`` only those a node of the summary runs (a plugin's are in no
 node until plugins are analysed as nodes).
 
+``--reuse`` scores the summaries already in the build base (those a
+``bench/labels.py`` run wrote, say) without analysing again: the seconds
+and the memory are then not measured (``s_per_unit`` is the packages'
+own analysis time, ``peak_mb`` is ``n/a``).
+
 Usage: python3 bench/real_code.py WS [--colcon EXE] [--jobs N]
   [--build-base DIR] [--base-paths P ...] [--repair POLICY] [--missed]
+  [--reuse]
 """
 
 import argparse
@@ -87,14 +93,12 @@ def _analyze(ws, build_base, colcon_exe, jobs, base_paths, repair=None):
     return elapsed, peak_kb / 1024, result.stdout
 
 
-def _packages(ws, output):
+def _packages(ws, names):
     """[(name, absolute path)] of the packages the analysis went through.
 
-    The names are those ``analyze`` announced; the paths those of the
-    ``package.xml`` naming them (every package of a ROS workspace has one).
+    The paths are those of the ``package.xml`` naming them (every package
+    of a ROS workspace has one).
     """
-    names = re.findall(r'^\[\d+/\d+\] analysing (\S+) \.\.\.$', output,
-                       re.MULTILINE)
     paths = {}
     for root, dirs, files in os.walk(ws):
         dirs[:] = [d for d in dirs if not d.startswith(('.', 'build'))
@@ -234,24 +238,37 @@ def main():
         help="passed on to analyze (default: analyze's)")
     parser.add_argument('--missed', action='store_true',
                         help='list every call site without a fact')
+    parser.add_argument(
+        '--reuse', action='store_true',
+        help='score the summaries in the build base, without analysing')
     args = parser.parse_args()
     ws = Path(args.ws).resolve()
     build_base = Path(args.build_base) if args.build_base else \
         ws / 'build_rsia_bench'
-    if build_base.exists():
-        shutil.rmtree(build_base)
-    build_base.mkdir(parents=True)
-    elapsed, peak_mb, output = _analyze(
-        ws, build_base, args.colcon or colcon(), args.jobs, args.base_paths,
-        args.repair)
-    failed = [line for line in output.splitlines()
-              if 'analysis failed' in line]
+    if args.reuse:
+        # (the packages with a summary: a failed one is not seen)
+        names = sorted(p.parent.parent.name for p in
+                       build_base.glob('*/rsia/summary.json'))
+        elapsed, peak_mb, failed = None, None, []
+        packages = str(len(names))
+    else:
+        if build_base.exists():
+            shutil.rmtree(build_base)
+        build_base.mkdir(parents=True)
+        elapsed, peak_mb, output = _analyze(
+            ws, build_base, args.colcon or colcon(), args.jobs,
+            args.base_paths, args.repair)
+        failed = [line for line in output.splitlines()
+                  if 'analysis failed' in line]
+        names = re.findall(r'^\[\d+/\d+\] analysing (\S+) \.\.\.$',
+                           output, re.MULTILINE)
+        announced = re.search(r'analysed \d+ of (\d+) packages', output)
+        packages = announced.group(1) if announced else '?'
     internal = [line for line in failed if 'internal error' in line]
-    packages = re.search(r'analysed \d+ of (\d+) packages', output)
     totals = collections.Counter()
     phases = collections.Counter()
     missed = []
-    for package, path in _packages(ws, output):
+    for package, path in _packages(ws, names):
         summary = _summary(build_base, package)
         units, with_errors = _units(summary, path)
         parses, parsed = _parses(summary)
@@ -282,6 +299,9 @@ def main():
                   f'({site.api})')
     # summed over the packages (analysed one after another; each parses
     # its units in parallel)
+    if elapsed is None:
+        # (no run measured: the packages' own analysis time)
+        elapsed = sum(phases.values())
     print('phases (s): ' + ' '.join(
         f'{phase}={seconds:.1f}' for phase, seconds in phases.items()) +
         f' total={elapsed:.1f}')
@@ -291,7 +311,7 @@ def main():
     pub = (totals[PUBLISHER + '_hits'], totals[PUBLISHER + '_sites'])
     sub = (totals[SUBSCRIBER + '_hits'], totals[SUBSCRIBER + '_sites'])
     print(f'RESULT ws={ws.name} '
-          f'packages={packages.group(1) if packages else "?"} '
+          f'packages={packages} '
           f'failed={len(failed)} internal_errors={len(internal)} '
           f'units={units} units_with_errors={totals["units_with_errors"]} '
           f'({_percent(totals["units_with_errors"], units)}%) '
@@ -305,7 +325,7 @@ def main():
           f'rejected_summaries={totals["rejected"]} '
           f'parses_per_unit={parses_per_unit:.2f} '
           f's_per_unit={elapsed / units if units else 0:.2f} '
-          f'peak_mb={peak_mb:.0f}')
+          f'peak_mb={"n/a" if peak_mb is None else f"{peak_mb:.0f}"}')
 
 
 if __name__ == '__main__':
