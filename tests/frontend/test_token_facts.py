@@ -286,3 +286,42 @@ def test_a_variable_made_by_its_constructor_runs_it(tmp_path):
     callees = {c.callee for c in facts.calls if c.caller == run.id}
     # (clang's id of a constructor of class Node)
     assert [c for c in callees if '@S@Node@F@Node#' in c], callees
+
+
+OUT_OF_CLASS_CONSTRUCTOR = """\
+#include <ros/ros.h>
+#include <nav_msgs/OccupancyGrid.h>
+namespace mapping {
+class Mapper {
+ public:
+  Mapper(double period);
+ private:
+  void Draw(const ros::WallTimerEvent&);
+  ros::NodeHandle nh_;
+  ros::Publisher grid_;
+  ros::WallTimer timer_;
+};
+
+Mapper::Mapper(const double period)
+    : grid_(nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true)),
+      timer_(nh_.createWallTimer(ros::WallDuration(period),
+                                 &Mapper::Draw, this)) {}
+
+void Mapper::Draw(const ros::WallTimerEvent&) {
+  grid_.publish(nav_msgs::OccupancyGrid());
+}
+}  // namespace mapping
+"""
+
+
+def test_an_out_of_class_constructors_initializers_from_tokens(tmp_path):
+    facts = _facts(tmp_path, OUT_OF_CLASS_CONSTRUCTOR)
+    # `Mapper::Mapper(...) : grid_(...)`: the initialiser list follows the
+    # constructor's own name, not the class name that qualifies it
+    [grid] = facts.publishers
+    assert (grid.topic, grid.msg_type, grid.handle_name, grid.origin,
+            grid.location) == (
+        'map', 'nav_msgs::OccupancyGrid', 'grid_', TOKENS, 'node.cpp:15')
+    [timer] = facts.timers
+    assert (_name(facts, timer.callback), timer.location) == (
+        'mapping::Mapper::Draw', 'node.cpp:16')

@@ -198,10 +198,12 @@ class _Reader(CallFacts):
     def _initializers(self, cursor, body_start, ctx):
         """``: Node("talker"), pub_(nh.advertise<M>("out", 1))``."""
         tokens = self.tokens
-        name = next((i for i, t in enumerate(tokens[:body_start])
-                     if t.text == cursor.spelling), None)
-        if name is None or name + 1 >= body_start or \
-                tokens[name + 1].text != '(':
+        # the name its parameters follow: out of its class, the class's
+        # name qualifies it first (`Mapper::Mapper(`)
+        name = next((i for i, t in enumerate(tokens[:body_start - 1])
+                     if t.text == cursor.spelling and
+                     tokens[i + 1].text == '('), None)
+        if name is None:
             return
         i = self.pairs.get(name + 1, body_start) + 1
         while i < body_start and tokens[i].text != ':':
