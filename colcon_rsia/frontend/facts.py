@@ -304,6 +304,11 @@ class HandleAlias:
     location: str
 
 
+# the NodeHandle marker of the handle a function returns (``nh`` of a
+# fact, ``alias`` of a HandleAlias): ret:<function USR>
+RETURNED_HANDLE = 'ret:'
+
+
 @dataclass
 class NodeHandleFact:
     """The namespace a NodeHandle variable/field was created with."""

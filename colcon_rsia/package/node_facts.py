@@ -30,6 +30,7 @@ from colcon_rsia.frontend.facts import PublisherFact
 from colcon_rsia.frontend.facts import PublishSite
 from colcon_rsia.frontend.facts import RateObject
 from colcon_rsia.frontend.facts import Registration
+from colcon_rsia.frontend.facts import RETURNED_HANDLE
 from colcon_rsia.frontend.facts import ServiceFact
 from colcon_rsia.frontend.facts import SubscriberFact
 from colcon_rsia.frontend.facts import SyncFact
@@ -487,7 +488,8 @@ def resolve_namespace(facts, marker, depth=0):
     """The namespace a NodeHandle marker stands for ('' when unknown).
 
     A marker is '' (node namespace), '~' (private), a namespace as
-    written, the USR of a NodeHandle variable, or 'ref:<usr>|<sub>'.
+    written, the USR of a NodeHandle variable, 'ref:<usr>|<sub>', or
+    'ret:<function usr>', the handle a function returns.
     """
     # a handle may be built from another; a short chain is enough
     if marker is None or depth > 8:
@@ -509,6 +511,10 @@ def resolve_namespace(facts, marker, depth=0):
         return passed.pop()
     if marker in facts.namespaces:
         return resolve_namespace(facts, facts.namespaces[marker], depth + 1)
+    if marker.startswith(RETURNED_HANDLE):
+        # a function whose body is not seen, or returning several handles
+        name = marker.rpartition('@F@')[2].partition('#')[0]
+        return f'{UNKNOWN_NAMESPACE}{name}()'
     if marker.startswith('c:'):
         return ''  # a handle whose construction we did not see
     return marker

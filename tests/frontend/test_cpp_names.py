@@ -358,3 +358,57 @@ def test_the_topic_an_options_constructor_took(tmp_path):
     [node] = summary.nodes
     # not the options variable's name (`direct`, `opts`)
     assert sorted(p.topic for p in node.publishers) == ['relayed', 'status']
+
+
+HANDLES_RETURNED_BY_HELPERS = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <boost/shared_ptr.hpp>
+#include <string>
+
+class RobotLink
+{
+public:
+  explicit RobotLink(const std::string& robot)
+  {
+    node_ = boost::shared_ptr<ros::NodeHandle>(new ros::NodeHandle(robot));
+  }
+  boost::shared_ptr<ros::NodeHandle>& node() { return node_; }
+
+private:
+  boost::shared_ptr<ros::NodeHandle> node_;
+};
+
+class ArmLink
+{
+public:
+  ArmLink() : nh_("arm") {}
+  ros::NodeHandle& handle() { return nh_; }
+
+private:
+  ros::NodeHandle nh_;
+};
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "links");
+  RobotLink link(argv[1]);
+  ArmLink arm;
+  ros::Publisher state =
+      link.node()->advertise<std_msgs::String>("joint_states", 1);
+  ros::Publisher grip = arm.handle().advertise<std_msgs::String>("grip", 1);
+  ros::spin();
+}
+"""
+
+
+def test_a_handle_a_package_function_returns_is_the_one_it_returns(
+        tmp_path):
+    summary = analyze_source(tmp_path, 'links', HANDLES_RETURNED_BY_HELPERS)
+    [node] = summary.nodes
+    by_topic = {p.topic: p for p in node.publishers}
+    # node() returns node_, made with the command line's robot name: not
+    # a namespace the analysis knows, never the node's own
+    assert by_topic['joint_states'].namespace.startswith('?')
+    # handle() returns nh_, made in the namespace "arm"
+    assert by_topic['grip'].namespace == 'arm'

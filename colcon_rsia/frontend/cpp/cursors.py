@@ -15,6 +15,7 @@ import clang.cindex as ci
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.facts import RETURNED_HANDLE
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
@@ -137,7 +138,7 @@ def first_handle(cursor):
     return None
 
 
-def handle_marker(obj, foreign=None):
+def handle_marker(obj, foreign=None, own=None):
     """The NodeHandle an object expression is: USR or namespace marker.
 
     ``getPrivateNodeHandle()`` is '~', ``getNodeHandle()`` '' (the node's
@@ -145,7 +146,10 @@ def handle_marker(obj, foreign=None):
     None when the expression names no handle. A member or variable
     `foreign` says is set up by code the analysis does not read (another
     library's base class, a name only the model mode's repairs declare):
-    a namespace not known, ``?<name>``.
+    a namespace not known, ``?<name>``. A function `own` says is the
+    package's and that returns a handle (``link_->node()->advertise``):
+    ``ret:<its USR>``, which stands for the handle it returns
+    (walker._function).
     """
     if obj is None:
         return None
@@ -156,6 +160,10 @@ def handle_marker(obj, foreign=None):
                 return '~'
             if api is not None and api.role == ros_api.PUBLIC_HANDLE:
                 return ''
+            if api is None and own is not None and \
+                    holds_node_handle(current.referenced.result_type) and \
+                    own(current.referenced):
+                return RETURNED_HANDLE + current.referenced.get_usr()
     handle = first_handle(obj)
     if handle is not None and handle.kind in (CK.FIELD_DECL, CK.VAR_DECL) \
             and foreign is not None and foreign(handle):
@@ -170,6 +178,24 @@ _NODE_HANDLE_TYPE = re.compile(r'^(?:const )?ros::NodeHandle(?: ?[&*]+)?$')
 def is_node_handle(cursor):
     """Whether an expression or declaration is a ROS 1 NodeHandle."""
     return bool(_NODE_HANDLE_TYPE.match(cursor.type.get_canonical().spelling))
+
+
+def holds_node_handle(type_):
+    """Whether a type is a ROS 1 NodeHandle or a (smart) pointer to one.
+
+    ``ros::NodeHandle&``, ``ros::NodeHandle*``, and a class template of
+    one argument that is the handle (``shared_ptr<ros::NodeHandle>``, by
+    value or reference): what a function returning a handle returns.
+    """
+    canonical = type_.get_canonical()
+    if canonical.kind in (ci.TypeKind.LVALUEREFERENCE,
+                          ci.TypeKind.RVALUEREFERENCE):
+        canonical = canonical.get_pointee().get_canonical()
+    if _NODE_HANDLE_TYPE.match(canonical.spelling):
+        return True
+    return canonical.get_num_template_arguments() == 1 and bool(
+        _NODE_HANDLE_TYPE.match(
+            canonical.get_template_argument_type(0).get_canonical().spelling))
 
 
 # std::/boost:: functions whose result is their argument, by reference

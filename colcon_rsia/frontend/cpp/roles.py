@@ -131,7 +131,8 @@ class RosRoles:
         if api is not None and api.nh_arg is not None and \
                 api.nh_arg < len(arguments):
             obj = arguments[api.nh_arg]
-        return handle_marker(obj, self._foreign_handle)
+        return handle_marker(obj, self._foreign_handle,
+                             self.places.in_package)
 
     def _foreign_handle(self, member):
         """A ROS 1 NodeHandle member of a class of another library.

@@ -42,12 +42,14 @@ from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import holds_node_handle
 from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_logical
 from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import LOOP_KINDS
 from colcon_rsia.frontend.cpp.cursors import made_class
 from colcon_rsia.frontend.cpp.cursors import overload_candidate
+from colcon_rsia.frontend.cpp.cursors import plain_handle
 from colcon_rsia.frontend.cpp.cursors import qualified_name
 from colcon_rsia.frontend.cpp.cursors import REF_KINDS
 from colcon_rsia.frontend.cpp.cursors import repaired_call_name
@@ -56,10 +58,12 @@ from colcon_rsia.frontend.cpp.cursors import REPAIRED_PREFIX
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import SCOPE_KINDS
 from colcon_rsia.frontend.cpp.cursors import template_member
+from colcon_rsia.frontend.cpp.cursors import walk_preorder
 from colcon_rsia.frontend.cpp.parse import MAX_DIAGNOSTICS_PER_TU
 from colcon_rsia.frontend.cpp.plugin_exports import plugin_exports
 from colcon_rsia.frontend.cpp.questions import dependent_call_name
 from colcon_rsia.frontend.cpp.questions import MemberInit
+from colcon_rsia.frontend.facts import RETURNED_HANDLE
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
@@ -266,6 +270,8 @@ class _Walker:
                 fact_builder.add_node_handle(
                     self.facts, handle=param.get_usr(),
                     namespace=f'{UNKNOWN_NAMESPACE}{param.spelling}')
+        if holds_node_handle(cursor.result_type):
+            self._returned_handles(cursor)
         parent = cursor.semantic_parent
         owner = parent if parent is not None and \
             parent.kind in CLASS_KINDS else None
@@ -284,6 +290,30 @@ class _Walker:
             else:
                 self._visit(child, ctx, [])
             pending_member = None
+
+    def _returned_handles(self, function):
+        """``ros::NodeHandle& node() { return node_; }``: what it returns.
+
+        A call of the function stands for the handle (cursors.handle_marker
+        gives ``ret:<its USR>``): the member or variable it returns, or,
+        when it returns anything else (a handle made there), one whose
+        namespace the analysis does not know.
+        """
+        fid = RETURNED_HANDLE + function.get_usr()
+        for current in walk_preorder(
+                function, stop=frozenset({CK.LAMBDA_EXPR})):
+            if current.kind != CK.RETURN_STMT:
+                continue
+            returned = next(current.get_children(), None)
+            handle = plain_handle(returned)
+            if handle is not None and self.places.in_package(handle):
+                fact_builder.add_handle_alias(
+                    self.facts, alias=fid, handle=handle.get_usr(),
+                    location=self.places.location(current))
+            else:
+                fact_builder.add_node_handle(
+                    self.facts, handle=fid,
+                    namespace=f'{UNKNOWN_NAMESPACE}{function.spelling}()')
 
     def _declared_object(self, cursor, function):
         """A variable or field whose type makes it a publisher/listener."""
