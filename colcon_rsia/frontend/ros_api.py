@@ -303,6 +303,11 @@ CALLS = {
         REGISTER_CALLBACK, callback_arg=1),
     'rclcpp::ParameterEventHandler::add_parameter_event_callback': Api(
         REGISTER_CALLBACK, callback_arg=0),
+    # nodelet_topic_tools' lazy nodelet base: advertise<M>(nh, topic, queue,
+    # latch), which calls the nodelet's subscribe() when a subscriber
+    # connects (a nodelet runs all its methods: subscribe() is among them)
+    'nodelet_topic_tools::NodeletLazy::advertise': Api(
+        PUBLISHER, name_arg=1, nh_arg=0),
     # realtime_tools: the constructor (or init) advertises the topic
     # ROS 1: (nh, topic, queue); ROS 2: (publisher), which it wraps
     'realtime_tools::RealtimePublisher::RealtimePublisher': Api(
