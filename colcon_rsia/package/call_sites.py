@@ -146,6 +146,9 @@ def _cxx_scan(text, own_functions):
         if name in own_functions and not _OBJECT_ACCESS.search(stripped) \
                 or stripped.endswith('this->') and name in own_functions:
             continue
+        # (the text, where the literals an argument may be are not blanked)
+        if _without_arguments(text, match.end() - 1):
+            continue
         line = code.count('\n', 0, start) + 1
         sites.append((line, _CXX_CALLS[name], name))
     for match in _CXX_CONSTRUCTION.finditer(code):
@@ -154,6 +157,28 @@ def _cxx_scan(text, own_functions):
             line = code.count('\n', 0, match.start('name')) + 1
             sites.append((line, _CXX_CONSTRUCTED[name.split('::')[-1]], name))
     return sorted(sites), declared
+
+
+def _without_arguments(code, position):
+    """Whether the call whose ``<`` or ``(`` is at `position` passes none.
+
+    Every call that creates an endpoint passes at least its topic (or the
+    options holding it): ``subscribe()``, a display's or a filter's
+    re-subscription to the topic it already has, creates none.
+    """
+    i = position
+    if code[i] == '<':
+        depth = 0
+        while i < len(code):
+            depth += {'<': 1, '>': -1}.get(code[i], 0)
+            i += 1
+            if depth == 0:
+                break
+        match = re.compile(r'\s*\(').match(code, i)
+        if match is None:
+            return False
+        i = match.end() - 1
+    return re.compile(r'\(\s*\)').match(code, i) is not None
 
 
 def _constructed_with_arguments(code, position):
