@@ -185,10 +185,10 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
         # only what changed)
         shutil.rmtree(precompiled_dir, ignore_errors=True)
     parsed_at = time.monotonic()
-    summary = build_summary(
+    summary, not_built = build_summary(
         name=name, path=path, build_base=build_base, units=units,
         parsed={e.file for e in entries})
-    summary.coverage = _coverage(path, units, summary.nodes)
+    summary.coverage = _coverage(path, units, summary.nodes, not_built)
     summary.header_mode = header_mode
     summary.diagnostics = diagnostics + summary.diagnostics + \
         _unknown_namespace_notes(summary.nodes)
@@ -229,8 +229,11 @@ def _unknown_namespace_notes(nodes):
     return sorted(set(notes))
 
 
-def _coverage(path, units, nodes):
-    """The C++ part of a package's coverage (see coverage.py)."""
+def _coverage(path, units, nodes, not_built=()):
+    """The C++ part of a package's coverage (see coverage.py).
+
+    :param not_built: the programs (files) no target of the package builds
+    """
     return Coverage(
         units=[UnitCoverage(
             file=os.path.relpath(file, path), errors=unit.errors,
@@ -241,7 +244,8 @@ def _coverage(path, units, nodes):
                for file, unit in sorted(units.items())],
         call_sites=coverage.call_site_coverage(
             coverage.package_call_sites(path, python=False),
-            nodes=nodes, units=list(units.values())))
+            nodes=nodes, units=list(units.values()),
+            not_built={os.path.relpath(f, path) for f in not_built}))
 
 
 def synthesized_entries(path, *, workspace_package_dirs=(),
@@ -514,7 +518,11 @@ def build_summary(*, name, path, build_base, units, parsed=None):
     names), and those share USRs across executables: a node's facts are
     those of its own TUs plus the package's library TUs, never another
     executable's.
+
+    Returns (the summary, {the files of the programs that no target the
+    package's CMake code names builds}).
     """
+    not_built = set()
     summary = PackageSummary(
         package=name, path=path, tool_version=__version__)
     read_by = []
@@ -551,6 +559,7 @@ def build_summary(*, name, path, build_base, units, parsed=None):
             continue
         if targets_known:
             executable_sources.add(file)
+            not_built.add(file)
             summary.diagnostics.append(
                 f'{relative}: note: defines main() but no executable of '
                 'CMakeLists.txt builds it: not a node')
@@ -627,7 +636,7 @@ def build_summary(*, name, path, build_base, units, parsed=None):
                 'target?): it has no facts')
         summary.nodes.append(node)
     summary.nodes.extend(_plugin_nodes(name, path, merged_all, exported))
-    return summary
+    return summary, not_built
 
 
 def _plugin_nodes(package, path, merged, exported):

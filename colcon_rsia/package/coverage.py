@@ -106,12 +106,14 @@ def match_sites(sites, lines):
     return matched
 
 
-def call_site_coverage(sites, *, nodes, units):
+def call_site_coverage(sites, *, nodes, units, not_built=frozenset()):
     """[CallSiteCoverage] of these sites against recorded facts.
 
     :param nodes: the package's nodes (Node)
     :param units: the facts of the units parsed (TuFacts); a site in
       a file none of them read is in code the build never compiles
+    :param not_built: files of programs no target builds (an example's
+      ``main``): code the build never compiles either
     """
     origins = collections.defaultdict(set)
     in_nodes = match_sites(sites, fact_lines(nodes, origins))
@@ -125,7 +127,8 @@ def call_site_coverage(sites, *, nodes, units):
     read = {file for unit in units for file in unit.files}
     result = []
     for site in sites:
-        recorded = RECORDED_IN_NODE if site in in_nodes else \
+        recorded = IN_UNREAD_FILE if site.file in not_built else \
+            RECORDED_IN_NODE if site in in_nodes else \
             RECORDED_IN_UNIT if site in in_units else \
             IN_UNREAD_FILE if site.file not in read else NOT_RECORDED
         result.append(CallSiteCoverage(

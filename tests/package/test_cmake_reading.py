@@ -108,6 +108,12 @@ def test_a_program_no_executable_builds_is_no_node(tmp_path):
     assert summary['diagnostics'] == [
         'src/gamma.cpp: note: defines main() but no executable of '
         'CMakeLists.txt builds it: not a node']
+    # and its publisher's call site is code the build never compiles, not
+    # a call site the analysis missed
+    recorded = {(c['file'], c['recorded'])
+                for c in summary['coverage']['call_sites']}
+    assert recorded == {('src/alpha.cpp', 'node'), ('src/beta.cpp', 'node'),
+                        ('src/gamma.cpp', 'unread')}
 
 
 def test_a_program_a_command_cmake_could_not_run_builds(tmp_path):
