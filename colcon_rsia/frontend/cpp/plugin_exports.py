@@ -34,12 +34,18 @@ GAZEBO_BASES = {
     'SYSTEM': 'gazebo::SystemPlugin',
 }
 _GAZEBO_MACRO = r'\bGZ_REGISTER_(MODEL|SENSOR|WORLD|SYSTEM)_PLUGIN\s*\(\s*([\w:]+)\s*\)'
+# what the macros expand to, written by hand: the entry point gzserver calls,
+# `gazebo::SensorPlugin * RegisterPlugin() { return new Class(); }` (up to
+# the opening brace of its body, which is a scope)
+_GAZEBO_ENTRY = (
+    r'\b(?:gazebo\s*::\s*)?(Model|Sensor|World|System)Plugin\s*\*\s*'
+    r'RegisterPlugin\s*\(\s*(?:void\s*)?\)\s*\{[^{}]*?\bnew\s+([\w:]+)')
 # what decides the namespace a macro is written in: comments and literals
 # (skipped), namespace openings, other braces, the macro itself
 _SCOPES = re.compile(
     r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\''
-    r'|\bnamespace\s+((?:\w+\s*::\s*)*\w+)\s*\{|\bnamespace\s*\{|\{|\}|'
-    + _GAZEBO_MACRO, re.S)
+    r'|\bnamespace\s+((?:\w+\s*::\s*)*\w+)\s*\{|\bnamespace\s*\{|'
+    + _GAZEBO_ENTRY + r'|\{|\}|' + _GAZEBO_MACRO, re.S)
 
 
 def plugin_exports(main_file):
@@ -59,7 +65,7 @@ def plugin_exports(main_file):
     if registration is not None:
         for match in BT_NODE_TYPE.finditer(text, registration.end()):
             exports.append([match.group(1).lstrip(':'), BT_NODE_BASE])
-    if 'GZ_REGISTER_' in text:
+    if 'GZ_REGISTER_' in text or 'RegisterPlugin' in text:
         exports += gazebo_exports(text)
     return exports
 
@@ -67,20 +73,26 @@ def plugin_exports(main_file):
 def gazebo_exports(text):
     """[class, base] of the Gazebo plugins a source registers.
 
-    The macro names the class as its namespace sees it: the namespaces
-    the macro is written in qualify it.
+    With a ``GZ_REGISTER_*_PLUGIN`` macro, or with what it expands to
+    written by hand (the ``RegisterPlugin`` entry point). Either names the
+    class as its namespace sees it: the namespaces it is written in
+    qualify it.
     """
     exports = []
     scopes = []  # a namespace's name, or None for any other brace
     for match in _SCOPES.finditer(text):
         token = match.group(0)
-        if match.group(3):
-            class_name = match.group(3)
+        # (groups: 1 a namespace; 2, 3 the entry point; 4, 5 the macro)
+        entry = match.group(3) is not None
+        kind, class_name = match.group(2, 3) if entry else match.group(4, 5)
+        if class_name:
             if not class_name.startswith('::'):
                 class_name = '::'.join(
                     [s for s in scopes if s] + [class_name])
             exports.append(
-                [class_name.lstrip(':'), GAZEBO_BASES[match.group(2)]])
+                [class_name.lstrip(':'), GAZEBO_BASES[kind.upper()]])
+            if entry:
+                scopes.append(None)  # (the entry point's body)
         elif token.startswith('namespace'):
             name = match.group(1)
             scopes.append(re.sub(r'\s+', '', name) if name else None)
