@@ -16,6 +16,7 @@ import time
 import traceback
 from typing import Optional
 
+from colcon_core.package_identification.ignore import IGNORE_MARKER
 from colcon_rsia.environment_variables import HEADER_MODE_ENVIRONMENT_VARIABLE
 from colcon_rsia.frontend.compile_db import COMPILE_DB_FILENAME
 from colcon_rsia.package import build_paths
@@ -212,13 +213,22 @@ def os_error_message(error):
 
 
 def build_base_problem(build_base):
-    """Why the build base cannot hold the summaries, or None."""
+    """Why the build base cannot hold the summaries, or None.
+
+    Makes it, marked as colcon build marks its own: the summaries, caches
+    and stand-in headers are nothing the next command's package discovery
+    should crawl (tens of thousands of directories in a large workspace).
+    """
     if os.path.lexists(build_base) and not os.path.isdir(build_base):
         return f"--build-base '{display(build_base)}' is not a directory"
     try:
         os.makedirs(build_base, exist_ok=True)
         with tempfile.TemporaryFile(dir=build_base):
             pass
+        marker = os.path.join(build_base, IGNORE_MARKER)
+        if not os.path.lexists(marker):
+            with open(marker, 'w'):
+                pass
     except OSError as e:
         return (f"cannot write into --build-base '{display(build_base)}': "
                 f'{e.strerror or e}')

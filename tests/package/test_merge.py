@@ -101,8 +101,10 @@ def test_different_analyses_of_a_package_are_a_conflict(tmp_path):
     assert '(summary.json differs in nodes)' in conflict
     assert 'not merged' in conflict
     assert 'rsia: merged 2 packages' in result.stdout
+    # the packages merged; the build base marked as colcon build marks its
+    # own (COLCON_IGNORE: no package discovery crawls it)
     assert sorted(p.name for p in (tmp_path / 'build').iterdir()) == \
-        ['pkg_000', 'pkg_002']
+        ['COLCON_IGNORE', 'pkg_000', 'pkg_002']
 
 
 def _valid(name, root):
@@ -155,7 +157,8 @@ def test_each_unreadable_file_is_one_message_and_the_rest_is_merged(
         'merged' in result.stderr
     assert 'rsia: merged 2 packages' in result.stdout
     build = tmp_path / 'build'
-    assert sorted(p.name for p in build.iterdir()) == ['d', 'e']
+    assert sorted(p.name for p in build.iterdir()) == \
+        ['COLCON_IGNORE', 'd', 'e']
     assert not (build / 'e' / SUMMARY).exists()
     assert json.loads((build / 'e' / FAILURE).read_text())['error'] == \
         'no compile_commands.json'

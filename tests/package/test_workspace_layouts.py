@@ -66,6 +66,23 @@ def test_unbuilt_analysis_from_the_workspace_root(tmp_path, base_paths):
     _assert_all_analyzed(result, root / 'build', root)
 
 
+def test_the_build_base_is_not_crawled_for_packages(tmp_path):
+    # a build base of another name at the root, as colcon build marks its
+    # own: the next command's package discovery does not enter it (a
+    # package.xml left there would otherwise be a package of the workspace)
+    root = _workspace(tmp_path)
+    result = run_colcon(
+        ['rsia', 'analyze', '--build-base', 'build_rsia'], cwd=root)
+    _assert_all_analyzed(result, root / 'build_rsia', root)
+    stray = root / 'build_rsia' / 'stray'
+    stray.mkdir()
+    (stray / 'package.xml').write_text(
+        (root / 'src' / 'cob_sensors' / 'package.xml').read_text().replace(
+            'cob_sensors', 'stray_copy'))
+    listed = run_colcon(['list', '--names-only'], cwd=root, check=True)
+    assert set(listed.stdout.split()) == FIG2_PACKAGES
+
+
 def test_build_base_outside_the_workspace(tmp_path):
     root = _workspace(tmp_path)
     elsewhere = tmp_path / 'elsewhere' / 'build'
