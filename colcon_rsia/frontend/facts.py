@@ -72,6 +72,9 @@ class Call:
     virtual: Optional[str] = None
     # the strings it passes to the callee's string parameters
     name_arguments: List[NameArgument] = field(default_factory=list)
+    # a virtual call made on the object itself (`f()`, `this->f()`): it runs
+    # the override of the object's own class
+    on_this: bool = False
 
     def __post_init__(self):  # noqa: D105
         # (read back from a cache as dicts)

@@ -620,14 +620,15 @@ def build_summary(*, name, path, build_base, units, parsed=None):
     # bases', through typedefs too) and what they call, in any unit (never
     # another executable's main: no method calls it)
     for plugin, class_name, kind in plugins:
-        prefixes = tuple(
-            c + '::' for c in _class_and_bases(class_name, merged_all))
+        hierarchy = _class_and_bases(class_name, merged_all)
+        prefixes = tuple(c + '::' for c in hierarchy)
         seeds = {f.id for f in merged_all.functions
                  if f.name.startswith(prefixes)}
         node = build_node(
             name, plugin.split('/')[-1], kind,
             _sources_of(path, merged_all, seeds), path, merged_all,
-            seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}')
+            seeds, node_id=plugin if '/' in plugin else f'{name}/{plugin}',
+            hierarchy=hierarchy)
         node.plugin_class = class_name
         if not seeds:
             summary.diagnostics.append(
@@ -674,7 +675,8 @@ def _plugin_nodes(package, path, merged, exported):
             package, plugin.split('/')[-1], 'plugin',
             _sources_of(path, merged, seeds), path, merged, seeds,
             node_id=plugin if '/' in plugin else f'{package}/{plugin}',
-            host=host, host_roots=host_roots, private_handles=private)
+            host=host, host_roots=host_roots, private_handles=private,
+            hierarchy=classes)
         node.base_class = base
         node.plugin_class = class_name
         if host is None and not (node.publishers or node.subscribers or

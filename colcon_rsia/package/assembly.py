@@ -94,7 +94,8 @@ def _node_name(facts):
 
 def build_node(package, executable, kind, sources, path, merged, seeds,
                node_id=None, host=None, host_roots=None,
-               private_handles=(), library_files=frozenset()):
+               private_handles=(), library_files=frozenset(),
+               hierarchy=None):
     """The labelled node that runs the functions `seeds` and what they call.
 
     :param sources: the files (absolute) the node is built from
@@ -105,8 +106,10 @@ def build_node(package, executable, kind, sources, path, merged, seeds,
     :param private_handles: NodeHandle parameters the host gives in the
       plugin's own namespace
     :param library_files: see :func:`executable_nodes`
+    :param hierarchy: a node that is an object of one class (a plugin):
+      that class and its bases (see node_facts.select_functions)
     """
-    facts = node_facts(merged, select_functions(merged, seeds),
+    facts = node_facts(merged, select_functions(merged, seeds, hierarchy),
                        library_files)
     facts.host = host
     facts.host_roots = dict(host_roots or {})

@@ -170,7 +170,12 @@ def _link_by_name(facts):
 
 
 def _override_calls(facts):
-    """Calls of the overrides of the virtual methods the calls name."""
+    """Calls of the overrides of the virtual methods the calls name.
+
+    Each keeps its call's ``on_this``; being no call as written
+    (``virtual`` None), it is an override the object's own class may not
+    have: select_functions keeps only those of a node's class hierarchy.
+    """
     virtual = [c for c in facts.calls if c.virtual]
     if not virtual:
         return []
@@ -218,10 +223,21 @@ def _callbacks_registered_by(facts):
     return registered
 
 
-def select_functions(facts, seeds):
-    """All functions reachable from `seeds` by calls and registrations."""
+def select_functions(facts, seeds, hierarchy=None):
+    """All functions reachable from `seeds` by calls and registrations.
+
+    :param hierarchy: the node's class and its bases, when the node is an
+      object of one class (a plugin): a virtual call it makes on itself
+      runs that class's override, never a sibling class's
+    """
+    owners = {f.id: f.name.rpartition('::')[0] for f in facts.functions} \
+        if hierarchy is not None else {}
     edges = {}
     for call in facts.calls:
+        if hierarchy is not None and call.on_this and \
+                call.virtual is None and \
+                owners.get(call.callee) not in hierarchy:
+            continue  # (an override of another class: see _override_calls)
         edges.setdefault(call.caller, []).append(call.callee)
     for function, callbacks in _callbacks_registered_by(facts).items():
         edges.setdefault(function, []).extend(callbacks)

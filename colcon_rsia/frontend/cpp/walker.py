@@ -37,6 +37,7 @@ from colcon_rsia.frontend.cpp.const_eval import source_tokens
 from colcon_rsia.frontend.cpp.cursors import aliased_class
 from colcon_rsia.frontend.cpp.cursors import base_class_names
 from colcon_rsia.frontend.cpp.cursors import call_arguments
+from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
@@ -67,6 +68,24 @@ from colcon_rsia.frontend.facts import RETURNED_HANDLE
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
 CK = ci.CursorKind
+
+
+def _qualified_call(call, callee):
+    """Whether a call names its callee qualified (``Base::f()``)."""
+    tokens = [t.spelling for t in source_tokens(call)]
+    for i in range(1, len(tokens) - 1):
+        if tokens[i] == callee.spelling and tokens[i + 1] in ('(', '<'):
+            return tokens[i - 1] == '::'
+    return False
+
+
+def _on_this(call):
+    """Whether a member call is made on the object itself (`this`)."""
+    obj = call_object(call)
+    while obj is not None and obj.kind == CK.UNEXPOSED_EXPR and \
+            len(child_cursors(obj)) == 1:
+        obj = child_cursors(obj)[0]
+    return obj is None or obj.kind == CK.CXX_THIS_EXPR
 
 
 def extract_facts(tu, *, package_path, source, external_wrappers=None):
@@ -428,11 +447,12 @@ class _Walker:
                 self._visit(child, inner, [])
 
     def _add_call(self, ctx, callee, cursor, kind='call', virtual=None,
-                  name_arguments=()):
+                  name_arguments=(), on_this=False):
         fact_builder.add_call(
             self.facts, caller=ctx.function, callee=callee,
             location=self.places.location(cursor), loops=ctx.loop_ids(), kind=kind,
-            virtual=virtual, name_arguments=list(name_arguments))
+            virtual=virtual, on_this=on_this,
+            name_arguments=list(name_arguments))
 
     def _reference(self, cursor, ctx, stack):
         """A function named but not called here: it may be called later."""
@@ -540,9 +560,13 @@ class _Walker:
     def _package_call(self, ctx, callee, cursor, arguments):
         """A call of the package's function (or constructor) `callee`."""
         callee = template_member(callee)
-        virtual = callee.kind == CK.CXX_METHOD and callee.is_virtual_method()
+        # `Base::onInit()` calls that function: a qualified name never
+        # dispatches to an override
+        virtual = callee.kind == CK.CXX_METHOD and \
+            callee.is_virtual_method() and not _qualified_call(cursor, callee)
         self._add_call(ctx, callee.get_usr(), cursor,
                        virtual=qualified_name(callee) if virtual else None,
+                       on_this=virtual and _on_this(cursor),
                        name_arguments=strings.name_arguments(
                            callee, arguments, self.places.in_package))
         self.callbacks.bind_arguments(callee.get_usr(), arguments,
