@@ -101,6 +101,12 @@ def _blank(match):
 _QUALIFIER = re.compile(r'(?:\b\w+\s*::\s*)+$')
 # what leaves the call without an object: not `.`, `->` or `Type::`
 _OBJECT_ACCESS = re.compile(r'(?:\.|->|::)$')
+# the last scope of a qualified call: `T::` in `T::subscribe(`
+_LAST_SCOPE = re.compile(r'\b(\w+)\s*::$')
+# a template's parameter list (one level of nested `<>`), and the type
+# parameters it declares: `template <typename T, class U = X<int>>`
+_TEMPLATE_PARAMETERS = re.compile(r'\btemplate\s*<((?:[^<>]|<[^<>]*>)*)>')
+_TYPE_PARAMETER = re.compile(r'\b(?:typename|class)\s+(\w+)')
 
 
 def cxx_call_sites(text, own_functions=frozenset()):
@@ -122,6 +128,12 @@ def _cxx_scan(text, own_functions):
     code = _CXX_COMMENT_OR_LITERAL.sub(_blank, text)
     # `#define X nh.advertise<...>`: a macro's body is no call site
     code = _PREPROCESSOR_LINE.sub(_blank, code)
+    # a call qualified by a template's type parameter (`T::subscribe(hz)`)
+    # calls a static member of the type given: ROS's endpoint methods are
+    # members called on a handle, its endpoint functions are in namespaces
+    type_parameters = {
+        parameter for parameters in _TEMPLATE_PARAMETERS.finditer(code)
+        for parameter in _TYPE_PARAMETER.findall(parameters.group(1))}
     sites = []
     declared = set()
     for match in _CXX_CALL.finditer(code):
@@ -145,6 +157,9 @@ def _cxx_scan(text, own_functions):
             continue
         if name in own_functions and not _OBJECT_ACCESS.search(stripped) \
                 or stripped.endswith('this->') and name in own_functions:
+            continue
+        scope = _LAST_SCOPE.search(stripped)
+        if scope and scope.group(1) in type_parameters:
             continue
         # (the text, where the literals an argument may be are not blanked)
         if _without_arguments(text, match.end() - 1):

@@ -25,3 +25,24 @@ def test_a_call_that_passes_nothing_creates_no_endpoint():
     assert cxx_call_sites(code) == [
         (6, 'subscriber', 'subscribe'), (7, 'publisher', 'advertise'),
         (8, 'subscriber', 'subscribe'), (10, 'publisher', 'advertise')]
+
+
+def test_a_call_qualified_by_a_template_parameter_is_no_ros_call():
+    code = '\n'.join([
+        'template <typename T, class Channel = Serial<int>>',     # 1
+        'struct Poller',
+        '{',
+        '  static void start(double hz)',
+        '  {',
+        '    T::subscribe(hz);',                                  # 6
+        '    Channel :: advertise(name_);',                       # 7
+        '    sub_ = nh_.subscribe("in", 1, &T::cb, this);',       # 8
+        '    pub_ = rclcpp::create_publisher<M>(node_, "o", 1);',  # 9
+        '  }',
+        '};',
+    ])
+    # `T::subscribe` calls a static member of the type a user gives the
+    # template; ROS's `subscribe` and `advertise` are members called on a
+    # handle, its free functions live in namespaces
+    assert cxx_call_sites(code) == [
+        (8, 'subscriber', 'subscribe'), (9, 'publisher', 'create_publisher')]
