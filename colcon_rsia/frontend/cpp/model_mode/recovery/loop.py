@@ -5,6 +5,7 @@
 from dataclasses import dataclass
 from dataclasses import field
 import os
+import re
 import threading
 from typing import Optional
 
@@ -13,6 +14,7 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.recovery import applied
 from colcon_rsia.frontend.cpp.model_mode.recovery import edits
 from colcon_rsia.frontend.cpp.model_mode.recovery import overlay
+from colcon_rsia.frontend.cpp.model_mode.recovery import render
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     file_declarations
@@ -37,6 +39,9 @@ MAX_REPAIR_ROUNDS = 4
 # the source files whose declarations a unit never repairs
 CXX_FILES = ('.cpp', '.cc', '.cxx', '.c++', '.C', '.h', '.hh', '.hpp',
              '.hxx', '.h++', '.ipp')
+# clang's errors about a name declared twice, whose notes point at the
+# other declaration
+_CONFLICT = re.compile(r'redefinition|conflicts with|redeclared|different kind')
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
 
@@ -194,20 +199,36 @@ class _Repairing:
         tu, facts, missing = self.parse()
         errors = self.own_errors(tu)
         records = store.read_records(self.header)
-        best = ((missing or 0, len(errors)), 0, tu, facts, records)
+        best = (self.score(tu, missing, errors), 0, tu, facts, records)
         rounds = 0
-        # repairing pays only where a call the text shows has no fact
-        while errors and missing != 0 and rounds < MAX_REPAIR_ROUNDS:
-            self.check_stop()  # each round is one more parse
-            found = self.repairs(tu, errors)
-            if not store.add_repairs(self.header, self.relative, found):
+        withdrawn = set()
+        while rounds < MAX_REPAIR_ROUNDS:
+            conflicting = self.conflicting(tu)
+            if conflicting:
+                # a repair clang rejected (a type a header included later
+                # declares as a typedef, a package's other unit's name)
+                # breaks the unit's own code: withdrawn, whatever it costs
+                withdrawn |= conflicting
+                records = store.read_records(self.header)
+                store.write_records(self.header, self.relative, {
+                    r: rule for r, rule in records.items()
+                    if r not in conflicting})
+            elif errors and missing != 0:
+                # repairing pays only where a call the text shows has no
+                # fact
+                found = {r: rule for r, rule in self.repairs(
+                    tu, errors).items() if r not in withdrawn}
+                if not store.add_repairs(self.header, self.relative, found):
+                    break
+                if any(kind == HEADER for kind, _ in found):
+                    self.write_stand_ins_of_repair()
+            else:
                 break
-            if any(kind == HEADER for kind, _ in found):
-                self.write_stand_ins_of_repair()
+            self.check_stop()  # each round is one more parse
             rounds += 1
             tu, facts, missing = self.parse()
             errors = self.own_errors(tu)
-            score = (missing or 0, len(errors))
+            score = self.score(tu, missing, errors)
             if score < best[0]:
                 best = (score, rounds, tu, facts,
                         store.read_records(self.header))
@@ -220,6 +241,38 @@ class _Repairing:
             store.share_repairs(self.header, set(records), self.workspace)
         return ParsedUnit(tu, facts, rounds, records,
                           lost_calls if self.unrecorded else None)
+
+    def score(self, tu, missing, errors):
+        """Which parse is kept: the lowest score wins.
+
+        The fewest calls without a fact, then the fewest errors in the
+        workspace's code and in the repair header.
+        """
+        return missing or 0, len(errors) + len(self.header_error_lines(tu))
+
+    def header_error_lines(self, tu):
+        """The repair header's lines an error is on, or its note points at.
+
+        A repair can conflict with a declaration clang reads before it (the
+        error is in the header) or after it (the error is at the other
+        declaration, and its note at the repair's).
+        """
+        header = os.path.abspath(self.header)
+        return {line for _, file, line, _, notes
+                in errors_with_notes(tu, _CONFLICT.search)
+                for file, line in [(file, line)] + [
+                    (at, number) for _, at, number, _ in notes]
+                if file and os.path.abspath(file) == header} | {
+            line for _, file, line, _ in error_diagnostics(tu)
+            if file and os.path.abspath(file) == header}
+
+    def conflicting(self, tu):
+        """The unit's repairs whose declarations clang reports errors in."""
+        lines = self.header_error_lines(tu)
+        if not lines:
+            return set()
+        return render.repairs_at(store.read_repairs(self.header),
+                                 self.relative, lines)
 
     def repairs(self, tu, errors):
         """{(kind, name): rule id} of the declarations and edits to add."""

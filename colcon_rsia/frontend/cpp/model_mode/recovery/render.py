@@ -48,6 +48,22 @@ MARKER = '// colcon-rsia repairs v1'
 
 def render(repairs, source):
     """The repair header holding these declarations."""
+    return '\n'.join(_render(repairs, source)[0])
+
+
+def repairs_at(repairs, source, line_numbers):
+    """The repairs whose declarations are on these lines of their header.
+
+    The header is rendered again from the data: a line clang reports an
+    error on belongs to one repair's block (a member's, to its class's).
+    """
+    _, owners = _render(repairs, source)
+    return {owners[number - 1] for number in line_numbers
+            if 0 < number <= len(owners) and owners[number - 1]}
+
+
+def _render(repairs, source):
+    """The header's lines, and the repair each line belongs to (or None)."""
     lines = [
         f'{MARKER} for {_printable(source)}',
         "// declarations clang said were missing (colcon_rsia's recovery/)",
@@ -58,7 +74,11 @@ def render(repairs, source):
         if kind in MEMBER_KINDS:
             owner, member = name.rsplit('::', 1)
             members.setdefault(owner, set()).add((kind, member))
+    owners = []
+    owner = None
     for kind, name in sorted(repairs):
+        owners += [owner] * (len(lines) - len(owners))
+        owner = (kind, name)
         lines.append(f'// repair {kind} {name}')
         *namespaces, short = name.split('::')
         trailer = ''  # after the declaration, outside its namespaces
@@ -150,8 +170,9 @@ def render(repairs, source):
         guard = repaired_guard('::'.join(namespaces + [short]))
         lines += [f'#ifndef {short}', f'#define {guard}',
                   f'{opening} {body} {closing}{trailer}'.strip(), '#endif']
+    owners += [owner] * (len(lines) - len(owners))
     lines.append('')
-    return '\n'.join(lines)
+    return lines, owners + [None]
 
 
 def _member_value(member, value):

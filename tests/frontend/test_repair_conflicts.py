@@ -1,0 +1,63 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""A repair that clang rejects is withdrawn.
+
+A unit starts with the names its package's other units needed. Where it
+includes the real declaration of one, a message's typedef say, the
+repair's class conflicts with it: the repair header itself has an error.
+The unit then parses again without that repair. Expectations written by
+hand from the code below.
+"""
+
+import json
+from pathlib import Path
+
+from colcon_rsia.frontend.cpp.model_mode.recovery import store
+from colcon_rsia.summary.store import RSIA_DIRNAME
+from conftest import analyze_source
+import pytest
+
+STAMPER = r"""
+#include <ros/ros.h>
+#include <std_msgs/Header.h>
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "stamper");
+  ros::NodeHandle nh;
+  ros::Publisher stamps = nh.advertise<std_msgs::Header>("stamps", 1);
+  ros::Timer timer = nh.createTimer(ros::Duration(0.1),
+      [&](const ros::TimerEvent&) { stamps.publish(std_msgs::Header()); });
+  ros::spin();
+}
+"""
+
+
+@pytest.mark.parametrize('offered_header', [False, True], ids=[
+    # the typedef comes after the repair: the error is at the typedef, its
+    # note at the repair
+    'typedef-after',
+    # a header the repair header includes declares it first: the error is
+    # in the repair header
+    'typedef-before'])
+def test_a_repair_conflicting_with_a_typedef_is_withdrawn(
+        tmp_path, offered_header):
+    # what other units of the package offered: one used the message's name
+    # without including its header, one needed the header
+    offered = Path(tmp_path, 'b', RSIA_DIRNAME, 'stubs',
+                   store.REPAIR_DIR, store.SHARED_REPAIRS)
+    offered.parent.mkdir(parents=True)
+    offered.write_text(json.dumps(
+        [['type', 'std_msgs::Header']] +
+        [['header', 'std_msgs/Header.h']] * offered_header))
+
+    summary = analyze_source(tmp_path, 'stamper', STAMPER, repair='when-it-pays')
+    [unit] = summary.coverage.units
+    # this unit includes the message, whose typedef the seeded class
+    # conflicted with: one more parse, without it
+    assert ['type', 'std_msgs::Header'] not in [
+        [kind, name] for _, kind, name in unit.repairs]
+    assert unit.repair_rounds == 1
+    assert not [d for d in summary.diagnostics if store.REPAIR_DIR in d]
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('stamps', 'independent')]
