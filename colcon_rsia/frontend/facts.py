@@ -366,7 +366,7 @@ class TuFacts:
     package_errors: int = 0
     repair_rounds: int = 0
     # calls the unit's text shows that its parse lost (errors aside, what
-    # the facts may lack: see analysis._unrecorded_calls)
+    # the facts may lack: see repair_gains.unrecorded_calls)
     lost_calls: int = 0
     # [rule id, kind, name or place] of the unit's repairs (model mode)
     repairs: List[List[str]] = field(default_factory=list)

@@ -6,12 +6,10 @@ The event handler and ``colcon rsia analyze`` both call
 :func:`analyze_package`.
 """
 
-import collections
 import functools
 import glob
 import os
 import shutil
-import threading
 import time
 
 from colcon_rsia import __version__
@@ -33,7 +31,6 @@ from colcon_rsia.package.assembly import build_node
 from colcon_rsia.package.assembly import executable_nodes
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
-from colcon_rsia.package.call_sites import cxx_call_sites
 from colcon_rsia.package.call_sites import CXX_SOURCE_EXTENSIONS
 from colcon_rsia.package.node_facts import merge_facts
 from colcon_rsia.package.node_facts import select_functions
@@ -44,13 +41,12 @@ from colcon_rsia.package.nodes import find_plugins
 from colcon_rsia.package.nodes import skipped_executable
 from colcon_rsia.package.nodes import target_naming
 from colcon_rsia.package.nodes import TEXT_READER
+from colcon_rsia.package.repair_gains import unrecorded_calls
 from colcon_rsia.package.workers import check_stop
 from colcon_rsia.summary import store
 from colcon_rsia.summary import wrapper_store
 from colcon_rsia.summary.coverage import Coverage
 from colcon_rsia.summary.coverage import UnitCoverage
-from colcon_rsia.summary.kinds import ORIGIN_AST
-from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 from colcon_rsia.summary.package_summary import PackageSummary
 from colcon_rsia.summary.package_summary import Phases
@@ -337,56 +333,6 @@ def _model_entries(entries, path, workspace_package_dirs, stub_dir):
     return model_entries
 
 
-def _unrecorded_calls(tu, facts, package_path):
-    """How many calls of the unit the AST lost: what a repair may win.
-
-    The endpoint call sites of coverage (call_sites.py) in the unit's
-    source and the package headers it includes without a fact of the AST,
-    and the publish sites and timers read from tokens: where there is none,
-    repairing the unit pays nothing.
-    """
-    files = [tu.spelling] + [
-        i.include.name for i in tu.get_includes()
-        if i.include is not None and _inside(i.include.name, package_path)]
-    # a fact read from tokens is approximate (names as written, no types):
-    # the AST's is wanted
-    origins = collections.defaultdict(set)
-    coverage.fact_lines([facts], origins)
-    lines = collections.defaultdict(list)
-    for (file, role, line), found in origins.items():
-        if ORIGIN_AST in found:
-            lines[(file, role)].append(line)
-    missing = sum(1 for fact in facts.publish_sites + facts.timers
-                  if fact.origin == ORIGIN_TOKENS)
-    for file in dict.fromkeys(os.path.abspath(f) for f in files):
-        relative = os.path.relpath(file, package_path)
-        for line, role, _ in _call_sites_of(file):
-            if not any(abs(line - recorded) <= coverage.LINE_SLACK
-                       for recorded in lines.get((relative, role), ())):
-                missing += 1
-    return missing
-
-
-_call_sites = {}
-_call_sites_lock = threading.Lock()
-
-
-def _call_sites_of(path):
-    """The endpoint call sites a C++ file shows (read once per content)."""
-    try:
-        text = safe_files.read_text(path, errors='replace')
-    except OSError:
-        return []
-    key = (path, hash(text))
-    with _call_sites_lock:
-        found = _call_sites.get(key)
-    if found is None:
-        found = cxx_call_sites(text)
-        with _call_sites_lock:
-            _call_sites[key] = found
-    return found
-
-
 def _relative(path, directory):
     return os.path.relpath(path, directory) if _inside(path, directory) \
         else path
@@ -469,7 +415,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
         parsed = parse_unit(
             index, entry, parse=parse, resource_dir=resource_dir,
             package_path=package_path, relative=relative, facts_of=facts_of,
-            unrecorded=(lambda tu, facts: _unrecorded_calls(
+            unrecorded=(lambda tu, facts: unrecorded_calls(
                 tu, facts, package_path))
             if repair == REPAIR_WHEN_IT_PAYS else None,
             check_stop=check_stop, workspace_repairs=shared_repairs)
@@ -490,7 +436,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     # repair rounds counted it already when they ran)
     facts.lost_calls = 0 if not facts.package_errors else \
         parsed.lost_calls if parsed.lost_calls is not None else \
-        _unrecorded_calls(tu, facts, package_path)
+        unrecorded_calls(tu, facts, package_path)
     includes = sorted({
         os.path.abspath(i.include.name) for i in tu.get_includes()
         if i.include is not None} | set(pch_inputs if pch[0] else ()))
@@ -574,6 +520,7 @@ def build_summary(*, name, path, build_base, units, parsed=None):
                 f"{relative}: note: defines main() but {why}: node '{stem}' "
                 'named after the file')
     library = [u for f, u in units.items() if f not in executable_sources]
+    library_files = {unit.source for unit in library}
     # every unit: a nodelet's or plugin's class may call code its library
     # shares with an executable (one source built into both targets)
     merged_all = merge_facts(units.values())
@@ -603,7 +550,7 @@ def build_summary(*, name, path, build_base, units, parsed=None):
                       if f.name.rsplit('::', 1)[0] in hierarchy}
         nodes = executable_nodes(
             name, executable, sources, path, merged, seeds,
-            library_files={unit.source for unit in library})
+            library_files=library_files)
         if wraps is not None and len(nodes) == 1:
             nodes[0].plugin_class = wraps
             wrapped.add(wraps)
