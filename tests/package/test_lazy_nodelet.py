@@ -94,3 +94,24 @@ def test_a_lazy_nodelets_base_advertises_and_its_subscribe_runs(tmp_path):
     # every advertise and subscribe of the package is the nodelet's
     assert {(c.line, c.recorded) for c in summary.coverage.call_sites} == {
         (13, 'node'), (14, 'node'), (19, 'node')}
+
+
+def test_without_the_bases_header_the_tokens_name_its_topics(tmp_path):
+    # the exact mode uses the machine's headers: nodelet_topic_tools's is
+    # missing, the class has no base the parse knows, and the calls are
+    # read from tokens. `advertise` called on the nodelet itself is its
+    # base's (handle first, then topic), not a NodeHandle's
+    package = tmp_path / 'cloud'
+    (package / 'src').mkdir(parents=True)
+    for name, text in (('src/crop.cpp', NODELET_CPP),
+                       ('nodelets.xml', PLUGINS_XML),
+                       ('package.xml', PACKAGE_XML),
+                       ('CMakeLists.txt', CMAKE)):
+        (package / name).write_text(text)
+    summary = analysis.analyze_package(
+        name='cloud', path=str(package), build_base=str(tmp_path / 'build'),
+        jobs=1, header_mode='exact', workspace_package_dirs=[str(package)])
+    [node] = summary.nodes
+    assert sorted((p.topic, p.location) for p in node.publishers) == [
+        ('crop_status', 'src/crop.cpp:14'), ('output', 'src/crop.cpp:13')]
+    assert [s.topic for s in node.subscribers] == ['input']

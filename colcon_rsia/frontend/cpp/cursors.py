@@ -595,8 +595,13 @@ _POINTER_OF_CLASS = re.compile(
 
 def base_class_names(cursor):
     """The qualified names of a class's direct bases, without arguments."""
+    return base_class_names_of(cursor.get_children())
+
+
+def base_class_names_of(children):
+    """The qualified names of the base specifiers among `children`."""
     names = []
-    for child in cursor.get_children():
+    for child in children:
         if child.kind != CK.CXX_BASE_SPECIFIER:
             continue
         base = child.type.get_declaration()
@@ -605,6 +610,53 @@ def base_class_names(cursor):
         else:
             names.append(re.sub(r'<.*', '', child.type.spelling))
     return [name for name in names if name]
+
+
+def all_base_class_names(cursor, depth=8):
+    """The qualified names of a class's bases, theirs, and so on.
+
+    A base the parse could not declare (its header missing) is no base
+    specifier of the class: its name is read from the class's head.
+    """
+    names = set(written_base_names(cursor))
+    for child in cursor.get_children():
+        if child.kind != CK.CXX_BASE_SPECIFIER:
+            continue
+        names.update(base_class_names_of([child]))
+        base = child.type.get_declaration()
+        if depth and base is not None and base.kind in CLASS_KINDS:
+            names |= all_base_class_names(base, depth - 1)
+    return names
+
+
+def written_base_names(cursor):
+    """The base names a class's head writes (``class C : public ns::B<T>``).
+
+    Without template arguments; as written (the namespace may be left out).
+    """
+    head = []
+    for token in cursor.get_tokens():
+        if token.spelling == '{':
+            break
+        head.append(token.spelling)
+    names = []
+    depth = 0
+    current = None
+    for token in head:
+        depth += token.count('<') - token.count('>')
+        if depth:
+            continue
+        if token == ':' and current is None:
+            current = []
+        elif token == ',' and current is not None:
+            names.append(''.join(current))
+            current = []
+        elif current is not None and token not in (
+                'public', 'protected', 'private', 'virtual', '>'):
+            current.append(token)
+    if current:
+        names.append(''.join(current))
+    return [name.lstrip(':') for name in names if name]
 
 
 def aliased_class(cursor):

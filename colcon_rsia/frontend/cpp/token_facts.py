@@ -26,6 +26,7 @@ import clang.cindex as ci
 from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
+from colcon_rsia.frontend.cpp.cursors import all_base_class_names
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
 from colcon_rsia.frontend.cpp.cursors import walk_preorder
@@ -536,8 +537,30 @@ class _Reader(CallFacts):
             return (ros_api.RATE_SLEEP_BY_NAME[1] if self.ros2 else
                     ros_api.RATE_SLEEP_BY_NAME[0]) \
                 if handle in self.rate_handles else None
+        if not object_range:
+            # a call on the object itself: a method of its class's bases
+            # (`advertise<M>(*pnh_, "out", 1)` of a lazy nodelet base is
+            # no NodeHandle's `advertise("out", 1)`)
+            return self._api_of_bases(name) or \
+                self._api_by_name(name, arguments)
         return self._api_of_object_type(name, object_range) or \
             self._api_by_name(name, arguments)
+
+    def _api_of_bases(self, name):
+        """The API of a method of the bases of the function's class."""
+        owner = self.function_.owner if self.function_ else None
+        if owner is None:
+            return None
+        bases = all_base_class_names(owner)
+        # (a base the parse could not declare has the name it is written
+        # with, which may leave out its namespace)
+        short_bases = {base.rsplit('::', 1)[-1] for base in bases}
+        for candidate in ros_api.methods_named(name):
+            owner_class = candidate.rsplit('::', 1)[0]
+            if owner_class in bases or \
+                    owner_class.rsplit('::', 1)[-1] in short_bases:
+                return candidate
+        return None
 
     def _api_by_name(self, name, arguments):
         """The API of a method name, of the unit's ROS version first."""
