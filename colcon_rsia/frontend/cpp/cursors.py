@@ -9,12 +9,14 @@ of the API roles (:mod:`colcon_rsia.frontend.cpp.roles`) and the summaries
 of the workspace's wrappers (:mod:`colcon_rsia.frontend.cpp.wrappers`).
 """
 
+import os
 import re
 
 import clang.cindex as ci
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
 from colcon_rsia.frontend.cpp.const_eval import source_tokens
+from colcon_rsia.frontend.cpp.model_mode.stubs import CATCH_ALL_DIRS
 from colcon_rsia.frontend.facts import RETURNED_HANDLE
 from colcon_rsia.summary.kinds import UNKNOWN_NAMESPACE
 
@@ -488,6 +490,19 @@ def declared_in(declaration, loop):
 REPAIRED_PREFIX = 'rsia_model::'
 # the constructor the repaired classes inherit (`using Unknown::Unknown`)
 REPAIRED_CONSTRUCTOR = 'Unknown'
+
+
+def declared_by_catch_all(cursor):
+    """Whether the model mode's catch-alls declare it (repairs, stand-ins).
+
+    Such a declaration says nothing of what it declares but its name.
+    """
+    location = cursor.location
+    if location.file is None:
+        return False
+    path = location.file.name.replace(os.sep, '/')
+    return any(f'/{directory}/'.replace(os.sep, '/') in path
+               for directory in CATCH_ALL_DIRS)
 
 
 def repaired_call_name(call, ref):

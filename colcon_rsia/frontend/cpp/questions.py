@@ -161,16 +161,18 @@ def dependent_call_name(cursor, *, ros2):
         # member templates are static)
         inner = child_cursors(callee)
         callee = inner[0] if len(inner) == 1 else None
-    if callee is None or callee.kind != CK.MEMBER_REF_EXPR:
+    if callee is None or callee.kind not in (
+            CK.MEMBER_REF_EXPR, CK.DECL_REF_EXPR, CK.OVERLOADED_DECL_REF):
         return None
     # a dependent member has no spelling: the name follows `.`/`->`,
-    # or the last `::` of `Base::create_publisher<M>(…)` (this->)
+    # or the last `::` of `Base::create_publisher<M>(…)` (this->), or
+    # starts the callee (a member of the object itself, a function the
+    # model's catch-alls declare)
     tokens = [t.spelling for t in source_tokens(callee)]
     accesses = [i for i, t in enumerate(tokens) if t in ('.', '->')] or \
         top_level_scopes(tokens)
-    if not accesses:
-        return None
-    rest = [t for t in tokens[accesses[-1] + 1:] if t != 'template']
+    start = accesses[-1] + 1 if accesses else 0
+    rest = [t for t in tokens[start:] if t != 'template']
     if not rest:
         return None
     return ros_api.dependent_method(

@@ -40,6 +40,7 @@ from colcon_rsia.frontend.cpp.cursors import call_arguments
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
+from colcon_rsia.frontend.cpp.cursors import declared_by_catch_all
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
@@ -495,10 +496,13 @@ class _Walker:
                 ref.spelling == REPAIRED_CONSTRUCTOR:
             name = repaired_call_name(cursor, ref) or name
         api = ros_api.lookup_call(name)
-        if api is None and name.startswith(REPAIRED_PREFIX):
+        if api is None and (name.startswith(REPAIRED_PREFIX) or
+                            declared_by_catch_all(ref)):
             # a member of the model's catch-all value (`rviz_node->
             # create_subscription<M>(...)` on what an unknown base class
-            # holds): known by its name alone, as in a template
+            # holds), a function a repair declared (`create_publisher<M>(
+            # "plan", 1)` in a class whose base is unknown): known by its
+            # name alone, as in a template
             self._dependent_call(cursor, ctx, stack)
             return
         arguments = None

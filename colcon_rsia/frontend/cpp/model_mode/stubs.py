@@ -38,6 +38,11 @@ MAX_UP_LEVELS = 8
 
 
 UNKNOWN_DIR = os.path.join('rsia_model', 'unknown')
+# where each unit's repair header is (recovery/store.py)
+REPAIR_DIR = os.path.join('rsia_model', 'repair')
+# the catch-all declarations of the model mode: what is declared there
+# says nothing of its library but the name the code wrote
+CATCH_ALL_DIRS = (UNKNOWN_DIR, REPAIR_DIR)
 
 
 _lock = threading.Lock()

@@ -34,9 +34,9 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import OBJECT
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import STD_HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TEMPLATE_USE
 from colcon_rsia.frontend.cpp.model_mode.recovery.render import render
+from colcon_rsia.frontend.cpp.model_mode.stubs import REPAIR_DIR
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 
-REPAIR_DIR = os.path.join('rsia_model', 'repair')
 REPAIRS_SCHEMA = 'colcon-rsia/repairs@1'
 # the rule id of repairs a unit starts with, from its package's other units
 SEEDED = 'seeded'
