@@ -133,6 +133,13 @@ NH = 'ros::NodeHandle::'
 ACTIONLIB_SERVER_INPUTS = ('goal', 'cancel')
 
 
+# ROS 2: the callback a publisher's options hold that runs when a
+# subscription matches it or leaves (`options.event_callbacks.
+# matched_callback`): ROS 1's SubscriberStatusCallback, where a lazy node
+# makes its subscriptions
+PUBLISHER_MATCHED_CALLBACK = 'rclcpp::PublisherEventCallbacks::matched_callback'
+
+
 def _ros2_node_methods(prefix):
     """The create_* methods of rclcpp::Node and LifecycleNode."""
     return {

@@ -140,6 +140,21 @@ def first_handle(cursor):
     return None
 
 
+def holder_of_member(cursor):
+    """The variable or field a member expression starts from.
+
+    ``options.event_callbacks.matched_callback``: ``options``.
+    """
+    holder = None
+    for current in [cursor] + list(walk_preorder(
+            cursor, stop=frozenset({CK.LAMBDA_EXPR}))):
+        if current.kind in REF_KINDS:
+            ref = current.referenced
+            if ref is not None and ref.kind in HANDLE_KINDS:
+                holder = ref
+    return holder
+
+
 def handle_marker(obj, foreign=None, own=None):
     """The NodeHandle an object expression is: USR or namespace marker.
 

@@ -18,6 +18,7 @@ from colcon_rsia.frontend import fact_builder
 from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp import hosted
+from colcon_rsia.frontend.cpp.callbacks import CALLABLE_PREFIX
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
 from colcon_rsia.frontend.cpp.const_eval import is_chrono_duration
@@ -147,6 +148,12 @@ class RosRoles:
     def _on_publisher(self, cursor, ctx, stack, api, name, arguments):
         if self._wrapped_publisher(cursor, stack, api, arguments):
             return
+        # ROS 2: an options object passed along, whose matched callback
+        # (stored with it by the walker) runs as a connect callback
+        options_callbacks = [
+            CALLABLE_PREFIX + holder.get_usr() for holder in map(
+                first_handle, arguments)
+            if holder is not None] if self.places.ros2 else []
         typed, api, arguments = self._with_options(cursor, api, arguments)
         topic, literal = written_name(role_argument(arguments, api.name_arg))
         if topic is None and name.endswith('::init'):
@@ -160,7 +167,8 @@ class RosRoles:
         status_callbacks = [
             callback for position in api.status_callback_args
             for callback in [self.resolve_callback(
-                role_argument(arguments, position))[0]] if callback]
+                role_argument(arguments, position))[0]] if callback] + \
+            options_callbacks
         for common in self._endpoints(cursor, ctx, api, name, arguments,
                                       topic, literal, msg_type, target):
             fact_builder.add_publisher(

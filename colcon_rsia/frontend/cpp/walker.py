@@ -44,6 +44,7 @@ from colcon_rsia.frontend.cpp.cursors import declared_by_catch_all
 from colcon_rsia.frontend.cpp.cursors import explicit_template_type
 from colcon_rsia.frontend.cpp.cursors import first_handle
 from colcon_rsia.frontend.cpp.cursors import FUNCTION_KINDS
+from colcon_rsia.frontend.cpp.cursors import holder_of_member
 from colcon_rsia.frontend.cpp.cursors import holds_node_handle
 from colcon_rsia.frontend.cpp.cursors import initializer
 from colcon_rsia.frontend.cpp.cursors import is_logical
@@ -483,6 +484,14 @@ class _Walker:
             target = first_handle(children[0]) if children else None
             if target is not None and is_callable(target):
                 self.callbacks.store_callable(target, children[-1])
+                if qualified_name(target) == \
+                        ros_api.PUBLISHER_MATCHED_CALLBACK:
+                    # kept with the options object too: the publisher made
+                    # with it names it (roles._on_publisher)
+                    holder = holder_of_member(children[0])
+                    if holder is not None:
+                        self.callbacks.store_callable(
+                            holder, children[-1], consume=False)
             elif target is not None and len(children) > 1:
                 self.string_variables.assignment(target, children[-1])
         name = qualified_name(ref)
