@@ -527,6 +527,10 @@ METHODS_BY_NAME = {
     'create_service': (None, 'rclcpp::Node::create_service', 2),
     # a publisher of a template's message type (a wrapper's)
     'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish', 1),
+    # Qt's connect() called in a class whose QObject base the parse could
+    # not see (a widget class the model lacks); the handler keeps only a
+    # connection of QTimer's timeout() signal
+    'connect': ('QObject::connect', 'QObject::connect', 3),
 }
 # `rate.sleep()` on an object known to be a rate
 RATE_SLEEP_BY_NAME = ('ros::Rate::sleep', 'rclcpp::Rate::sleep')

@@ -325,3 +325,40 @@ def test_an_out_of_class_constructors_initializers_from_tokens(tmp_path):
     [timer] = facts.timers
     assert (_name(facts, timer.callback), timer.location) == (
         'mapping::Mapper::Draw', 'node.cpp:16')
+
+
+QT_TIMER_NODE = """\
+#include <QTimer>
+#include <QWidget>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Panel : public QWidget
+{
+public:
+  explicit Panel(ros::NodeHandle& nh)
+  {
+    pub_ = nh.advertise<std_msgs::String>("state", 1);
+    timer_ = new QTimer(this);
+    other_ = new QTimer(this);
+    connect(timer_, &QTimer::timeout, this, &Panel::tick);
+    connect(button_, &QPushButton::clicked, this, &Panel::tick);
+    timer_->start(1000 / 15);
+    other_->start(10);
+  }
+  void tick() { pub_.publish(std_msgs::String()); }
+  QTimer* timer_;
+  QTimer* other_;
+  QPushButton* button_;
+  ros::Publisher pub_;
+};
+"""
+
+
+def test_a_qtimer_connection_is_a_timer_at_its_start_interval(tmp_path):
+    facts = _facts(tmp_path, QT_TIMER_NODE)
+    # QTimer's timeout() only (a button's click is no clock), at the
+    # interval its own start() gives: 1000/15 ms
+    [timer] = facts.timers
+    assert (_name(facts, timer.callback), timer.origin, timer.location) == (
+        'Panel::tick', TOKENS, 'node.cpp:13')
+    assert timer.rate_hz == pytest.approx(15.0)

@@ -512,6 +512,7 @@ class _Reader(CallFacts):
             ros_api.RATE_SLEEP: self._rate_sleep,
             ros_api.NODE_NAME: self._node_name,
             ros_api.RATE: self._rate,
+            ros_api.SIGNAL_CONNECT: self._signal_connect,
         }.get(api.role)
         if handler is None:
             return

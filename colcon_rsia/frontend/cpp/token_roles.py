@@ -183,6 +183,45 @@ class CallFacts:
             rate_hz=recorder.rate_of_period(seconds), location=self._here(),
             origin=TOKENS)
 
+    def _signal_connect(self, arguments, ctx):
+        """``connect(timer_, &QTimer::timeout, this, &C::tick)``: a timer.
+
+        Only a connection of QTimer's timeout() signal, named by its
+        member pointer (the tokens know no sender's class). Its interval
+        is what ``start(ms)`` or ``setInterval(ms)`` on the same object
+        gives in this function; unknown otherwise.
+        """
+        if self._is_recorded('timer') or len(arguments) < 3:
+            return
+        signal = joined_text(self.tokens[slice(*arguments[1])])
+        if re.sub(r'\s+', '', signal).lstrip('&') != 'QTimer::timeout':
+            return
+        callback, _ = self._callback(
+            arguments[3] if len(arguments) > 3 else arguments[2], ctx)
+        if callback is None:
+            return
+        senders = [t.text for t in self.tokens[slice(*arguments[0])]
+                   if t.kind == 'IDENTIFIER']
+        period = self._qt_interval(senders[-1]) if senders else []
+        seconds = seconds_of(period)
+        fact_builder.add_timer(
+            self.facts, function=ctx.function, api='QTimer',
+            callback=callback, period=joined_text(period),
+            rate_hz=recorder.rate_of_period(
+                None if seconds is None else seconds * 0.001),
+            location=self._here(), origin=TOKENS)
+
+    def _qt_interval(self, timer):
+        """The tokens of the interval ``timer`` is started with, or []."""
+        tokens = self.tokens
+        for i in range(len(tokens) - 3):
+            if tokens[i].text == timer and \
+                    tokens[i + 1].text in ('->', '.') and \
+                    tokens[i + 2].text in ('start', 'setInterval') and \
+                    tokens[i + 3].text == '(' and i + 3 in self.pairs:
+                return tokens[i + 4:self.pairs[i + 3]]
+        return []
+
     def _service(self, arguments, ctx):
         if self._is_recorded('service'):
             return
