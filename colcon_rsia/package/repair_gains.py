@@ -83,8 +83,12 @@ def lost_constructions(tu, facts, package_path):
     broken = set()
     for cursor in _class_definitions(tu.cursor, errors):
         extent = cursor.extent
+        file = os.path.abspath(extent.start.file.name)
         if any(extent.start.offset <= offset <= extent.end.offset
-               for offset in errors[os.path.abspath(extent.start.file.name)]):
+               for offset in errors[file]) and \
+                _declares_constructor(file, extent, cursor.spelling):
+            # (a class without a constructor of its own is constructed by
+            # no call a fact could show)
             broken.add(cursor.spelling)
     if not broken:
         return set()
@@ -97,6 +101,17 @@ def lost_constructions(tu, facts, package_path):
     return {name for name in broken
             if _constructs(code, name) and not any(
                 _constructor(name).search(callee) for callee in called)}
+
+
+def _declares_constructor(file, extent, name):
+    """Whether a class's text declares a constructor (as written)."""
+    try:
+        text = safe_files.read_bytes(file)[
+            extent.start.offset:extent.end.offset].decode('latin-1')
+    except OSError:
+        return False
+    return re.search(
+        r'(?<![~\w])' + re.escape(name) + r'\s*\(', text) is not None
 
 
 def _class_definitions(cursor, files):
@@ -120,11 +135,22 @@ def _constructor(name):
 
 
 def _constructs(code, name):
+    """Whether code constructs class `name` (not: names it in a typedef)."""
     qualified = r'(?:[\w:]+::)?' + re.escape(name)
-    return re.search(
-        r'\b(?:make_shared|make_unique|allocate_shared)\s*<\s*' + qualified +
-        r'\s*[>,]|\bnew\s+' + qualified + r'\b|(?<![\w:<])' + qualified +
-        r'\s+\w+\s*[({;]', code) is not None
+    for match in re.finditer(
+            r'\b(?:make_shared|make_unique|allocate_shared)\s*<\s*' +
+            qualified + r'\s*[>,]|\bnew\s+' + qualified + r'\b|'
+            r'(?<![\w:<])' + qualified + r'\s+\w+\s*[({;]', code):
+        # `typedef ns::C C;`, `friend class C;`, `class C c_;`: a
+        # declaration, or a member whose construction is the class's own
+        before = code[max(0, match.start() - 40):match.start()].split()
+        if not before or before[-1] not in _NOT_A_CONSTRUCTION:
+            return True
+    return False
+
+
+_NOT_A_CONSTRUCTION = frozenset({
+    'typedef', 'friend', 'class', 'struct', 'using', 'extern'})
 
 
 _call_sites = {}
