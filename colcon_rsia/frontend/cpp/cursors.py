@@ -140,6 +140,23 @@ def first_handle(cursor):
     return None
 
 
+def ranged_container(variable, stack):
+    """The container a range-for loop's variable is an element of, or None.
+
+    ``for (auto& pub : pubs_) pub.publish(m);`` publishes through the
+    publishers ``pubs_`` holds. `stack` holds the cursors around the use.
+    """
+    if variable is None or variable.kind != CK.VAR_DECL:
+        return None
+    for parent in reversed(stack):
+        if getattr(parent, 'kind', None) != CK.CXX_FOR_RANGE_STMT:
+            continue
+        children = list(parent.get_children())
+        if len(children) > 1 and same_cursor(children[0], variable):
+            return first_handle(children[1])
+    return None
+
+
 def holder_of_member(cursor):
     """The variable or field a member expression starts from.
 

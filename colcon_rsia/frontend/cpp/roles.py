@@ -36,6 +36,7 @@ from colcon_rsia.frontend.cpp.cursors import is_node_handle
 from colcon_rsia.frontend.cpp.cursors import is_string
 from colcon_rsia.frontend.cpp.cursors import normalize_msg_type
 from colcon_rsia.frontend.cpp.cursors import qualified_name
+from colcon_rsia.frontend.cpp.cursors import ranged_container
 from colcon_rsia.frontend.cpp.cursors import role_argument
 from colcon_rsia.frontend.cpp.cursors import same_cursor
 from colcon_rsia.frontend.cpp.cursors import template_member
@@ -568,6 +569,7 @@ class RosRoles:
 
     def _on_publish(self, cursor, ctx, stack, api, name, arguments):
         handle = first_handle(call_object(cursor))
+        handle = ranged_container(handle, stack) or handle
         record_publish_site(
             self.facts, self.places.location, ctx, stack, cursor, name,
             handle.get_usr() if handle is not None else None)

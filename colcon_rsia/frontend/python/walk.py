@@ -15,6 +15,7 @@ from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.python.helpers import Helpers
 from colcon_rsia.frontend.python.params import Params
 from colcon_rsia.frontend.python.roles import Roles
+from colcon_rsia.frontend.python.scopes import FUNCTION_NODES
 from colcon_rsia.frontend.python.scopes import lookup
 from colcon_rsia.frontend.python.scopes import MODULE_FUNCTION
 from colcon_rsia.frontend.python.scopes import own_children
@@ -394,7 +395,30 @@ class _Extractor(Roles, Params, Helpers):
     def _object_handle(self, expr, context):
         if isinstance(expr, ast.Call):
             return self.synthetic(expr)
+        container = self._iterated(expr)
+        if container is not None:
+            return self._object_handle(container, context)
         return self.project.handle(expr, context.scope)
+
+    def _iterated(self, expr):
+        """The container a loop variable is an element of, or None.
+
+        ``for pub in self.pubs: pub.publish(m)`` publishes through the
+        publishers ``self.pubs`` holds; so do ``for name, pub in
+        self.pubs.items()`` and ``for i, pub in enumerate(self.pubs)``.
+        """
+        if not isinstance(expr, ast.Name):
+            return None
+        parent = self.module.parents.get(id(expr))
+        while parent is not None:
+            if isinstance(parent, (ast.For, ast.AsyncFor)):
+                found = _element_of(parent.target, parent.iter, expr.id)
+                if found is not None:
+                    return found
+            if isinstance(parent, FUNCTION_NODES + (ast.ClassDef,)):
+                return None
+            parent = self.module.parents.get(id(parent))
+        return None
 
     def _receiver(self, node, context):
         """The handle of the object a method is called on."""
@@ -634,3 +658,23 @@ _ROLES = {
     python_api.SERVICE_CLIENT: _Extractor._on_service_client,
     ros_api.PARAM_READ: _Extractor._on_param_read,
 }
+
+
+def _element_of(target, iterated, name):
+    """The container whose elements a loop's `target` binds `name` to."""
+    if isinstance(target, ast.Name):
+        return iterated if target.id == name else None
+    if not isinstance(target, (ast.Tuple, ast.List)) or \
+            len(target.elts) != 2 or not isinstance(iterated, ast.Call):
+        return None
+    second = target.elts[1]
+    if not isinstance(second, ast.Name) or second.id != name:
+        return None
+    function = iterated.func
+    # enumerate(pubs), pubs.items()
+    if isinstance(function, ast.Name) and function.id == 'enumerate' and \
+            iterated.args:
+        return iterated.args[0]
+    if isinstance(function, ast.Attribute) and function.attr == 'items':
+        return function.value
+    return None
