@@ -412,3 +412,32 @@ def test_a_handle_a_package_function_returns_is_the_one_it_returns(
     assert by_topic['joint_states'].namespace.startswith('?')
     # handle() returns nh_, made in the namespace "arm"
     assert by_topic['grip'].namespace == 'arm'
+
+
+LITERAL_PARTS = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+void onCommand(const std_msgs::String::ConstPtr&) {}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "literal_parts");
+  ros::NodeHandle nh;
+  ros::Subscriber command = nh.subscribe(
+      ros::names::append("controller", "command"), 1, onCommand);
+  ros::Publisher state = nh.advertise<std_msgs::String>(
+      std::string("arm") + "/state", 1);
+  ros::spin();
+}
+"""
+
+
+def test_names_joined_from_literals_only_are_names(tmp_path):
+    summary = analyze_source(tmp_path, 'parts', LITERAL_PARTS)
+    [node] = summary.nodes
+    assert [(s.topic, s.topic_is_literal) for s in node.subscribers] == [
+        ('controller/command', True)]
+    assert [(p.topic, p.topic_is_literal) for p in node.publishers] == [
+        ('arm/state', True)]

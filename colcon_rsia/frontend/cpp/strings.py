@@ -299,12 +299,13 @@ class StringVariables:
 
         ``ns + "/pose"``, ``std::string("~") + name``,
         ``ros::names::append(ns, "pose")``: when every string variable in
-        it is set only to one literal (see resolve).
+        it is set only to one literal (see resolve); joined from literals
+        only (``ros::names::append("arm", "command")``), at once.
         """
         if literal or not facts or argument is None:
             return
         parts = string_parts(argument)
-        if parts and any(kind == 'variable' for kind, _ in parts):
+        if parts:
             self._concatenated.append((facts[0], parts))
 
 
