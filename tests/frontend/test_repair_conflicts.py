@@ -61,3 +61,22 @@ def test_a_repair_conflicting_with_a_typedef_is_withdrawn(
     [node] = summary.nodes
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('stamps', 'independent')]
+
+
+def test_a_withdrawn_repair_is_offered_no_more(tmp_path):
+    repair_dir = tmp_path / 'pkg' / store.REPAIR_DIR
+    repair_dir.mkdir(parents=True)
+    workspace = store.WorkspaceRepairs(str(tmp_path / 'workspace.json'),
+                                       set())
+    first = str(repair_dir / 'first.h')
+    store.share_repairs(first, {
+        ('type', 'std_msgs::Header'), ('type', 'gizmo::Lens')}, workspace)
+    # a unit including the message's header rejected the class
+    store.withdraw_shared(first, {('type', 'std_msgs::Header')}, workspace)
+    # a unit seeded before shares what it started with: not that one
+    store.share_repairs(first, {('type', 'std_msgs::Header')}, workspace)
+
+    later = str(repair_dir / 'later.h')
+    store.ensure_repair_header(later, 'src/later.cpp')
+    store.seed_repairs(later, 'src/later.cpp', set(), workspace)
+    assert store.read_repairs(later) == {('type', 'gizmo::Lens')}

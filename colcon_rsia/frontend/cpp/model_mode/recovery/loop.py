@@ -209,6 +209,7 @@ class _Repairing:
                 # declares as a typedef, a package's other unit's name)
                 # breaks the unit's own code: withdrawn, whatever it costs
                 withdrawn |= conflicting
+                store.withdraw_shared(self.header, conflicting, self.workspace)
                 records = store.read_records(self.header)
                 store.write_records(self.header, self.relative, {
                     r: rule for r, rule in records.items()

@@ -166,14 +166,41 @@ def share_repairs(header, repairs, workspace=None):
                 not is_declared(r[1], workspace.declared))})
 
 
+def withdraw_shared(header, repairs, workspace=None):
+    """Offer these repairs no more: clang rejected them in a unit.
+
+    A repair that conflicted with a real declaration a unit includes is a
+    guess proven wrong where that declaration is in reach; the units
+    parsed later do not start with it (one that needs it finds it again).
+    """
+    paths = [os.path.join(os.path.dirname(header), SHARED_REPAIRS)] + (
+        [workspace.path] if workspace is not None else [])
+    for path in paths:
+        with _shared_lock, safe_files.directory_lock(os.path.dirname(path)):
+            _write_shared(path, _read_shared(path) - set(repairs))
+            # (and never offered again: a unit seeded with it before would
+            # share it back)
+            _write_shared(_withdrawn_path(path),
+                          _read_shared(_withdrawn_path(path)) | set(repairs))
+
+
+def _withdrawn_path(path):
+    return os.path.splitext(path)[0] + '.withdrawn.json'
+
+
+def _write_shared(path, repairs):
+    write_atomically(path, json.dumps(sorted(
+        [kind, name] for kind, name in repairs)) + '\n')
+
+
 def _offer(path, offered):
     # the units are parsed in several processes (and packages, at the same
     # time, under a parallel build)
     with _shared_lock, safe_files.directory_lock(os.path.dirname(path)):
         known = _read_shared(path)
+        offered = offered - _read_shared(_withdrawn_path(path))
         if not offered <= known:
-            write_atomically(path, json.dumps(sorted(
-                [kind, name] for kind, name in known | offered)) + '\n')
+            _write_shared(path, known | offered)
 
 
 def seed_repairs(header, source, declared, workspace=None):
