@@ -5,7 +5,6 @@
 from dataclasses import dataclass
 from dataclasses import field
 import os
-import re
 import threading
 from typing import Optional
 
@@ -13,6 +12,7 @@ from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.recovery import applied
 from colcon_rsia.frontend.cpp.model_mode.recovery import edits
+from colcon_rsia.frontend.cpp.model_mode.recovery import messages
 from colcon_rsia.frontend.cpp.model_mode.recovery import overlay
 from colcon_rsia.frontend.cpp.model_mode.recovery import render
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
@@ -39,9 +39,6 @@ MAX_REPAIR_ROUNDS = 4
 # the source files whose declarations a unit never repairs
 CXX_FILES = ('.cpp', '.cc', '.cxx', '.c++', '.C', '.h', '.hh', '.hpp',
              '.hxx', '.h++', '.ipp')
-# clang's errors about a name declared twice, whose notes point at the
-# other declaration
-_CONFLICT = re.compile(r'redefinition|conflicts with|redeclared|different kind')
 SKIPPED_DIRECTORIES = frozenset({
     'test', 'tests', 'build', 'install', 'devel', 'log', 'CMakeFiles'})
 
@@ -260,7 +257,7 @@ class _Repairing:
         """
         header = os.path.abspath(self.header)
         return {line for _, file, line, _, notes
-                in errors_with_notes(tu, _CONFLICT.search)
+                in errors_with_notes(tu, messages.REDECLARED.search)
                 for file, line in [(file, line)] + [
                     (at, number) for _, at, number, _ in notes]
                 if file and os.path.abspath(file) == header} | {

@@ -10,6 +10,10 @@ class has, a macro used as a statement.
 import re
 
 UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'")
+# a name declared twice: the error's note points at the other declaration
+# (a repair's class, then a header's typedef of the same name)
+REDECLARED = re.compile(
+    r'redefinition|conflicts with|redeclared|different kind')
 UNKNOWN_TYPE = re.compile(r"^unknown type name '(\w+)'")
 UNKNOWN_TEMPLATE = re.compile(
     r"^unknown template name '(\w+)'|^no template named '(\w+)'$")
