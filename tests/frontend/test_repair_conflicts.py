@@ -80,3 +80,30 @@ def test_a_withdrawn_repair_is_offered_no_more(tmp_path):
     store.ensure_repair_header(later, 'src/later.cpp')
     store.seed_repairs(later, 'src/later.cpp', set(), workspace)
     assert store.read_repairs(later) == {('type', 'gizmo::Lens')}
+
+
+POINTER_CLASS = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <vision/filters.h>
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "equalizer");
+  ros::NodeHandle nh;
+  // a library the machine lacks, whose smart pointer is a class `Ptr`
+  vision::Ptr<vision::Equalizer> equalizer = vision::createEqualizer(2.0);
+  ros::Publisher out = nh.advertise<std_msgs::String>("equalized", 1);
+  ros::spin();
+}
+"""
+
+
+def test_a_catch_all_class_named_like_a_pointer_alias_compiles(tmp_path):
+    summary = analyze_source(tmp_path, 'equalizer', POINTER_CLASS)
+    # `vision::Ptr` is declared by the model mode (a stand-in of the
+    # unknown namespace, or a repair): a class `Ptr` with a member `Ptr`
+    # is no C++, and what the model mode writes must compile
+    assert not [d for d in summary.diagnostics
+                if f'{RSIA_DIRNAME}/stubs/' in d]
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['equalized']

@@ -472,16 +472,22 @@ def catch_all_class(name, *, head='', members=()):
     # would tie between the class's and the base's. Made from an Unknown
     # too (`Filter<P>::PointCloud`, repaired as one): C++ takes no
     # inherited constructor for that
+    # its pointer types by ROS convention, its own (see
+    # rsia_model::UnknownPointer); not one of its own name (a class `Ptr`,
+    # `cv::Ptr`: C++ forbids a member named as its class)
+    pointers = [
+        (alias, f'  using {alias} = {target};') for alias, target in (
+            ('Ptr', f'::rsia_model::UnknownPointer<{name}>'),
+            ('ConstPtr', f'::rsia_model::UnknownPointer<const {name}>'),
+            ('SharedPtr', f'::rsia_model::UnknownPointer<{name}>'),
+            ('ConstSharedPtr',
+             f'::rsia_model::UnknownPointer<const {name}>'))]
     return [f'{head}struct {name} : ::rsia_model::Unknown', '{',
             '  using ::rsia_model::Unknown::Unknown;',
             f'  {name}() = default;',
             f'  {name}(const ::rsia_model::Unknown&);',
             f'  template <class RsiaV> {name}& operator=(RsiaV&&);',
-            # its pointer types by ROS convention, its own (see
-            # rsia_model::UnknownPointer)
-            f'  using Ptr = ::rsia_model::UnknownPointer<{name}>;',
-            f'  using ConstPtr = ::rsia_model::UnknownPointer<const {name}>;',
-            '  using SharedPtr = Ptr;', '  using ConstSharedPtr = ConstPtr;',
+            *[line for alias, line in pointers if alias != name],
             *members, '};']
 
 
