@@ -509,6 +509,7 @@ NODELET_INIT_METHOD = 'onInit'
 # other library of the ROS world names so, and only with at least as many
 # arguments as the ROS API takes (a serial protocol's `subscribe(rate)` is
 # no subscription): name -> (ROS 1 API, ROS 2 API, fewest arguments)
+QT_CONNECT = 'QObject::connect'
 METHODS_BY_NAME = {
     'advertise': ('ros::NodeHandle::advertise', None, 2),
     'subscribe': ('ros::NodeHandle::subscribe', None, 3),
@@ -528,9 +529,10 @@ METHODS_BY_NAME = {
     # a publisher of a template's message type (a wrapper's)
     'publish': ('ros::Publisher::publish', 'rclcpp::Publisher::publish', 1),
     # Qt's connect() called in a class whose QObject base the parse could
-    # not see (a widget class the model lacks); the handler keeps only a
-    # connection of QTimer's timeout() signal
-    'connect': ('QObject::connect', 'QObject::connect', 3),
+    # not see (a widget class the model lacks): only a connection of
+    # QTimer's timeout() signal is taken for it (any other `connect` may be
+    # the package's own)
+    'connect': (QT_CONNECT, QT_CONNECT, 3),
 }
 # `rate.sleep()` on an object known to be a rate
 RATE_SLEEP_BY_NAME = ('ros::Rate::sleep', 'rclcpp::Rate::sleep')

@@ -354,6 +354,37 @@ public:
 """
 
 
+PACKAGE_CONNECT = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Link
+{
+public:
+  explicit Link(ros::NodeHandle& nh) : nh_(nh)
+  {
+    connect(host_, 8080, 1.5);
+  }
+  void connect(const std::string& host, int port, double timeout)
+  {
+    status_ = nh_.advertise<std_msgs::String>("link_status", 1);
+  }
+  ros::NodeHandle nh_;
+  ros::Publisher status_;
+  std::string host_;
+};
+"""
+
+
+def test_a_packages_own_connect_is_no_qt_connection(tmp_path):
+    facts = _facts(tmp_path, PACKAGE_CONNECT)
+    # `connect` by its name is Qt's only with QTimer's timeout(): this one
+    # is the class's own method, which the constructor calls
+    assert facts.timers == []
+    calls = {(_name(facts, c.caller), _name(facts, c.callee))
+             for c in facts.calls}
+    assert ('Link::Link', 'Link::connect') in calls
+
+
 def test_a_qtimer_connection_is_a_timer_at_its_start_interval(tmp_path):
     facts = _facts(tmp_path, QT_TIMER_NODE)
     # QTimer's timeout() only (a button's click is no clock), at the

@@ -35,6 +35,7 @@ from colcon_rsia.frontend import recorder
 from colcon_rsia.frontend import ros_api
 from colcon_rsia.frontend.cpp.const_eval import evaluate_number
 from colcon_rsia.frontend.cpp.const_eval import evaluate_period_seconds
+from colcon_rsia.frontend.cpp.cursors import call_arguments
 from colcon_rsia.frontend.cpp.cursors import call_object
 from colcon_rsia.frontend.cpp.cursors import child_cursors
 from colcon_rsia.frontend.cpp.cursors import CLASS_KINDS
@@ -253,6 +254,18 @@ class OtherClocks:
         rates = {hz for _, hz in periods}
         text = ' | '.join(written for written, _ in periods)
         return text, rates.pop() if len(rates) == 1 else None
+
+
+def connects_timer(cursor):
+    """Whether a connect() call names QTimer's timeout() signal.
+
+    A `connect` known by its name alone (its class unknown to the parse)
+    is Qt's only then; any other is left to be what the package's code
+    makes of it.
+    """
+    arguments = call_arguments(cursor)
+    return len(arguments) >= 3 and _is_timeout(
+        arguments[1], expression_text(cursor))
 
 
 def _is_timeout(signal, written):

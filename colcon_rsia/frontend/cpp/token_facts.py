@@ -494,6 +494,9 @@ class _Reader(CallFacts):
                 self._call_edge(ctx, constructor, start)
             return
         api_name = self._api(name, qualifier, object_range, len(arguments))
+        if api_name == ros_api.QT_CONNECT and 'QTimer::timeout' not in \
+                joined_text(tokens[opening:closing]).replace(' ', ''):
+            api_name = None  # a `connect` of the package's own, maybe
         if api_name is None:
             if i > 0 and tokens[i - 1].text == 'new':
                 for constructor in self._constructors(

@@ -537,7 +537,8 @@ class _Walker:
         whose type the model mode could not know (a catch-all).
         """
         name = dependent_call_name(cursor, ros2=self.places.ros2)
-        if name is None:
+        if name is None or name == ros_api.QT_CONNECT and \
+                not clocks.connects_timer(cursor):
             return
         self._note_resolved(cursor)
         api = ros_api.lookup_call(name)
