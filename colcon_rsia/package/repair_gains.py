@@ -19,9 +19,6 @@ from colcon_rsia.package.call_sites import cxx_call_sites
 from colcon_rsia.summary.kinds import ORIGIN_AST
 from colcon_rsia.summary.kinds import ORIGIN_TOKENS
 
-_COMMENT_OR_LITERAL = re.compile(
-    r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.DOTALL)
-
 
 def unrecorded_calls(tu, facts, package_path):
     """How many calls of the unit the AST lost: what a repair may win.
@@ -70,6 +67,8 @@ def lost_constructions(tu, facts, package_path):
     # (imported here: analysis.py, which imports this module, is used
     # without libclang where nothing is parsed)
     import clang.cindex as ci
+    from colcon_rsia.frontend.cpp.model_mode.source_names import \
+        COMMENT_OR_STRING
     main = os.path.abspath(tu.spelling)
     errors = collections.defaultdict(list)
     for diagnostic in tu.diagnostics:
@@ -93,14 +92,14 @@ def lost_constructions(tu, facts, package_path):
     if not broken:
         return set()
     try:
-        code = _COMMENT_OR_LITERAL.sub(' ', safe_files.read_text(
+        code = COMMENT_OR_STRING.sub(' ', safe_files.read_text(
             main, errors='replace'))
     except OSError:
         return set()
     called = [call.callee for call in facts.calls]
     return {name for name in broken
-            if _constructs(code, name) and not any(
-                _constructor(name).search(callee) for callee in called)}
+            if _constructs(code, name) and not _reaches_constructor(
+                called, name)}
 
 
 def _declares_constructor(file, extent, name):
@@ -128,10 +127,11 @@ def _class_definitions(cursor, files):
             yield child
 
 
-def _constructor(name):
-    """The USR of a constructor of class (or class template) `name`."""
+def _reaches_constructor(callees, name):
+    """Whether a callee is a constructor of class (or template) `name`."""
     name = re.escape(name)
-    return re.compile(rf'@S(?:T>[^@]*)?@{name}@F@{name}#')
+    constructor = re.compile(rf'@S(?:T>[^@]*)?@{name}@F@{name}#')
+    return any(constructor.search(callee) for callee in callees)
 
 
 def _constructs(code, name):
@@ -174,4 +174,4 @@ def _call_sites_of(path):
 
 
 def _inside(file, directory):
-    return os.path.abspath(file).startswith(directory.rstrip('/') + '/')
+    return safe_files.is_inside(os.path.abspath(file), directory)
