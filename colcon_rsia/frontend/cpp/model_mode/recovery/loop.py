@@ -195,12 +195,14 @@ class _Repairing:
                                self.workspace)
         tu, facts, missing = self.parse()
         errors = self.own_errors(tu)
+        header_lines = self.header_error_lines(tu)
         records = store.read_records(self.header)
-        best = (self.score(tu, missing, errors), 0, tu, facts, records)
+        best = (self.score(missing, errors, header_lines), 0, tu, facts,
+                records)
         rounds = 0
         withdrawn = set()
         while rounds < MAX_REPAIR_ROUNDS:
-            conflicting = self.conflicting(tu)
+            conflicting = self.conflicting(header_lines)
             if conflicting:
                 # a repair clang rejected (a type a header included later
                 # declares as a typedef, a package's other unit's name)
@@ -226,7 +228,8 @@ class _Repairing:
             rounds += 1
             tu, facts, missing = self.parse()
             errors = self.own_errors(tu)
-            score = self.score(tu, missing, errors)
+            header_lines = self.header_error_lines(tu)
+            score = self.score(missing, errors, header_lines)
             if score < best[0]:
                 best = (score, rounds, tu, facts,
                         store.read_records(self.header))
@@ -240,13 +243,14 @@ class _Repairing:
         return ParsedUnit(tu, facts, rounds, records,
                           lost_calls if self.unrecorded else None)
 
-    def score(self, tu, missing, errors):
+    @staticmethod
+    def score(missing, errors, header_lines):
         """Which parse is kept: the lowest score wins.
 
         The fewest calls without a fact, then the fewest errors in the
         workspace's code and in the repair header.
         """
-        return missing or 0, len(errors) + len(self.header_error_lines(tu))
+        return missing or 0, len(errors) + len(header_lines)
 
     def header_error_lines(self, tu):
         """The repair header's lines an error is on, or its note points at.
@@ -264,13 +268,16 @@ class _Repairing:
             line for _, file, line, _ in error_diagnostics(tu)
             if file and os.path.abspath(file) == header}
 
-    def conflicting(self, tu):
-        """The unit's repairs whose declarations clang reports errors in."""
-        lines = self.header_error_lines(tu)
-        if not lines:
+    def conflicting(self, header_lines):
+        """The unit's repairs whose declarations clang reports errors in.
+
+        :param header_lines: the repair header's lines of the parse's
+          errors (:meth:`header_error_lines`)
+        """
+        if not header_lines:
             return set()
         return render.repairs_at(store.read_repairs(self.header),
-                                 self.relative, lines)
+                                 self.relative, header_lines)
 
     def repairs(self, tu, errors):
         """{(kind, name): rule id} of the declarations and edits to add."""
