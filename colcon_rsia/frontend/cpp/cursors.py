@@ -9,6 +9,7 @@ of the API roles (:mod:`colcon_rsia.frontend.cpp.roles`) and the summaries
 of the workspace's wrappers (:mod:`colcon_rsia.frontend.cpp.wrappers`).
 """
 
+import itertools
 import os
 import re
 
@@ -126,18 +127,24 @@ def walk_preorder(cursor, stop=LOOP_KINDS - LOOP_KINDS):
             todo.extend(child_cursors(current)[::-1])
 
 
+def _named_handles(cursor):
+    """The variables/fields/parameters an expression names, in preorder.
+
+    Not those inside a lambda it holds.
+    """
+    for current in itertools.chain([cursor], walk_preorder(
+            cursor, stop=frozenset({CK.LAMBDA_EXPR}))):
+        if current.kind in REF_KINDS:
+            ref = current.referenced
+            if ref is not None and ref.kind in HANDLE_KINDS:
+                yield ref
+
+
 def first_handle(cursor):
     """The variable/field/parameter an object expression starts from."""
     if cursor is None:
         return None
-    candidates = [cursor] + list(walk_preorder(
-        cursor, stop=frozenset({CK.LAMBDA_EXPR})))
-    for current in candidates:
-        if current.kind in REF_KINDS:
-            ref = current.referenced
-            if ref is not None and ref.kind in HANDLE_KINDS:
-                return ref
-    return None
+    return next(_named_handles(cursor), None)
 
 
 def ranged_container(variable, stack):
@@ -160,15 +167,12 @@ def ranged_container(variable, stack):
 def holder_of_member(cursor):
     """The variable or field a member expression starts from.
 
-    ``options.event_callbacks.matched_callback``: ``options``.
+    ``options.event_callbacks.matched_callback``: ``options``, the last
+    one it names (:func:`first_handle` gives the member, the first).
     """
     holder = None
-    for current in [cursor] + list(walk_preorder(
-            cursor, stop=frozenset({CK.LAMBDA_EXPR}))):
-        if current.kind in REF_KINDS:
-            ref = current.referenced
-            if ref is not None and ref.kind in HANDLE_KINDS:
-                holder = ref
+    for holder in _named_handles(cursor):
+        pass
     return holder
 
 
