@@ -65,7 +65,8 @@ add_library(cloud src/crop.cpp)
 """
 
 
-def test_a_lazy_nodelets_base_advertises_and_its_subscribe_runs(tmp_path):
+def _analyze(tmp_path, header_mode):
+    """The nodelet package written under `tmp_path`, analysed unbuilt."""
     package = tmp_path / 'cloud'
     (package / 'src').mkdir(parents=True)
     for name, text in (('src/crop.cpp', NODELET_CPP),
@@ -73,9 +74,14 @@ def test_a_lazy_nodelets_base_advertises_and_its_subscribe_runs(tmp_path):
                        ('package.xml', PACKAGE_XML),
                        ('CMakeLists.txt', CMAKE)):
         (package / name).write_text(text)
-    summary = analysis.analyze_package(
+    return analysis.analyze_package(
         name='cloud', path=str(package), build_base=str(tmp_path / 'build'),
-        jobs=1, header_mode='model', workspace_package_dirs=[str(package)])
+        jobs=1, header_mode=header_mode,
+        workspace_package_dirs=[str(package)])
+
+
+def test_a_lazy_nodelets_base_advertises_and_its_subscribe_runs(tmp_path):
+    summary = _analyze(tmp_path, 'model')
     [node] = summary.nodes
     assert node.id == 'cloud/Crop'
     by_topic = {p.topic: p for p in node.publishers}
@@ -101,16 +107,7 @@ def test_without_the_bases_header_the_tokens_name_its_topics(tmp_path):
     # missing, the class has no base the parse knows, and the calls are
     # read from tokens. `advertise` called on the nodelet itself is its
     # base's (handle first, then topic), not a NodeHandle's
-    package = tmp_path / 'cloud'
-    (package / 'src').mkdir(parents=True)
-    for name, text in (('src/crop.cpp', NODELET_CPP),
-                       ('nodelets.xml', PLUGINS_XML),
-                       ('package.xml', PACKAGE_XML),
-                       ('CMakeLists.txt', CMAKE)):
-        (package / name).write_text(text)
-    summary = analysis.analyze_package(
-        name='cloud', path=str(package), build_base=str(tmp_path / 'build'),
-        jobs=1, header_mode='exact', workspace_package_dirs=[str(package)])
+    summary = _analyze(tmp_path, 'exact')
     [node] = summary.nodes
     assert sorted((p.topic, p.location) for p in node.publishers) == [
         ('crop_status', 'src/crop.cpp:14'), ('output', 'src/crop.cpp:13')]
