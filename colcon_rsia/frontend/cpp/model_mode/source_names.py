@@ -54,8 +54,15 @@ _CONSTANT = re.compile(
 # the type of a ROS 2 message field: DiagnosticStatus::_level_type
 _FIELD_TYPE = re.compile(r'::\s*(_[a-z][a-z0-9_]*_type)\b')
 _MSGS_TYPE = re.compile(r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*([A-Z][A-Za-z0-9]*)\b')
+# ROS 2: any package's interfaces live in its `msg`, `srv` and `action`
+# namespaces (rosidl), whatever the package's name: builtin_interfaces,
+# a driver's own messages
 _ROS2_MSGS_TYPE = re.compile(
-    r'\b([a-z][a-z0-9_]*_msgs)\s*::\s*msg\s*::\s*([A-Z][A-Za-z0-9]*)\b')
+    r'\b([a-z][a-z0-9_]*)\s*::\s*(msg|srv|action)\s*::'
+    r'\s*([A-Z][A-Za-z0-9]*)\b')
+# the outermost name of a namespace the code opens: its own, never a
+# message package's (`namespace can::msg {` of a hand-written library)
+_OPENED_NAMESPACE = re.compile(r'\bnamespace\s+([A-Za-z_]\w*)\s*(?:\{|::)')
 # classes of *_msgs packages the model headers declare: no messages
 _NOT_MESSAGES = frozenset(
     ('PointCloud2Iterator', 'PointCloud2ConstIterator', 'PointCloud2Modifier'))
@@ -162,8 +169,11 @@ def code_only(text):
 def used_names(codes):
     """The names the stand-ins' catch-all members must have.
 
-    :returns: (members, constants, field types, {pkg: {include}} of *_msgs
-      types, member templates, members used as values). The include is the
+    :returns: (members, constants, field types, {pkg: {include}} of the
+      message types (ROS 1: of *_msgs packages; ROS 2: every `pkg::msg::`,
+      `::srv::` and `::action::` type but in namespaces the code opens),
+      member templates, members used as
+      values). The include is the
       message's header: ``std_msgs/Header.h`` (ROS 1) or
       ``std_msgs/msg/header.hpp`` (ROS 2).
     """
@@ -173,6 +183,8 @@ def used_names(codes):
     msgs_types = {}
     templates = set()
     values = set()
+    opened = {m.group(1) for code in codes
+              for m in _OPENED_NAMESPACE.finditer(code)}
     for code in codes:
         code = _TRAILING_RETURN.sub(r'\1  ', code)
         members.update(m.group(1) for m in _MEMBER.finditer(code))
@@ -193,8 +205,11 @@ def used_names(codes):
                 msgs_types.setdefault(m.group(1), set()).add(
                     f'{m.group(1)}/{name}.h')
         for m in _ROS2_MSGS_TYPE.finditer(code):
-            msgs_types.setdefault(m.group(1), set()).add(
-                f'{m.group(1)}/msg/{snake_case(m.group(2))}.hpp')
+            package, kind, name = m.groups()
+            if package in opened:
+                continue
+            msgs_types.setdefault(package, set()).add(
+                f'{package}/{kind}/{snake_case(name)}.hpp')
     # an ALL_CAPS name is a message's constant, also where the code reads
     # it through an object (`filter.UNKNOWN` beside `Label::UNKNOWN`): a
     # static member takes both

@@ -66,12 +66,15 @@ def write_stand_ins(scanner, codes, stub_dir):
     implicit = []
     for package, includes in sorted(msgs_types.items()):
         for include in sorted(includes):
+            # every message the code names, included or not: the real
+            # message headers include their fields' types, so code may
+            # name one before its own include of it, or with none at all
+            implicit.append(include)
             if include in stubs or scanner.resolve(
                     include, False, stub_dir) is not None:
                 continue
             for stub_name, content in stand_ins_for(include, codes).items():
                 stubs.setdefault(stub_name, content)
-            implicit.append(include)
     up_dirs = set()
     # (the units of a package are parsed in several processes)
     with _lock, safe_files.directory_lock(stub_dir):
@@ -231,8 +234,8 @@ def _merge_implicit(stub_dir, implicit):
         return
     lines = [
         f'{STUB_MARKER} kind=implicit',
-        '// messages of *_msgs packages the sources name without including',
-        '// them (the real message headers include what their fields use)']
+        '// messages the sources name, declared before any use: the real',
+        '// message headers include what their fields use']
     lines += [f'#include <{n}>' for n in sorted(old_includes | set(implicit))]
     write_atomically(path, '\n'.join(lines) + '\n')
 

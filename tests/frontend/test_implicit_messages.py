@@ -1,0 +1,142 @@
+# Copyright 2026 colcon-rsia contributors
+# Licensed under the Apache License, Version 2.0
+"""ROS 2 messages a unit names before including them, or never (model mode).
+
+A real message header includes the headers of its fields' types, so code
+that includes `path.hpp` may name the `Point` of its fields, and every
+`std_msgs::msg::Header` brings `builtin_interfaces::msg::Time`. The model's
+stand-ins of message headers include nothing; the model declares such
+messages for the unit that names them.
+"""
+
+from colcon_rsia.package import analysis
+from conftest import analyze_source
+
+# an interface package of any name (no `_msgs` suffix), and
+# builtin_interfaces, named and not included
+NAMED_NOT_INCLUDED = r"""
+#include <memory>
+#include <vector>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+#include "route_tools/msg/route.hpp"
+
+class Checker : public rclcpp::Node
+{
+public:
+  Checker() : Node("checker")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("checked", 10);
+    sub_ = create_subscription<route_tools::msg::Route>(
+      "route", 1,
+      [this](route_tools::msg::Route::ConstSharedPtr msg) { onRoute(*msg); });
+  }
+
+private:
+  bool stale(const builtin_interfaces::msg::Time & stamp) const
+  {
+    return (now() - rclcpp::Time(stamp)).seconds() > 1.0;
+  }
+  void onRoute(const route_tools::msg::Route & route)
+  {
+    std::vector<route_tools::msg::Waypoint> points = route.points;
+    if (stale(route.header.stamp)) {
+      return;
+    }
+    std_msgs::msg::String out;
+    out.data = std::to_string(points.size());
+    pub_->publish(out);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  rclcpp::Subscription<route_tools::msg::Route>::SharedPtr sub_;
+};
+"""
+
+
+def test_messages_of_any_interface_package_are_declared(tmp_path):
+    summary = analyze_source(tmp_path, 'checker', NAMED_NOT_INCLUDED,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    # before: "use of undeclared identifier 'builtin_interfaces'" and
+    # "no member named 'Waypoint' in namespace 'route_tools::msg'"
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+
+
+# a header of the package names Waypoint through the Route it includes;
+# the unit includes Waypoint's own header only after it
+SHIFT_HEADER = r"""
+#pragma once
+#include <vector>
+#include "route_msgs/msg/route.hpp"
+
+namespace routes
+{
+using route_msgs::msg::Waypoint;
+std::vector<Waypoint> shifted(const route_msgs::msg::Route & route);
+}  // namespace routes
+"""
+SHIFT_SOURCE = r"""
+#include "routes/shift.hpp"
+#include "route_msgs/msg/waypoint.hpp"
+
+namespace routes
+{
+std::vector<Waypoint> shifted(const route_msgs::msg::Route & route)
+{
+  std::vector<Waypoint> points = route.points;
+  return points;
+}
+}  // namespace routes
+"""
+
+
+def test_a_message_named_before_its_include_is_declared(tmp_path):
+    header = tmp_path / 'routes' / 'include' / 'routes' / 'shift.hpp'
+    header.parent.mkdir(parents=True)
+    header.write_text(SHIFT_HEADER)
+    summary = analyze_source(tmp_path, 'routes', SHIFT_SOURCE,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    # before: the unit includes waypoint.hpp, so it was not declared
+    # early: "no member named 'Waypoint' in namespace 'route_msgs::msg'"
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+
+
+# a library's own `msg` namespace, hand-written: no interface package
+OWN_MSG_HEADER = r"""
+#pragma once
+#include <cstdint>
+
+namespace canbus
+{
+namespace msg
+{
+struct Frame
+{
+  uint32_t id;
+};
+}  // namespace msg
+}  // namespace canbus
+"""
+OWN_MSG_SOURCE = r"""
+#include "std_msgs/msg/string.hpp"
+#include "canbus/frame.hpp"
+
+std_msgs::msg::String describe(const canbus::msg::Frame & frame)
+{
+  std_msgs::msg::String text;
+  text.data = std::to_string(frame.id);
+  return text;
+}
+"""
+
+
+def test_a_namespace_the_code_opens_is_not_an_interface_package(tmp_path):
+    header = tmp_path / 'canbus' / 'include' / 'canbus' / 'frame.hpp'
+    header.parent.mkdir(parents=True)
+    header.write_text(OWN_MSG_HEADER)
+    summary = analyze_source(tmp_path, 'canbus', OWN_MSG_SOURCE,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    # a stand-in of canbus/msg/frame.hpp would redefine canbus::msg::Frame
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
