@@ -171,3 +171,37 @@ def test_a_plugin_interface_call_is_named_by_the_objects_class(tmp_path):
         ('out', 'image_transport::PublisherPlugin::advertise',
          'sensor_msgs::Image')]
     assert [s.topic for s in node.subscribers] == ['in']
+
+
+# a library whose include directory is capitalised, like its namespace;
+# every name the code uses of it comes from the missing headers
+CAPITALISED_LIBRARY = r"""
+#include <Eigen/Core>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+
+class Norm : public rclcpp::Node
+{
+public:
+  Norm() : Node("norm")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("norm", 1);
+  }
+
+private:
+  double norm(const Eigen::VectorXd & v, const Eigen::MatrixXd & weights) const
+  {
+    return (weights * v).norm();
+  }
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+};
+"""
+
+
+def test_a_capitalised_library_directory_is_its_namespace(tmp_path):
+    summary = analyze_source(tmp_path, 'norm', CAPITALISED_LIBRARY,
+                             repair='when-it-pays')
+    [unit] = summary.coverage.units
+    # before: "use of undeclared identifier 'Eigen'", left unrepaired
+    # since no call was lost
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

@@ -72,9 +72,14 @@ _QT_HEADER = re.compile(r'^Qt?[A-Z]\w*(?:/|$)')
 
 
 def guessed_namespace(include):
-    """The namespace an unknown `dir/...` include probably declares."""
+    """The namespace an unknown `dir/...` include probably declares.
+
+    A library's top include directory is its namespace, by ROS convention
+    for packages and for many libraries (`Eigen/Core`, `Poco/...`): only
+    the names the sources use after `namespace::` are declared.
+    """
     parts = include.split('/')
-    if len(parts) < 2 or not PACKAGE.match(parts[0]):
+    if len(parts) < 2 or not IDENTIFIER.match(parts[0]):
         return None
     namespace = parts[0]
     if namespace in MODEL_NAMESPACES or namespace.endswith(
