@@ -162,5 +162,14 @@ def overlays(repairs):
                            for _, end in bodies.get(class_name, ())]
         for offset, insertion in sorted(insertions, reverse=True):
             text = text[:offset] + insertion + text[offset:]
-        result[path] = text
+        result[path] = _CATCH_ALLS_AHEAD + text
     return result
+
+
+# The members name rsia_model's catch-alls, which a model header that
+# rsia_model/message.h includes itself (boost/shared_ptr.hpp) has not
+# seen: declared ahead, on the header's first line, a comment in every
+# model header, so that its lines keep their numbers.
+_CATCH_ALLS_AHEAD = (
+    'namespace rsia_model { struct Any; struct Unknown; '
+    'template <class RsiaClass> struct UnknownPointer; } ')
