@@ -205,3 +205,47 @@ def test_a_capitalised_library_directory_is_its_namespace(tmp_path):
     # before: "use of undeclared identifier 'Eigen'", left unrepaired
     # since no call was lost
     assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+
+
+# include directories mirror namespaces below the top one: here the top
+# namespace is the package's own (`corp`) or a model library's (`boost`),
+# and the missing headers declare `corp::planning_utils` and
+# `boost::geometry`; never a class the model declares (`boost::thread`)
+NESTED_NAMESPACES = r"""
+#include <boost/geometry/algorithms/intersects.hpp>
+#include <boost/thread/thread.hpp>
+#include <boost/thread/xtime.hpp>
+#include <corp/planning_utils/path.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/bool.hpp>
+
+namespace corp::planner
+{
+class Checker : public rclcpp::Node
+{
+public:
+  Checker() : Node("checker")
+  {
+    pub_ = create_publisher<std_msgs::msg::Bool>("crossing", 1);
+  }
+
+private:
+  bool crossing(const corp::planning_utils::Path & a, const corp::planning_utils::Path & b)
+  {
+    auto smoothed = planning_utils::smooth(a);
+    unsigned cores = boost::thread::hardware_concurrency();
+    return cores && boost::geometry::intersects(smoothed, b);
+  }
+  rclcpp::Publisher<std_msgs::msg::Bool>::SharedPtr pub_;
+};
+}  // namespace corp::planner
+"""
+
+
+def test_nested_namespaces_of_unknown_include_directories(tmp_path):
+    summary = analyze_source(tmp_path, 'checker', NESTED_NAMESPACES,
+                             repair='when-it-pays')
+    [unit] = summary.coverage.units
+    # before: "no member named 'planning_utils' in namespace 'corp'" and
+    # "no member named 'geometry' in namespace 'boost'"
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

@@ -39,13 +39,15 @@ def empty_stub(name):
         # what the model knows of the library, before what the sources
         # use of it is guessed (each declaration there skips its own)
         lines.append(f'#include <{partial}>')
-    namespace = guessed_namespace(name)
-    if namespace:
+    for namespace in (guessed_namespace(name), nested_namespace(name)):
+        if not namespace:
+            continue
         # what the sources use of `namespace::`, if it is declared nowhere
         # else (prepare_model_arguments defines RSIA_MODEL_OWN_<ns> where it is)
-        header = f'rsia_model/unknown/{namespace}.h'
+        key = namespace_key(namespace)
+        header = f'rsia_model/unknown/{key}.h'
         lines += [
-            f'#if !defined(RSIA_MODEL_OWN_{namespace}) && '
+            f'#if !defined(RSIA_MODEL_OWN_{key}) && '
             f'__has_include(<{header}>)',
             f'#include <{header}>',
             '#endif']
@@ -86,6 +88,50 @@ def guessed_namespace(include):
             ('_msgs', '_srvs')) or not member_ok(namespace):
         return None
     return namespace
+
+
+def nested_namespace(include):
+    """The namespace `top::dir` of an unknown `top/dir/...` include, or None.
+
+    Include directories mirror namespaces below the top one too
+    (`boost/geometry/...`, `corp/planning_utils/...`). The nested guess
+    serves where the top namespace is not guessed whole: a model library's
+    (but for a name the model declares itself), or one the sources open
+    themselves (the caller checks).
+    """
+    parts = include.split('/')
+    if len(parts) < 3 or not PACKAGE.match(parts[1]) or \
+            not member_ok(parts[1]) or not IDENTIFIER.match(parts[0]):
+        return None
+    top, name = parts[0], parts[1]
+    if top in MODEL_NAMESPACES and _model_declares(top, name):
+        return None
+    return f'{top}::{name}'
+
+
+def namespace_key(namespace):
+    """A qualified namespace as a file and macro name (`a__b`)."""
+    return namespace.replace('::', '__')
+
+
+_model_texts = []
+
+
+def _model_declares(top, name):
+    """Whether a model header of namespace `top` declares `name` in it.
+
+    (Roughly: a header that opens `top` and declares a namespace or class
+    `name`; a model library's declarations may live in rsia_model/.)
+    """
+    if not _model_texts:
+        for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
+            for file in sorted(files):
+                with open(os.path.join(root, file), encoding='utf-8') as h:
+                    _model_texts.append(h.read())
+    opened = re.compile(r'\bnamespace\s+' + top + r'\b')
+    declared = re.compile(r'\b(?:namespace|class|struct)\s+' + name + r'\b')
+    return any(declared.search(text) and opened.search(text)
+               for text in _model_texts)
 
 
 def printable(text):

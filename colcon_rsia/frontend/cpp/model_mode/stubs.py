@@ -12,6 +12,7 @@ import re
 import threading
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS \
     as _ALL_CAPS
@@ -26,6 +27,8 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import guessed_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import merged_ros2_interface
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
@@ -259,20 +262,38 @@ def _unknown_namespaces(stubs, codes):
     the sources open themselves, or one with messages of this TU, is left
     alone (and named in the second result).
     """
-    namespaces = {guessed_namespace(name) for name, content in stubs.items()
-                  if 'kind=empty' in content.split('\n', 1)[0]} - {None}
+    empties = [name for name, content in stubs.items()
+               if 'kind=empty' in content.split('\n', 1)[0]]
     with_messages = {name.split('/')[0] for name, content in stubs.items()
                      if 'kind=empty' not in content.split('\n', 1)[0]}
+
+    def opened(namespace):
+        opening = re.compile(r'\bnamespace\s+' + _spelled(namespace) + r'\b')
+        return any(opening.search(code) for code in codes)
+
+    def is_own(namespace):
+        return namespace in with_messages or opened(namespace)
+
+    namespaces = {guessed_namespace(name) for name in empties} - {None}
+    # `top/dir/...` where the top namespace is a model library's or the
+    # sources' own: what it declares is in `top::dir` (any other top
+    # namespace is guessed whole, with its nested namespaces)
+    for name in empties:
+        nested = nested_namespace(name)
+        if nested is not None:
+            top = nested.split('::')[0]
+            if top in MODEL_NAMESPACES or (
+                    top not in with_messages and opened(top)):
+                namespaces.add(nested)
     result = {}
     own = []
     for namespace in sorted(namespaces):
-        opened = re.compile(r'\bnamespace\s+' + namespace + r'\b')
-        if namespace in with_messages or any(
-                opened.search(code) for code in codes):
+        if is_own(namespace):
             own.append(namespace)
             continue
+        last = namespace.rsplit('::', 1)[-1]
         use = re.compile(
-            r'(?<![\w:])' + namespace + r'\s*::\s*([A-Za-z_]\w*)'
+            r'(?<![\w:])' + _spelled(namespace) + r'\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
         types, objects, constants = {}, set(), set()
         nested = {}  # nested namespace -> the names used in it
@@ -283,7 +304,7 @@ def _unknown_namespaces(stubs, codes):
             for match in use.finditer(code):
                 name, after, member = match.group(1), match.group(2), \
                     match.group(3)
-                if not member_ok(name) or name == namespace:
+                if not member_ok(name) or name == last:
                     continue
                 if after and after.strip() == '<':
                     template_kinds.setdefault(name, set()).add(
@@ -363,11 +384,22 @@ def _class_template_use(code, start):
 _ALIASED = re.compile(r'\bnamespace\s+\w+\s*=\s*(?:::\s*)?\Z')
 
 
+def _spelled(namespace):
+    """A namespace as the sources may write it: `a::b` also as `b`.
+
+    (Code inside `namespace a` names `b::x` without the `a::`.)
+    """
+    *parents, last = namespace.split('::')
+    if not parents:
+        return last
+    return r'(?:' + r'\s*::\s*'.join(parents) + r'\s*::\s*)?' + last
+
+
 def _templates_used_unqualified(namespace, codes):
     """[(name, {template kinds})] of `using ns::name;` + `name<...>`."""
     brought = {name for code in codes for name in re.findall(
-        r'\busing\s+(?:::\s*)?' + namespace + r'\s*::\s*([A-Za-z_]\w*)\s*;',
-        code)}
+        r'\busing\s+(?:::\s*)?' + _spelled(namespace) +
+        r'\s*::\s*([A-Za-z_]\w*)\s*;', code)}
     found = []
     for name in sorted(brought):
         if not member_ok(name):
@@ -383,7 +415,7 @@ def _templates_used_unqualified(namespace, codes):
 def _merge_unknown(stub_dir, namespace, names):
     """Grow rsia_model/unknown/<namespace>.h by these declarations."""
     types, objects, constants, templates, nested = names
-    path = os.path.join(stub_dir, UNKNOWN_DIR, namespace + '.h')
+    path = os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
     old = read_text(path) or ''
     if old.startswith(STUB_MARKER):
         for match in re.finditer(r'^// type (\w+):([\w ]*)$', old, re.M):
@@ -402,13 +434,15 @@ def _merge_unknown(stub_dir, namespace, names):
         types.pop(name, None)
     objects -= set(types) | set(templates) | set(nested)
     constants -= set(types) | objects | set(templates) | set(nested)
-    guard = f'RSIA_MODEL_UNKNOWN_{namespace}_H'
+    guard = f'RSIA_MODEL_UNKNOWN_{namespace_key(namespace)}_H'
     lines = [
         f'{STUB_MARKER} kind=unknown: namespace {namespace}',
         f'// what the analysed sources use of `{namespace}::` (from headers the',
         '// model mode does not have): catch-all declarations',
         f'#ifndef {guard}', f'#define {guard}', '',
-        '#include <rsia_model/message.h>', '', f'namespace {namespace}', '{']
+        '#include <rsia_model/message.h>', '']
+    for part in namespace.split('::'):
+        lines += [f'namespace {part}', '{']
     for name in sorted(types):
         members = sorted(types[name])
         # a repair header (recovery/) may have declared it already
@@ -448,7 +482,10 @@ def _merge_unknown(stub_dir, namespace, names):
     for i, name in enumerate(sorted(constants)):
         lines += [f'// constant {name}', _undeclared(namespace, name),
                   f'constexpr int {name} = {i + 1};', '#endif']
-    lines += ['', f'}}  // namespace {namespace}', '', f'#endif  // {guard}', '']
+    lines.append('')
+    for part in reversed(namespace.split('::')):
+        lines.append(f'}}  // namespace {part}')
+    lines += ['', f'#endif  // {guard}', '']
     content = '\n'.join(lines)
     if content != old:
         write_atomically(path, content)
