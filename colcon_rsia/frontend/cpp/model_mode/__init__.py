@@ -47,6 +47,7 @@ from colcon_rsia.frontend.cpp.model_mode.include_scan import Scanner
 from colcon_rsia.frontend.cpp.model_mode.source_names import code_only
 from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 from colcon_rsia.frontend.cpp.model_mode.source_names import export_macro_defines
+from colcon_rsia.frontend.cpp.model_mode.source_names import override_defines
 from colcon_rsia.frontend.cpp.model_mode.source_names import std_defines
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
@@ -113,6 +114,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
         ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += std_defines(codes)
     result += export_macro_defines(codes)
+    result += override_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace_key(namespace)}'
                for namespace in own]
     # the model declares nothing constexpr: a constexpr function of the

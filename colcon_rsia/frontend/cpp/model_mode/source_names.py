@@ -161,6 +161,28 @@ def export_macro_defines(codes):
     return [f'-D{name}=' for name in sorted(used - defined)]
 
 
+# `override` only checks a member function against its base classes: a
+# program means the same without it. Against a base the model does not
+# know (a catch-all class), it is an error of the model's making.
+_OVERRIDE = re.compile(r'\boverride\b')
+# what comes before the keyword: a declarator's `)`, its qualifiers
+_BEFORE_OVERRIDE = re.compile(
+    r'(?:\)|&|\bconst|\bvolatile|\bnoexcept|\bfinal)\s*\Z')
+
+
+def override_defines(codes):
+    """``-Doverride=`` where the sources use `override` as the keyword only.
+
+    (A variable named `override` keeps it: the sources stay as written.)
+    """
+    uses = [(code, m.start()) for code in codes
+            for m in _OVERRIDE.finditer(code)]
+    if uses and all(_BEFORE_OVERRIDE.search(code, max(0, start - 40), start)
+                    for code, start in uses):
+        return ['-Doverride=']
+    return []
+
+
 def code_only(text):
     """The text without comments, literals and include lines."""
     return INCLUDE.sub(' ', COMMENT_OR_STRING.sub(' ', text))
