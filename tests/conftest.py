@@ -44,12 +44,37 @@ SLOW_MODULES = frozenset({
 
 
 def pytest_collection_modifyitems(items):
-    """Mark the tests that need a compiled workspace as slow."""
+    """Mark the slow tests; keep the users of one built workspace together."""
     for item in items:
         # by the file's name: the same in every subdirectory of tests/
         if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())) or \
                 Path(item.path).stem in SLOW_MODULES:
             item.add_marker(pytest.mark.slow)
+        group = _worker_group(item)
+        if group:
+            item.add_marker(pytest.mark.xdist_group(group))
+
+
+def _worker_group(item):
+    """The tests that must share a pytest-xdist worker with this one.
+
+    The suite runs on every core (``-n auto --dist loadgroup``, setup.cfg).
+    A session or module fixture is made once per worker, so the tests of
+    a built workspace, and those of a module fixture, go to one worker:
+    spread over two, each would compile the workspace again.
+    """
+    fixtures = set(getattr(item, 'fixturenames', ()))
+    built = sorted(SLOW_FIXTURES & fixtures)
+    if built:
+        return 'built:' + '+'.join(built)
+    definitions = getattr(item, '_fixtureinfo', None)
+    for name in fixtures:
+        scopes = {
+            d.scope for d in (definitions.name2fixturedefs.get(name, ())
+                              if definitions else ())}
+        if 'module' in scopes:
+            return 'module:' + item.nodeid.split('::', 1)[0]
+    return None
 
 
 def colcon_executable():
