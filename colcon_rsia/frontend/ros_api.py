@@ -115,6 +115,10 @@ class Api:
     # generic publishers/subscriptions: the argument naming the type as a
     # string ("std_msgs/msg/String"), which gives the message type
     type_name_arg: Optional[int] = None
+    # SYNC: the argument holding the filter's one input, where the call
+    # has one: tf's filters take (input, tf, frame, ...) or (tf, frame,
+    # ...), the tf object never an input
+    input_filter_arg: Optional[int] = None
     # the argument whose type is the message (rclcpp::wait_for_message's
     # output message)
     msg_type_arg: Optional[int] = None
@@ -301,6 +305,12 @@ CALLS = {
     'message_filters::TimeSynchronizer::TimeSynchronizer': Api(SYNC),
     'message_filters::Synchronizer::connectInput': Api(SYNC),
     'message_filters::TimeSynchronizer::connectInput': Api(SYNC),
+    # tf's filters pass on what their input filter gives, once its frame
+    # transforms: (input filter, tf, target frame, queue, ...)
+    'tf::MessageFilter::MessageFilter': Api(SYNC, input_filter_arg=0),
+    'tf::MessageFilter::connectInput': Api(SYNC),
+    'tf2_ros::MessageFilter::MessageFilter': Api(SYNC, input_filter_arg=0),
+    'tf2_ros::MessageFilter::connectInput': Api(SYNC),
     'message_filters::SimpleFilter::registerCallback': Api(
         REGISTER_CALLBACK, callback_arg=0),
     'message_filters::Synchronizer::registerCallback': Api(

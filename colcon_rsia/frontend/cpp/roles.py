@@ -603,6 +603,14 @@ class RosRoles:
             loop=loop, clock=handle, sleep=cursor)
 
     def _on_sync(self, cursor, ctx, stack, api, name, arguments):
+        if api.input_filter_arg is not None:
+            # an input where the target frame follows it: (input, tf,
+            # frame, ...), not (tf, frame, ...)
+            written = written_arguments(arguments)
+            after = api.input_filter_arg + 1
+            arguments = [written[api.input_filter_arg]] \
+                if len(written) > after and not is_string(written[after]) \
+                else []
         inputs = []
         for argument in arguments:
             handle = first_handle(argument)
