@@ -6,6 +6,7 @@ from dataclasses import dataclass
 import json
 import os
 from pathlib import Path
+import re
 import shutil
 import subprocess
 import sys
@@ -44,37 +45,49 @@ SLOW_MODULES = frozenset({
 
 
 def pytest_collection_modifyitems(items):
-    """Mark the slow tests; keep the users of one built workspace together."""
+    """Mark the tests that need a compiled workspace as slow."""
     for item in items:
         # by the file's name: the same in every subdirectory of tests/
         if SLOW_FIXTURES & set(getattr(item, 'fixturenames', ())) or \
                 Path(item.path).stem in SLOW_MODULES:
             item.add_marker(pytest.mark.slow)
-        group = _worker_group(item)
-        if group:
-            item.add_marker(pytest.mark.xdist_group(group))
 
 
-def _worker_group(item):
-    """The tests that must share a pytest-xdist worker with this one.
+# The suite runs on every core (pytest-xdist, setup.cfg). A session or
+# module fixture is made once per worker: each test file goes to one
+# worker whole, and the files that use one built workspace go to the
+# same worker (the first of these it names), so no workspace is compiled
+# twice but where a file uses two.
+BUILT_WORKSPACES = (
+    'ros1_workspace', 'system_workspace', 'fig2_workspace',
+    'triggers_workspace')
 
-    The suite runs on every core (``-n auto --dist loadgroup``, setup.cfg).
-    A session or module fixture is made once per worker, so the tests of
-    a built workspace, and those of a module fixture, go to one worker:
-    spread over two, each would compile the workspace again.
-    """
-    fixtures = set(getattr(item, 'fixturenames', ()))
-    built = sorted(SLOW_FIXTURES & fixtures)
-    if built:
-        return 'built:' + '+'.join(built)
-    definitions = getattr(item, '_fixtureinfo', None)
-    for name in fixtures:
-        scopes = {
-            d.scope for d in (definitions.name2fixturedefs.get(name, ())
-                              if definitions else ())}
-        if 'module' in scopes:
-            return 'module:' + item.nodeid.split('::', 1)[0]
-    return None
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_xdist_make_scheduler(config, log):
+    """Schedule whole files, those of one built workspace together."""
+    from xdist.scheduler import LoadScopeScheduling
+
+    class ByBuiltWorkspace(LoadScopeScheduling):
+
+        def _split_scope(self, nodeid):
+            test_file = nodeid.split('::', 1)[0]
+            return _workspace_of(test_file) or test_file
+
+    return ByBuiltWorkspace(config, log)
+
+
+_workspace_cache = {}
+
+
+def _workspace_of(test_file):
+    """The first built workspace a test file names, or None."""
+    if test_file not in _workspace_cache:
+        text = (REPO / test_file).read_text()
+        _workspace_cache[test_file] = next(
+            (f'built:{name}' for name in BUILT_WORKSPACES
+             if re.search(rf'\b{name}\b', text)), None)
+    return _workspace_cache[test_file]
 
 
 def colcon_executable():
