@@ -299,3 +299,44 @@ def test_override_is_kept_where_the_sources_name_a_variable_so():
     assert override_defines([keyword, 'bool override = false;']) == []
     # a trailing return type: not told apart from a name, so kept
     assert override_defines(['auto f() -> int override;']) == []
+
+
+# directories that add to their namespace's name: a driver's SDK, a
+# versioned library, a stack's package named `<stack>_<package>`
+PREFIX_NAMESPACES = r"""
+#include <servo_sdk/servo_sdk.h>
+#include <mapkit2_core/primitives/Lanelet.h>
+#include <corp_planning_utils/path.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+
+namespace corp::driver
+{
+class Servo : public rclcpp::Node
+{
+public:
+  Servo() : Node("servo")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("angle", 1);
+    port_ = servo::PortHandler::getPortHandler("/dev/ttyUSB0");
+  }
+
+private:
+  double length(const mapkit::Lanelet & lane, const corp::planning_utils::Path & path)
+  {
+    return planning_utils::length(path) + lane.length();
+  }
+  servo::PortHandler * port_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+};
+}  // namespace corp::driver
+"""
+
+
+def test_namespaces_a_directory_name_adds_to(tmp_path):
+    summary = analyze_source(tmp_path, 'servo', PREFIX_NAMESPACES,
+                             repair='when-it-pays')
+    [unit] = summary.coverage.units
+    # before: "use of undeclared identifier 'servo'", 'mapkit', and "no
+    # member named 'planning_utils' in namespace 'corp'"
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

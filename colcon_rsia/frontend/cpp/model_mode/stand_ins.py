@@ -39,7 +39,10 @@ def empty_stub(name):
         # what the model knows of the library, before what the sources
         # use of it is guessed (each declaration there skips its own)
         lines.append(f'#include <{partial}>')
-    for namespace in (guessed_namespace(name), nested_namespace(name)):
+    candidates = [guessed_namespace(name), nested_namespace(name)]
+    for prefix, rest in prefix_namespaces(name):
+        candidates += [prefix, f'{prefix}::{rest}']
+    for namespace in candidates:
         if not namespace:
             continue
         # what the sources use of `namespace::`, if it is declared nowhere
@@ -81,13 +84,17 @@ def guessed_namespace(include):
     the names the sources use after `namespace::` are declared.
     """
     parts = include.split('/')
-    if len(parts) < 2 or not IDENTIFIER.match(parts[0]):
+    if len(parts) < 2:
         return None
-    namespace = parts[0]
-    if namespace in MODEL_NAMESPACES or namespace.endswith(
-            ('_msgs', '_srvs')) or not member_ok(namespace):
+    return library_namespace(parts[0])
+
+
+def library_namespace(name):
+    """`name`, if an unknown library may declare a namespace so named."""
+    if not IDENTIFIER.match(name) or name in MODEL_NAMESPACES or \
+            name.endswith(('_msgs', '_srvs')) or not member_ok(name):
         return None
-    return namespace
+    return name
 
 
 def nested_namespace(include):
@@ -104,9 +111,40 @@ def nested_namespace(include):
             not member_ok(parts[1]) or not IDENTIFIER.match(parts[0]):
         return None
     top, name = parts[0], parts[1]
-    if top in MODEL_NAMESPACES and _model_declares(top, name):
+    if not nested_in_model(top, name):
         return None
     return f'{top}::{name}'
+
+
+def prefix_namespaces(include):
+    """Where an unknown include's directory adds to its namespace's name.
+
+    :returns: [(prefix, rest)]. A library's directory often adds to its namespace (`dynamixel_sdk/`
+    declares `dynamixel::`, `lanelet2_core/` `lanelet::`), and a package
+    named `corp_planning_utils` of a stack whose namespace is `corp` may
+    declare `corp::planning_utils::`: each split of the directory at an
+    underscore or before a version digit. The caller keeps those the
+    sources use.
+    """
+    top = include.split('/')[0]
+    if '/' not in include or not PACKAGE.match(top):
+        return []
+    splits = []
+    for boundary in re.finditer(r'(?=_)|(?<=[a-z])(?=\d)', top):
+        prefix, rest = top[:boundary.start()], \
+            top[boundary.start():].lstrip('_')
+        if prefix and member_ok(prefix) and rest:
+            splits.append((prefix, rest))
+    return splits
+
+
+def nested_in_model(top, name):
+    """Whether `top::name` is a namespace the sources may fill in.
+
+    (Not a name the model declares in `top` itself.)
+    """
+    return IDENTIFIER.match(name) is not None and member_ok(name) and not (
+        top in MODEL_NAMESPACES and _model_declares(top, name))
 
 
 def namespace_key(namespace):

@@ -26,9 +26,12 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import guessed_namespace
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import library_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import merged_ros2_interface
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_in_model
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_namespace
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import prefix_namespaces
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
@@ -274,17 +277,32 @@ def _unknown_namespaces(stubs, codes):
     def is_own(namespace):
         return namespace in with_messages or opened(namespace)
 
+    def known_top(namespace):
+        # a model library's or the sources' own: what an unknown include
+        # below it declares is in a namespace nested in it
+        return namespace in MODEL_NAMESPACES or (
+            namespace not in with_messages and opened(namespace))
+
     namespaces = {guessed_namespace(name) for name in empties} - {None}
-    # `top/dir/...` where the top namespace is a model library's or the
-    # sources' own: what it declares is in `top::dir` (any other top
-    # namespace is guessed whole, with its nested namespaces)
+    qualifiers = {m.group(1) for code in codes
+                  for m in _QUALIFIER.finditer(code)}
     for name in empties:
+        # `top/dir/...`: `top::dir` (any other top namespace is guessed
+        # whole, with its nested namespaces)
         nested = nested_namespace(name)
-        if nested is not None:
-            top = nested.split('::')[0]
-            if top in MODEL_NAMESPACES or (
-                    top not in with_messages and opened(top)):
-                namespaces.add(nested)
+        if nested is not None and known_top(nested.split('::')[0]):
+            namespaces.add(nested)
+        # `dynamixel_sdk/`: `dynamixel::`, where the sources use it;
+        # `corp_planning/` of a stack in `corp::`: `corp::planning`
+        for prefix, rest in prefix_namespaces(name):
+            if known_top(prefix):
+                if nested_in_model(prefix, rest):
+                    namespaces.add(f'{prefix}::{rest}')
+            elif prefix in qualifiers and library_namespace(prefix):
+                namespaces.add(prefix)
+    # names that are namespaces of their own at the top: `dir::` alone
+    # never means `top::dir::` for them
+    tops = MODEL_NAMESPACES | {name.split('/')[0] for name in stubs}
     result = {}
     own = []
     for namespace in sorted(namespaces):
@@ -292,8 +310,9 @@ def _unknown_namespaces(stubs, codes):
             own.append(namespace)
             continue
         last = namespace.rsplit('::', 1)[-1]
+        spelled = _spelled(namespace, unqualified=last not in tops)
         use = re.compile(
-            r'(?<![\w:])' + _spelled(namespace) + r'\s*::\s*([A-Za-z_]\w*)'
+            r'(?<![\w:])' + spelled + r'\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
         types, objects, constants = {}, set(), set()
         nested = {}  # nested namespace -> the names used in it
@@ -344,7 +363,7 @@ def _unknown_namespaces(stubs, codes):
                     constants.add(name)
                 else:
                     objects.add(name)
-        for name, kinds in _templates_used_unqualified(namespace, codes):
+        for name, kinds in _templates_used_unqualified(spelled, codes):
             template_kinds.setdefault(name, set()).update(kinds)
         templates = {name: not name[:1].isupper() and name not in scoped
                      for name, kinds in template_kinds.items()
@@ -384,7 +403,7 @@ def _class_template_use(code, start):
 _ALIASED = re.compile(r'\bnamespace\s+\w+\s*=\s*(?:::\s*)?\Z')
 
 
-def _spelled(namespace):
+def _spelled(namespace, *, unqualified=True):
     """A namespace as the sources may write it: `a::b` also as `b`.
 
     (Code inside `namespace a` names `b::x` without the `a::`.)
@@ -392,13 +411,21 @@ def _spelled(namespace):
     *parents, last = namespace.split('::')
     if not parents:
         return last
-    return r'(?:' + r'\s*::\s*'.join(parents) + r'\s*::\s*)?' + last
+    parents = r'\s*::\s*'.join(parents) + r'\s*::\s*'
+    return (f'(?:{parents})?' if unqualified else parents) + last
 
 
-def _templates_used_unqualified(namespace, codes):
-    """[(name, {template kinds})] of `using ns::name;` + `name<...>`."""
+# a name qualifying another: `dynamixel::PortHandler` (not `a::b` inside)
+_QUALIFIER = re.compile(r'(?<![\w:.>])([A-Za-z_]\w*)\s*::\s*[A-Za-z_~]')
+
+
+def _templates_used_unqualified(spelled, codes):
+    """[(name, {template kinds})] of `using ns::name;` + `name<...>`.
+
+    :param spelled: the namespace as `_spelled` gives it
+    """
     brought = {name for code in codes for name in re.findall(
-        r'\busing\s+(?:::\s*)?' + _spelled(namespace) +
+        r'\busing\s+(?:::\s*)?' + spelled +
         r'\s*::\s*([A-Za-z_]\w*)\s*;', code)}
     found = []
     for name in sorted(brought):
