@@ -2,12 +2,13 @@
 # Licensed under the Apache License, Version 2.0
 """A Qt widget node: its QTimer's slot publishes, at the timer's rate.
 
-The model mode has QObject and QTimer but no QWidget, QString::split or
-QStringList: the widget class has no base the parse knows, and its
-``connect(timer_, &QTimer::timeout, this, &TeleopGui::tick)`` is lost by
-the AST. The timer, read from the tokens, is a loss a repair wins: the
-publisher is driven by a 20 Hz timer, not by the node's subscription.
-Expectations written by hand from the code below.
+The model has QtCore (QObject, QTimer, QString) but no QtWidgets: the
+stand-in of a Qt class header the model lacks (<QWidget>) includes QtCore
+and declares its class, made from anything and a QObject. The publisher
+is driven by a 20 Hz timer, not by the node's subscription. (Where the
+parse loses ``connect(timer_, &QTimer::timeout, ...)`` the token reader
+reads it: tests/frontend/test_token_facts.py.) Expectations written by
+hand from the code below.
 """
 
 from conftest import analyze_source
@@ -72,3 +73,47 @@ def test_a_widgets_timer_slot_publishes_at_the_timers_rate(tmp_path):
     [timer] = node.timers
     assert (timer.callback, timer.rate_hz) == ('TeleopGui::tick', 20.0)
     assert [s.topic for s in node.subscribers] == ['joy']
+
+
+# a panel of widgets the model lacks, its moc keywords from QtCore; the
+# model's QString, whose header it lacks, is not declared again
+PANEL = r"""
+#include <QPushButton>
+#include <QString>
+#include <QVBoxLayout>
+#include <QtWidgets/QWidget>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Panel : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit Panel(QWidget * parent = nullptr) : QWidget(parent)
+  {
+    node_ = std::make_shared<rclcpp::Node>("panel");
+    pub_ = node_->create_publisher<std_msgs::msg::String>("clicked", 1);
+    layout_ = new QVBoxLayout();
+    button_ = new QPushButton("Go", this);
+  }
+
+private Q_SLOTS:
+  void onClick() { pub_->publish(std_msgs::msg::String()); }
+
+private:
+  QVBoxLayout * layout_;
+  QPushButton * button_;
+  QString label_;
+  rclcpp::Node::SharedPtr node_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+"""
+
+
+def test_qt_class_headers_the_model_lacks_declare_their_class(tmp_path):
+    summary = analyze_source(tmp_path, 'panel', PANEL, repair='when-it-pays')
+    [unit] = summary.coverage.units
+    # before: Q_OBJECT was repaired (a second parse), and 'QWidget',
+    # 'QVBoxLayout', 'QPushButton' were unknown type names
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics

@@ -32,8 +32,10 @@ def empty_stub(name):
              '// an include the model mode does not provide',
              '#pragma once']
     if _QT_HEADER.match(name):
-        # a class declaration of the unit's uses the moc keywords
-        lines.append('#include <rsia_model/qt_keywords.h>')
+        # every Qt header includes QtCore's (QObject, Q_OBJECT, the moc
+        # keywords a class declaration of the unit's uses)
+        lines.append('#include <rsia_model/qt_core.h>')
+        lines += _qt_class(name)
     partial = partial_model(name)
     if partial:
         # what the model knows of the library, before what the sources
@@ -74,6 +76,28 @@ def partial_model(include):
 
 # <QPushButton>, <QtWidgets/QWidget>, <QtGui/qpainter.h>
 _QT_HEADER = re.compile(r'^Qt?[A-Z]\w*(?:/|$)')
+# a Qt class header, named as the one class it declares: <QPushButton>,
+# <QtWidgets/QWidget> (not a module's <QtGui>, nor <qpainter.h>)
+_QT_CLASS_HEADER = re.compile(r'^(?:Qt\w+/)?(Q(?!t[A-Z])[A-Z]\w*)$')
+
+
+def _qt_class(name):
+    """The class a Qt class header declares, made from anything.
+
+    An object of QObject (widgets are), unless the model has the class.
+    """
+    match = _QT_CLASS_HEADER.match(name)
+    if match is None or _model_declares_class(match.group(1)):
+        return []
+    qt_class = match.group(1)
+    # (a repair header, force-included first, may have declared it)
+    return ['#include <rsia_model/message.h>',
+            f'#if !defined(RSIA_MODEL_QT_CLASS_{qt_class}) && '
+            f'!defined({repaired_guard(qt_class)})',
+            f'#define RSIA_MODEL_QT_CLASS_{qt_class}',
+            f'struct {qt_class} : ::rsia_model::Unknown, QObject',
+            '{', '  using ::rsia_model::Unknown::Unknown;',
+            f'  {qt_class}() = default;', '};', '#endif']
 
 
 def guessed_namespace(include):
@@ -155,17 +179,36 @@ def namespace_key(namespace):
 _model_texts = []
 
 
+def _read_model_texts():
+    if not _model_texts:
+        for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
+            for file in sorted(files):
+                with open(os.path.join(root, file), encoding='utf-8') as h:
+                    _model_texts.append(h.read())
+
+
+def repaired_guard(qualified_name):
+    """The macro a repair header defines with its declaration of a name.
+
+    The stand-ins of unknown libraries leave a name so defined to it.
+    """
+    return '__'.join(['RSIA_REPAIRED'] + qualified_name.split('::'))
+
+
+def _model_declares_class(name):
+    """Whether a model header declares a class `name`."""
+    _read_model_texts()
+    declared = re.compile(r'\b(?:class|struct)\s+' + name + r'\b')
+    return any(declared.search(text) for text in _model_texts)
+
+
 def _model_declares(top, name):
     """Whether a model header of namespace `top` declares `name` in it.
 
     (Roughly: a header that opens `top` and declares a namespace or class
     `name`; a model library's declarations may live in rsia_model/.)
     """
-    if not _model_texts:
-        for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
-            for file in sorted(files):
-                with open(os.path.join(root, file), encoding='utf-8') as h:
-                    _model_texts.append(h.read())
+    _read_model_texts()
     opened = re.compile(r'\bnamespace\s+' + top + r'\b')
     declared = re.compile(r'\b(?:namespace|class|struct)\s+' + name + r'\b')
     return any(declared.search(text) and opened.search(text)

@@ -32,6 +32,7 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_in_model
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import prefix_namespaces
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import repaired_guard
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 
@@ -522,14 +523,6 @@ def _undeclared(namespace, name):
     """The condition of a declaration no macro or repair header made."""
     return f'#if !defined({name}) && ' \
         f'!defined({repaired_guard(namespace + "::" + name)})'
-
-
-def repaired_guard(qualified_name):
-    """The macro a repair header defines with its declaration of a name.
-
-    The stand-ins of unknown libraries leave a name so defined to it.
-    """
-    return '__'.join(['RSIA_REPAIRED'] + qualified_name.split('::'))
 
 
 def catch_all_class(name, *, head='', members=()):
