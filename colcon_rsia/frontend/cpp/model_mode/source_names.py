@@ -194,8 +194,7 @@ def used_names(codes):
     :returns: (members, constants, field types, {pkg: {include}} of the
       message types (ROS 1: of *_msgs packages; ROS 2: every `pkg::msg::`,
       `::srv::` and `::action::` type but in namespaces the code opens),
-      member templates, members used as
-      values). The include is the
+      member templates, members used as values). The include is the
       message's header: ``std_msgs/Header.h`` (ROS 1) or
       ``std_msgs/msg/header.hpp`` (ROS 2).
     """

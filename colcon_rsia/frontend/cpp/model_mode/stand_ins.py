@@ -143,12 +143,13 @@ def nested_namespace(include):
 def prefix_namespaces(include):
     """Where an unknown include's directory adds to its namespace's name.
 
-    :returns: [(prefix, rest)]. A library's directory often adds to its namespace (`dynamixel_sdk/`
-    declares `dynamixel::`, `lanelet2_core/` `lanelet::`), and a package
-    named `corp_planning_utils` of a stack whose namespace is `corp` may
-    declare `corp::planning_utils::`: each split of the directory at an
-    underscore or before a version digit. The caller keeps those the
-    sources use.
+    A library's directory often does (`dynamixel_sdk/` declares
+    `dynamixel::`, `lanelet2_core/` `lanelet::`), and a package named
+    `corp_planning_utils` of a stack whose namespace is `corp` may declare
+    `corp::planning_utils::`. The caller keeps the splits the sources use.
+
+    :returns: [(prefix, rest)], each split of the top directory at an
+      underscore or before a version digit
     """
     top = include.split('/')[0]
     if '/' not in include or not PACKAGE.match(top):
