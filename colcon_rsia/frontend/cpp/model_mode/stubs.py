@@ -264,7 +264,10 @@ def _unknown_namespaces(stubs, codes):
     otherwise, unless a use has value arguments (`ns::Grid<3>`), whose
     parameters the repairs declare from the use (recovery/). A namespace
     the sources open themselves, or one with messages of this TU, is left
-    alone (and named in the second result).
+    alone (and named in the second result). Below a namespace the model or
+    the sources own, the next directory is a nested namespace; a directory
+    named after its namespace and more (`dynamixel_sdk/`) gives that
+    namespace (stand_ins.nested_namespace, prefix_namespaces).
     """
     empties = [name for name, content in stubs.items()
                if 'kind=empty' in content.split('\n', 1)[0]]
