@@ -11,6 +11,7 @@ its guessed namespace, declared when nothing else declares it).
 import os
 import re
 
+from colcon_rsia.frontend.cpp.model_mode.headers import model_header_texts
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
@@ -177,17 +178,6 @@ def namespace_key(namespace):
     return namespace.replace('::', '__')
 
 
-_model_texts = []
-
-
-def _read_model_texts():
-    if not _model_texts:
-        for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
-            for file in sorted(files):
-                with open(os.path.join(root, file), encoding='utf-8') as h:
-                    _model_texts.append(h.read())
-
-
 def repaired_guard(qualified_name):
     """The macro a repair header defines with its declaration of a name.
 
@@ -198,9 +188,8 @@ def repaired_guard(qualified_name):
 
 def _model_declares_class(name):
     """Whether a model header declares a class `name`."""
-    _read_model_texts()
     declared = re.compile(r'\b(?:class|struct)\s+' + name + r'\b')
-    return any(declared.search(text) for text in _model_texts)
+    return any(declared.search(text) for _, text in model_header_texts())
 
 
 def _model_declares(top, name):
@@ -209,11 +198,10 @@ def _model_declares(top, name):
     (Roughly: a header that opens `top` and declares a namespace or class
     `name`; a model library's declarations may live in rsia_model/.)
     """
-    _read_model_texts()
     opened = re.compile(r'\bnamespace\s+' + top + r'\b')
     declared = re.compile(r'\b(?:namespace|class|struct)\s+' + name + r'\b')
     return any(declared.search(text) and opened.search(text)
-               for text in _model_texts)
+               for _, text in model_header_texts())
 
 
 def printable(text):

@@ -2,11 +2,10 @@
 # Licensed under the Apache License, Version 2.0
 """What is declared already: by the package, the model, an alias."""
 
-import os
 import re
 import threading
 
-from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.model_mode.headers import model_header_texts
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import base_kind
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CONSTANT
@@ -232,26 +231,6 @@ def file_declarations(path, text):
         with _lock:
             _file_declarations[key] = found
     return found
-
-
-_model_texts = []
-
-
-def model_header_texts():
-    """[(relative path, text)] of every model header (read once).
-
-    Both indexes below are made from them.
-    """
-    with _lock:
-        if not _model_texts:
-            for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
-                for file in sorted(files):
-                    path = os.path.join(root, file)
-                    with open(path, encoding='utf-8', errors='replace') as h:
-                        _model_texts.append(
-                            (os.path.relpath(path, MODEL_HEADERS_DIR),
-                             h.read()))
-        return _model_texts
 
 
 _model_declarations = []

@@ -16,6 +16,7 @@ import os
 import re
 import threading
 
+from colcon_rsia.frontend.cpp.model_mode.headers import model_header_texts
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import K_CONSTANT
@@ -80,16 +81,10 @@ def _model_index():
     """{qualified class name: relative header} of every model header."""
     with _lock:
         if not _index:
-            for root, _, files in sorted(os.walk(MODEL_HEADERS_DIR)):
-                for file in sorted(files):
-                    path = os.path.join(root, file)
-                    try:
-                        with open(path, encoding='utf-8') as h:
-                            text = h.read()
-                    except (OSError, UnicodeDecodeError):
-                        continue
-                    for name in class_bodies(text):
-                        _index.setdefault(name, path)
+            for relative, text in model_header_texts():
+                for name in class_bodies(text):
+                    _index.setdefault(
+                        name, os.path.join(MODEL_HEADERS_DIR, relative))
         return _index
 
 
