@@ -138,6 +138,26 @@ def prepare_model_arguments(package, source, stub_dir):
         stub_dir=str(stub_dir))
 
 
+def assert_analyzes_clean(tmp_path, package, code, headers=None):
+    """A package of this one source parses clean the first time.
+
+    Analysed as users do (repairs only where they pay), its one unit has
+    no error and no repair round.
+
+    :param headers: {path inside the package: text} written beside it
+    :returns: the package summary
+    """
+    for path, text in (headers or {}).items():
+        header = tmp_path / package / path
+        header.parent.mkdir(parents=True, exist_ok=True)
+        header.write_text(text)
+    summary = analyze_source(tmp_path, package, code,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    return summary
+
+
 def assert_parses_clean(tmp_path, code, repairs=()):
     """A package of this one source parses in model mode without errors.
 

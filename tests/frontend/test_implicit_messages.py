@@ -9,8 +9,7 @@ stand-ins of message headers include nothing; the model declares such
 messages for the unit that names them.
 """
 
-from colcon_rsia.package import analysis
-from conftest import analyze_source
+from model_sources import assert_analyzes_clean
 
 # an interface package of any name (no `_msgs` suffix), and
 # builtin_interfaces, named and not included
@@ -54,12 +53,9 @@ private:
 
 
 def test_messages_of_any_interface_package_are_declared(tmp_path):
-    summary = analyze_source(tmp_path, 'checker', NAMED_NOT_INCLUDED,
-                             repair=analysis.REPAIR_WHEN_IT_PAYS)
-    [unit] = summary.coverage.units
     # before: "use of undeclared identifier 'builtin_interfaces'" and
     # "no member named 'Waypoint' in namespace 'route_tools::msg'"
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'checker', NAMED_NOT_INCLUDED)
 
 
 # a header of the package names Waypoint through the Route it includes;
@@ -91,15 +87,10 @@ std::vector<Waypoint> shifted(const route_msgs::msg::Route & route)
 
 
 def test_a_message_named_before_its_include_is_declared(tmp_path):
-    header = tmp_path / 'routes' / 'include' / 'routes' / 'shift.hpp'
-    header.parent.mkdir(parents=True)
-    header.write_text(SHIFT_HEADER)
-    summary = analyze_source(tmp_path, 'routes', SHIFT_SOURCE,
-                             repair=analysis.REPAIR_WHEN_IT_PAYS)
-    [unit] = summary.coverage.units
     # before: the unit includes waypoint.hpp, so it was not declared
     # early: "no member named 'Waypoint' in namespace 'route_msgs::msg'"
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'routes', SHIFT_SOURCE, headers={
+        'include/routes/shift.hpp': SHIFT_HEADER})
 
 
 # a library's own `msg` namespace, hand-written: no interface package
@@ -132,11 +123,6 @@ std_msgs::msg::String describe(const canbus::msg::Frame & frame)
 
 
 def test_a_namespace_the_code_opens_is_not_an_interface_package(tmp_path):
-    header = tmp_path / 'canbus' / 'include' / 'canbus' / 'frame.hpp'
-    header.parent.mkdir(parents=True)
-    header.write_text(OWN_MSG_HEADER)
-    summary = analyze_source(tmp_path, 'canbus', OWN_MSG_SOURCE,
-                             repair=analysis.REPAIR_WHEN_IT_PAYS)
-    [unit] = summary.coverage.units
     # a stand-in of canbus/msg/frame.hpp would redefine canbus::msg::Frame
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'canbus', OWN_MSG_SOURCE, headers={
+        'include/canbus/frame.hpp': OWN_MSG_HEADER})

@@ -12,6 +12,7 @@ hand from the code below.
 """
 
 from conftest import analyze_source
+from model_sources import assert_analyzes_clean
 
 TELEOP_GUI = r"""
 #include <QApplication>
@@ -112,8 +113,6 @@ private:
 
 
 def test_qt_class_headers_the_model_lacks_declare_their_class(tmp_path):
-    summary = analyze_source(tmp_path, 'panel', PANEL, repair='when-it-pays')
-    [unit] = summary.coverage.units
     # before: Q_OBJECT was repaired (a second parse), and 'QWidget',
     # 'QVBoxLayout', 'QPushButton' were unknown type names
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'panel', PANEL)

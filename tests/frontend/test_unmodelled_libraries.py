@@ -10,6 +10,7 @@ wrote. Expectations written by hand from the code below.
 from colcon_rsia.frontend.cpp.model_mode.source_names import \
     override_defines
 from conftest import analyze_source
+from model_sources import assert_analyzes_clean
 
 POLLING = r"""
 #include <chrono>
@@ -201,12 +202,9 @@ private:
 
 
 def test_a_capitalised_library_directory_is_its_namespace(tmp_path):
-    summary = analyze_source(tmp_path, 'norm', CAPITALISED_LIBRARY,
-                             repair='when-it-pays')
-    [unit] = summary.coverage.units
     # before: "use of undeclared identifier 'Eigen'", left unrepaired
     # since no call was lost
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'norm', CAPITALISED_LIBRARY)
 
 
 # include directories mirror namespaces below the top one: here the top
@@ -245,12 +243,9 @@ private:
 
 
 def test_nested_namespaces_of_unknown_include_directories(tmp_path):
-    summary = analyze_source(tmp_path, 'checker', NESTED_NAMESPACES,
-                             repair='when-it-pays')
-    [unit] = summary.coverage.units
     # before: "no member named 'planning_utils' in namespace 'corp'" and
     # "no member named 'geometry' in namespace 'boost'"
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'checker', NESTED_NAMESPACES)
 
 
 # a plugin of a simulator the model does not know: its base class is a
@@ -285,12 +280,9 @@ private:
 
 
 def test_override_of_an_unknown_base_class_is_no_error(tmp_path):
-    summary = analyze_source(tmp_path, 'thermometer', UNKNOWN_BASE_OVERRIDES,
-                             repair='when-it-pays')
-    [unit] = summary.coverage.units
     # before: "only virtual member functions can be marked 'override'",
     # twice, left unrepaired since no call was lost
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'thermometer', UNKNOWN_BASE_OVERRIDES)
 
 
 def test_override_is_kept_where_the_sources_name_a_variable_so():
@@ -334,9 +326,6 @@ private:
 
 
 def test_namespaces_a_directory_name_adds_to(tmp_path):
-    summary = analyze_source(tmp_path, 'servo', PREFIX_NAMESPACES,
-                             repair='when-it-pays')
-    [unit] = summary.coverage.units
     # before: "use of undeclared identifier 'servo'", 'mapkit', and "no
     # member named 'planning_utils' in namespace 'corp'"
-    assert (unit.errors, unit.repair_rounds) == (0, 0), summary.diagnostics
+    assert_analyzes_clean(tmp_path, 'servo', PREFIX_NAMESPACES)
