@@ -3,6 +3,7 @@
 """Session fixtures: each test workspace is compiled once per test run."""
 
 from dataclasses import dataclass
+import functools
 import json
 import os
 from pathlib import Path
@@ -77,17 +78,12 @@ def pytest_xdist_make_scheduler(config, log):
     return ByBuiltWorkspace(config, log)
 
 
-_workspace_cache = {}
-
-
+@functools.lru_cache(maxsize=None)
 def _workspace_of(test_file):
     """The first built workspace a test file names, or None."""
-    if test_file not in _workspace_cache:
-        text = (REPO / test_file).read_text()
-        _workspace_cache[test_file] = next(
-            (f'built:{name}' for name in BUILT_WORKSPACES
-             if re.search(rf'\b{name}\b', text)), None)
-    return _workspace_cache[test_file]
+    text = (REPO / test_file).read_text()
+    return next((f'built:{name}' for name in BUILT_WORKSPACES
+                 if re.search(rf'\b{name}\b', text)), None)
 
 
 def colcon_executable():
