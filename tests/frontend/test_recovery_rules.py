@@ -11,6 +11,7 @@ library, and what the repairs declare compiles.
 
 import glob
 import inspect
+import json
 from pathlib import Path
 import re
 
@@ -20,6 +21,7 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.recovery import kinds
 from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
+from colcon_rsia.package import analysis
 from colcon_rsia.package.coverage import workspace_report
 from colcon_rsia.render.coverage import coverage_to_text
 from conftest import analyze_source
@@ -249,3 +251,56 @@ def test_every_model_header_begins_with_a_comment_line():
     for path in Path(MODEL_HEADERS_DIR).rglob('*'):
         if path.is_file() and path.suffix != '.md':
             assert path.read_text().startswith('//'), path
+
+
+# calls of a model class method, in a unit that starts with a catch-all
+# member of that name: another unit's repair, shared with its package (in
+# that unit a call matched no overload the model declares)
+SEEDED_MODEL_MEMBER = r"""
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Relay : public rclcpp::Node
+{
+public:
+  Relay() : Node("relay")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("out", 10);
+    std::string name = "echo";
+    echo_ = this->create_publisher<std_msgs::msg::String>(
+      name, rclcpp::QoS(1));
+    // the user's version has more parameters than the model's
+    extra_ = create_publisher<std_msgs::msg::String>("extra", 1, 2, 3);
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_, echo_, extra_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Relay>());
+}
+"""
+
+
+def test_a_member_added_to_a_model_class_is_its_last_choice(tmp_path):
+    shared = tmp_path / 'b' / 'rsia' / 'stubs' / 'rsia_model' / 'repair' / \
+        store.SHARED_REPAIRS
+    shared.parent.mkdir(parents=True)
+    shared.write_text(json.dumps(
+        [['model-member:function', 'rclcpp::Node::create_publisher']]))
+    summary = analyze_source(tmp_path, 'relay', SEEDED_MODEL_MEMBER,
+                             repair=analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    assert [(rule, kind) for rule, kind, _ in unit.repairs] == [
+        (store.SEEDED, 'model-member:function')]
+    # the calls the model's overload matches resolve there, not ambiguous
+    # between it and the added member; the call it does not match, to
+    # the added member
+    assert unit.errors == 0, summary.diagnostics
+    [node] = summary.nodes
+    assert sorted((p.topic, p.origin) for p in node.publishers) == [
+        ('echo', 'ast'), ('extra', 'ast'), ('out', 'ast')]

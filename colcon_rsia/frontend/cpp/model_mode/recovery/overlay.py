@@ -124,9 +124,13 @@ def member_declaration(class_name, member, shape):
             return f'static constexpr int {member} = 1;'
         return f'static ::rsia_model::Any {member};'
     # any arguments, any result: a call clang could not match resolves
-    # here, under the class's own name (what the API table reads)
+    # here, under the class's own name (what the API table reads). Only
+    # as the last choice: a C variadic ranks below every conversion, so a
+    # call an overload of the class matches still resolves there (taking
+    # `RsiaA &&...`, the member would tie with that overload or beat it:
+    # an ambiguous call, in every unit the repair is shared with)
     return f'template <class... RsiaA> static ::rsia_model::Any & ' \
-        f'{member}(RsiaA &&...);'
+        f'{member}(...);'
 
 
 def overlays(repairs):
