@@ -61,12 +61,12 @@ def _package(root, name, topic):
     return package
 
 
-def _analyze(root, package, workspace):
+def _analyze(root, package, workspace, repair=analysis.REPAIR_ALWAYS):
     return analysis.analyze_package(
         name=package.name, path=str(package),
         build_base=str(root / 'build' / package.name), jobs=1,
         header_mode='model', workspace_package_dirs=[str(p) for p in workspace],
-        repair=analysis.REPAIR_ALWAYS)
+        repair=repair)
 
 
 @pytest.fixture(scope='module')
@@ -90,6 +90,27 @@ def test_a_second_package_starts_with_what_the_first_needed(two_packages):
     assert (unit.package_errors, unit.repair_rounds) == (0, 0)
     # the repairs it started with say where they came from
     assert unit.repairs
+    assert {rule for rule, _, _ in unit.repairs} == {store.SEEDED}
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['record']
+
+
+def test_a_unit_not_worth_repairing_still_teaches_the_later_ones(tmp_path):
+    # the default policy: the first unit's publisher has its fact despite
+    # the errors, so the unit is parsed once and keeps them
+    first = _package(tmp_path, 'viewer', 'view')
+    second = _package(tmp_path, 'recorder', 'record')
+    workspace = [first, second]
+    [unit] = _analyze(tmp_path, first, workspace,
+                      analysis.REPAIR_WHEN_IT_PAYS).coverage.units
+    assert unit.repair_rounds == 0
+    assert unit.package_errors > 0
+
+    # what its errors showed missing, the next package's unit starts with
+    summary = _analyze(tmp_path, second, workspace,
+                       analysis.REPAIR_WHEN_IT_PAYS)
+    [unit] = summary.coverage.units
+    assert (unit.package_errors, unit.repair_rounds) == (0, 0)
     assert {rule for rule, _, _ in unit.repairs} == {store.SEEDED}
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['record']

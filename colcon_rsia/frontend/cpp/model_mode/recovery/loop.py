@@ -223,6 +223,8 @@ class _Repairing:
                 if any(kind == HEADER for kind, _ in found):
                     self.write_stand_ins_of_repair()
             else:
+                if errors and not rounds:
+                    self.offer_unpaid(tu, errors)
                 break
             self.check_stop()  # each round is one more parse
             rounds += 1
@@ -242,6 +244,22 @@ class _Repairing:
             store.share_repairs(self.header, set(records), self.workspace)
         return ParsedUnit(tu, facts, rounds, records,
                           lost_calls if self.unrecorded else None)
+
+    def offer_unpaid(self, tu, errors):
+        """Offer what a unit's errors show missing, without parsing it again.
+
+        Every call of the unit has its fact, so repairing it would not pay.
+        But the names its errors show missing (a library's function used
+        qualified, a macro) are missing in the package's and the workspace's
+        other units too: those parsed later start with them, at no parse of
+        their own. Clang has not seen these repairs: one that a later unit
+        rejects is withdrawn there, as any shared repair. A header repair is
+        not offered: its stand-ins were never written.
+        """
+        found = self.repairs(tu, errors)
+        store.share_repairs(self.header, {
+            repair for repair in found if repair[0] != HEADER},
+            self.workspace)
 
     @staticmethod
     def score(missing, errors, header_lines):
