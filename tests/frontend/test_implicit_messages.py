@@ -126,3 +126,47 @@ def test_a_namespace_the_code_opens_is_not_an_interface_package(tmp_path):
     # a stand-in of canbus/msg/frame.hpp would redefine canbus::msg::Frame
     assert_analyzes_clean(tmp_path, 'canbus', OWN_MSG_SOURCE, headers={
         'include/canbus/frame.hpp': OWN_MSG_HEADER})
+
+
+# an interface's C header (rosidl generates one beside the C++ one),
+# included by C++ code that uses the C++ message
+C_HEADER_SOURCE = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <sensor_msgs/msg/point_cloud2.h>
+#include <sensor_msgs/msg/point_cloud2.hpp>
+
+class Cropper : public rclcpp::Node
+{
+public:
+  Cropper() : Node("cropper")
+  {
+    pub_ = create_publisher<sensor_msgs::msg::PointCloud2>("cropped", 1);
+    sub_ = create_subscription<sensor_msgs::msg::PointCloud2>(
+      "points", 1,
+      [this](sensor_msgs::msg::PointCloud2::ConstSharedPtr cloud) {
+        pub_->publish(*cloud);
+      });
+  }
+
+private:
+  rclcpp::Publisher<sensor_msgs::msg::PointCloud2>::SharedPtr pub_;
+  rclcpp::Subscription<sensor_msgs::msg::PointCloud2>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Cropper>());
+}
+"""
+
+
+def test_an_interfaces_c_header_declares_no_library_namespace(tmp_path):
+    # before: `sensor_msgs/msg/` was taken for a library's directory below
+    # a model namespace, and its stand-in declared `PointCloud2` a class
+    # again: "definition of type 'PointCloud2' conflicts with type alias
+    # of the same name"
+    summary = assert_analyzes_clean(tmp_path, 'cropper', C_HEADER_SOURCE)
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['cropped']

@@ -136,6 +136,11 @@ def nested_namespace(include):
             not member_ok(parts[1]) or not IDENTIFIER.match(parts[0]):
         return None
     top, name = parts[0], parts[1]
+    if name in _ROS2_INTERFACE_DIRS:
+        # a package's generated interfaces (a C header `pkg/msg/x.h`):
+        # its `pkg::msg` namespace holds messages, which the stand-ins and
+        # the implicit messages declare, and no library's names
+        return None
     if not nested_in_model(top, name):
         return None
     return f'{top}::{name}'
