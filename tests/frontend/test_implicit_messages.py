@@ -170,3 +170,50 @@ def test_an_interfaces_c_header_declares_no_library_namespace(tmp_path):
     summary = assert_analyzes_clean(tmp_path, 'cropper', C_HEADER_SOURCE)
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['cropped']
+
+
+# model names that a library header brings: tf2's getYaw after
+# tf2_geometry_msgs (tf2/utils.h in the real headers), and rclcpp itself
+# after an unmodelled library's header, which the unit includes alone
+BROUGHT_BY_OTHER_HEADERS = r"""
+#include <tf2_geometry_msgs/tf2_geometry_msgs.hpp>
+#include <geometry_msgs/msg/pose_stamped.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <corp_tools/node_base.hpp>
+
+class Heading : public rclcpp::Node
+{
+public:
+  Heading() : Node("heading")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("yaw", 1);
+    sub_ = create_subscription<geometry_msgs::msg::PoseStamped>(
+      "pose", 1, [this](geometry_msgs::msg::PoseStamped::ConstSharedPtr pose) {
+        std_msgs::msg::Float64 yaw;
+        yaw.data = tf2::getYaw(pose->pose.orientation);
+        pub_->publish(yaw);
+      });
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+  rclcpp::Subscription<geometry_msgs::msg::PoseStamped>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Heading>());
+}
+"""
+
+
+def test_model_names_other_headers_bring_are_declared(tmp_path):
+    # before: "no member named 'getYaw' in namespace 'tf2'" and "use of
+    # undeclared identifier 'rclcpp'"
+    summary = assert_analyzes_clean(tmp_path, 'heading',
+                                    BROUGHT_BY_OTHER_HEADERS)
+    [node] = summary.nodes
+    assert [(p.topic, p.msg_type) for p in node.publishers] == [
+        ('yaw', 'std_msgs::msg::Float64')]
+    assert [s.topic for s in node.subscribers] == ['pose']

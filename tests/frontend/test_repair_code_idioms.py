@@ -254,17 +254,18 @@ def test_a_templates_arguments_past_its_line_still_shape_it():
 
 
 def test_a_model_header_a_repair_includes_gets_its_stand_ins(tmp_path):
-    # rclcpp is named before anything includes it (a header of an unknown
-    # library would have): the repair includes the model's rclcpp.hpp,
-    # which includes generated rcl_interfaces messages the unit's scan
-    # never met; without them the parse stopped at a missing file
+    # an enumerator of rcl's, named before anything includes it (a header
+    # of an unknown library would have): the repair includes the model's
+    # rclcpp.hpp, which includes generated rcl_interfaces messages the
+    # unit's scan never met; without them the parse stopped at a missing
+    # file. (A qualified name, `rclcpp::Duration`, is declared before the
+    # first parse: test_implicit_messages.py)
     summary, unit = analyze_one_unit(tmp_path, (
         '#include <vendor_sdk/clock.hpp>\n'
-        'double period() {\n'
-        '  rclcpp::Duration d = rclcpp::Duration::from_seconds(0.5);\n'
-        '  return d.seconds();\n'
+        'int clock_type() {\n'
+        '  return RCL_ROS_TIME;\n'
         '}\n'))
-    assert unit.repair_rounds >= 1
+    assert [kind for _, kind, _ in unit.repairs] == ['header']
     assert unit.errors == 0, summary.diagnostics
 
 

@@ -12,6 +12,8 @@ import re
 import threading
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_LIBRARIES
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS \
@@ -63,6 +65,10 @@ def write_stand_ins(scanner, codes, stub_dir):
     """
     members, constants, field_types, msgs_types, templates, values = \
         used_names(codes)
+    named_headers = _model_headers_named(codes, scanner.visited)
+    for header in named_headers:
+        # (what they include needs its stand-ins too)
+        scanner.scan(os.path.join(MODEL_HEADERS_DIR, header))
     stubs = {}   # include name -> content
     for name, kind in sorted(scanner.missing.items()):
         if kind == 'empty':
@@ -82,6 +88,7 @@ def write_stand_ins(scanner, codes, stub_dir):
                 continue
             for stub_name, content in stand_ins_for(include, codes).items():
                 stubs.setdefault(stub_name, content)
+    implicit += named_headers
     up_dirs = set()
     # (the units of a package are parsed in several processes)
     with _lock, safe_files.directory_lock(stub_dir):
@@ -231,6 +238,37 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
     write_atomically(path, '\n'.join(lines) + '\n')
 
 
+# `top::name` of a model library's namespace, where the code names it
+_MODEL_NAME = re.compile(
+    r'(?<![\w:.>])(' + '|'.join(sorted(MODEL_LIBRARIES, key=len, reverse=True))
+    + r')\s*::\s*([A-Za-z_]\w*)')
+
+
+def _model_headers_named(codes, visited):
+    """The model headers declaring what the sources name, never included.
+
+    A real header includes what its declarations use, and code names what
+    it brought without including it (`tf2::Vector3` after
+    tf2_geometry_msgs). The model's headers include less, so the model
+    header declaring a `top::name` of a model library that the unit's
+    includes never reach is included early, like an implicit message.
+
+    :param visited: the files the unit's include scan reached
+    """
+    # (the recovery reads the model's declarations for its repairs, and
+    # imports this module)
+    from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
+        model_header_for
+    # (a message package's interfaces are the implicit messages)
+    named = {match.groups() for code in codes
+             for match in _MODEL_NAME.finditer(code)
+             if match.group(2) not in ('msg', 'srv', 'action')}
+    headers = {model_header_for(f'{top}::{name}') for top, name in named}
+    return sorted(
+        header for header in headers - {None}
+        if os.path.join(MODEL_HEADERS_DIR, header) not in visited)
+
+
 def _merge_implicit(stub_dir, implicit):
     """Grow rsia_model/implicit_messages.h by these includes."""
     path = os.path.join(stub_dir, IMPLICIT_MESSAGES_HEADER)
@@ -241,8 +279,8 @@ def _merge_implicit(stub_dir, implicit):
         return
     lines = [
         f'{STUB_MARKER} kind=implicit',
-        '// messages the sources name, declared before any use: the real',
-        '// message headers include what their fields use']
+        '// messages and model names the sources name, declared before any',
+        '// use: the real headers include what their declarations use']
     lines += [f'#include <{n}>' for n in sorted(old_includes | set(implicit))]
     write_atomically(path, '\n'.join(lines) + '\n')
 
