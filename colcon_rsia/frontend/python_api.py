@@ -365,6 +365,10 @@ DUCK_CALLS = {
     'registerCallback': PyApi(REGISTER_CALLBACK, callback=(0, 'cb')),
 }
 
+# the libraries the table models, by their top-level modules
+API_MODULES = frozenset(
+    name.split('.')[0] for name in CALLS) - {'functools', 'time'}
+
 # inner modules the libraries re-export from; a name starting with a key
 # (followed by '.' or nothing) is rewritten to start with its value
 ALIASES = {

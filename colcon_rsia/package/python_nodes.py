@@ -34,6 +34,7 @@ from typing import List
 from typing import Optional
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.python_api import API_MODULES
 from colcon_rsia.package.nodes import cmakelists_text
 from colcon_rsia.package.nodes import project_name
 import defusedxml.ElementTree as ElementTree
@@ -150,6 +151,11 @@ def _package_modules(package_path):
             directory = os.path.join(root, entry)
             if entry in SKIPPED_DIRECTORIES or entry.startswith('.') or \
                     not os.path.isfile(os.path.join(directory, '__init__.py')):
+                continue
+            if entry in API_MODULES:
+                # the client library's own package (rospy in ros_comm):
+                # its scripts call the API, which the table reads, not its
+                # implementation
                 continue
             for dirpath, dirnames, filenames in os.walk(directory):
                 dirnames[:] = sorted(

@@ -418,3 +418,36 @@ def test_service_clients_are_recorded(tmp_path):
         'rsia_py_ros2/mission_server': [
             ('lights_on', api, 'rsia_py_ros2/mission_server.py:33')],
     }
+
+
+def test_the_client_librarys_own_scripts_call_its_api(tmp_path):
+    """In the client library's own package, `rospy.X` is still the API."""
+    package = _catkin_package(tmp_path / 'rospy', 'rospy')
+    _write(package, {
+        'setup.py': '',
+        # the library's implementation, which the table models
+        'src/rospy/__init__.py': 'from rospy.topics import Publisher\n',
+        'src/rospy/topics.py': (
+            'class Publisher(object):\n'
+            '    def __init__(self, name, data_class, queue_size=None):\n'
+            '        self.name = name\n\n'
+            '    def publish(self, message):\n'
+            '        pass\n'),
+        'test_nodes/talker.py': (
+            '#!/usr/bin/env python\n'
+            'import rospy\n'
+            'from std_msgs.msg import String\n\n\n'
+            'def talker():\n'
+            "    rospy.init_node('talker', anonymous=True)\n"
+            "    pub = rospy.Publisher('chatter', String, queue_size=10)\n"
+            '    rate = rospy.Rate(10)\n'
+            '    while not rospy.is_shutdown():\n'
+            "        pub.publish('hello')\n"
+            '        rate.sleep()\n\n\n'
+            "if __name__ == '__main__':\n"
+            '    talker()\n'),
+    })
+    summary = _analyze(package, tmp_path / 'build')
+    [node] = [n for n in summary['nodes'] if n['executable'] == 'talker.py']
+    assert [(p['topic'], p['label'], p['pattern']) for p in node['publishers']] \
+        == [('chatter', 'independent', 'no_subscribers')]
