@@ -329,3 +329,52 @@ def test_namespaces_a_directory_name_adds_to(tmp_path):
     # before: "use of undeclared identifier 'servo'", 'mapkit', and "no
     # member named 'planning_utils' in namespace 'corp'"
     assert_analyzes_clean(tmp_path, 'servo', PREFIX_NAMESPACES)
+
+
+# namespaces that only an unmodelled library's header brings: the unit
+# never includes Eigen's or yaml-cpp's own headers
+BROUGHT_NAMESPACES = r"""
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <corp_lidar/filter.hpp>
+
+namespace ec = Eigen;
+
+class Tilt : public rclcpp::Node
+{
+public:
+  Tilt() : Node("tilt")
+  {
+    YAML::Node config = YAML::LoadFile("tilt.yaml");
+    pub_ = create_publisher<std_msgs::msg::Float64>("tilt", 1);
+    timer_ = create_wall_timer(std::chrono::milliseconds(100), [this]() {
+      Eigen::AngleAxisf roll(0.1f, Eigen::Vector3f::UnitX());
+      ec::Matrix3f rotation = roll.toRotationMatrix();
+      std_msgs::msg::Float64 tilt;
+      tilt.data = rotation(2, 2);
+      pub_->publish(tilt);
+    });
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Tilt>());
+}
+"""
+
+
+def test_a_namespace_an_unmodelled_header_brings_is_declared(tmp_path):
+    # before: "use of undeclared identifier 'Eigen'" (and 'YAML'): no
+    # include of the unit named them
+    summary = assert_analyzes_clean(tmp_path, 'tilt', BROUGHT_NAMESPACES)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('tilt', 'independent')]

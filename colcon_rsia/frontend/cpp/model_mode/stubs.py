@@ -61,7 +61,8 @@ def write_stand_ins(scanner, codes, stub_dir):
     """Write the stand-ins one TU needs.
 
     :returns: (the extra include dirs, the namespaces of unknown includes
-      that the TU declares itself)
+      that the TU declares itself, the stand-ins of namespaces no include
+      names, which the unit includes first)
     """
     members, constants, field_types, msgs_types, templates, values = \
         used_names(codes)
@@ -75,7 +76,7 @@ def write_stand_ins(scanner, codes, stub_dir):
             stubs[name] = empty_stub(name)
         else:
             stubs.update(stand_ins_for(name, codes))
-    unknown, own = _unknown_namespaces(stubs, codes)
+    unknown, own, brought = _unknown_namespaces(stubs, codes)
     implicit = []
     for package, includes in sorted(msgs_types.items()):
         for include in sorted(includes):
@@ -110,7 +111,9 @@ def write_stand_ins(scanner, codes, stub_dir):
         _merge_implicit(stub_dir, implicit)
         _merge_fields(stub_dir, members, constants, field_types, templates,
                       values)
-    return sorted(up_dirs), own
+    return sorted(up_dirs), own, [
+        os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
+        for namespace in brought]
 
 
 def _stub_path(stub_dir, name):
@@ -290,7 +293,8 @@ def _unknown_namespaces(stubs, codes):
 
     :returns: ({namespace: (types {name: static members}, objects,
       constants, templates {name: is a function}, nested namespaces {name:
-      names})}, sorted namespaces the TU declares itself)
+      names})}, sorted namespaces the TU declares itself, the namespaces
+      no include names, which the unit must include)
 
     For the namespace of each unknown include directory (a package's name is
     its namespace, by ROS convention), the names the sources use after
@@ -342,6 +346,13 @@ def _unknown_namespaces(stubs, codes):
                     namespaces.add(f'{prefix}::{rest}')
             elif prefix in qualifiers and library_namespace(prefix):
                 namespaces.add(prefix)
+    # a namespace no include of the unit names, brought by an unknown
+    # header (a library's header includes Eigen's): the unit includes it
+    brought = sorted(
+        name for name in qualifiers - namespaces
+        if empties and name not in with_messages and
+        _brought_namespace(name, codes))
+    namespaces.update(brought)
     # names that are namespaces of their own at the top: `dir::` alone
     # never means `top::dir::` for them
     tops = MODEL_NAMESPACES | {name.split('/')[0] for name in stubs}
@@ -353,8 +364,13 @@ def _unknown_namespaces(stubs, codes):
             continue
         last = namespace.rsplit('::', 1)[-1]
         spelled = _spelled(namespace, unqualified=last not in tops)
+        # (and its aliases: `namespace ec = Eigen;` then `ec::Matrix3f`)
+        aliases = sorted({alias for code in codes for alias in re.findall(
+            r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?' + spelled + r'\s*;',
+            code)})
         use = re.compile(
-            r'(?<![\w:])' + spelled + r'\s*::\s*([A-Za-z_]\w*)'
+            r'(?<![\w:])(?:' + '|'.join([spelled] + aliases) +
+            r')\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
         types, objects, constants = {}, set(), set()
         nested = {}  # nested namespace -> the names used in it
@@ -419,7 +435,35 @@ def _unknown_namespaces(stubs, codes):
         if types or objects or constants or templates or nested:
             result[namespace] = (types, objects, constants, templates,
                                  nested)
-    return result, own
+    return result, own, [name for name in brought if name in result]
+
+
+def _brought_namespace(name, codes):
+    """Whether `name`, used as `name::`, may be a library's namespace.
+
+    Not when the model declares it, nor when the sources do (a class, an
+    alias, a template parameter) or use it but as a qualifier (`Name
+    value;`: a class).
+    """
+    from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
+        model_declarations  # (the recovery imports this module)
+    if not library_namespace(name) or name in model_declarations() or any(
+            re.search(r'\bnamespace\s+' + name + r'\s*=', code)
+            for code in codes):
+        return False  # (the last: an alias the sources declare)
+    use = re.compile(r'(?<![\w:.>])' + name + r'\b(?!\s*::)')
+    for code in codes:
+        for match in use.finditer(code):
+            # `using namespace name;`, `namespace alias = name;`
+            before = code[max(0, match.start() - 80):match.start()]
+            if not _NAMESPACE_USE.search(before):
+                return False
+    return True
+
+
+# what precedes a namespace's name where it is not followed by `::`
+_NAMESPACE_USE = re.compile(
+    r'(?:\bnamespace|\bnamespace\s+\w+\s*=)\s*\Z')
 
 
 # what comes before a name in an expression, where `ns::pi * ratio` is a
