@@ -150,3 +150,57 @@ def test_the_workspace_file_lies_beside_the_packages_outputs(tmp_path):
     path = Path(workspace_repairs_file(str(tmp_path / 'build' / 'viewer')))
     assert path.is_relative_to(tmp_path / 'build')
     assert not path.is_relative_to(tmp_path / 'build' / 'viewer')
+
+
+# a package header whose call the catch-all types make ambiguous: any unit
+# that includes it meets the same error at the same place
+CONVERT_HEADER = """\
+#pragma once
+#include <string>
+#include <corp_geometry/state.hpp>
+
+namespace conv
+{
+inline void copy(const corp_geometry::Pose & in, std::string & out) {}
+inline void copy(const corp_geometry::Twist & in, std::string & out) {}
+
+inline std::string describe(const corp_geometry::State & state)
+{
+  std::string text;
+  copy(state.pose, text);
+  return text;
+}
+}  // namespace conv
+"""
+CONVERT_USER = """\
+#include "conv/convert.hpp"
+
+std::string {name}(const corp_geometry::State & state)
+{{
+  return conv::describe(state);
+}}
+"""
+
+
+def test_an_edit_in_a_header_is_shared_with_the_units_including_it(tmp_path):
+    package = tmp_path / 'src' / 'conv'
+    (package / 'include' / 'conv').mkdir(parents=True)
+    (package / 'include' / 'conv' / 'convert.hpp').write_text(CONVERT_HEADER)
+    (package / 'src').mkdir()
+    for name in ('first', 'second'):
+        (package / 'src' / f'{name}.cpp').write_text(
+            CONVERT_USER.format(name=name))
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\nproject(conv)\n'
+        'include_directories(include)\n'
+        'add_library(conv src/first.cpp src/second.cpp)\n')
+    units = _analyze(tmp_path, package, [package]).coverage.units
+    first, second = sorted(units, key=lambda u: u.file)
+    assert first.repair_rounds >= 1
+    assert first.package_errors == 0
+    # the second starts with the first one's edit of the header
+    assert (second.package_errors, second.repair_rounds) == (0, 0)
+    # (a cast of the arguments to the first candidate's parameters)
+    assert [(rule, kind.partition(':')[0]) for rule, kind, _
+            in second.repairs if kind.startswith('edit')] == [
+        (store.SEEDED, 'edit-cast')]

@@ -121,10 +121,17 @@ SHARED_REPAIRS = 'package.repairs.json'
 _shared_lock = threading.Lock()
 
 
+# the files other units include too
+_HEADER_FILES = ('.h', '.hh', '.hpp', '.hxx', '.h++', '.ipp', '.inl')
+
+
 def _shareable(repair):
     kind, name = repair
     if is_edit(kind):
-        return False  # a place in one file, which other units may not include
+        # a place in one file: in a header, every unit that includes it
+        # meets the same error there (in other units the edit is unused)
+        return name.rpartition(':')[0].rpartition(':')[0].endswith(
+            _HEADER_FILES)
     # (a member of a qualified class: with its class, which is shared too)
     return kind in INCLUDES or kind.startswith('macro-') or (
         '::' in name and (kind not in MEMBER_KINDS or
