@@ -217,3 +217,40 @@ def test_model_names_other_headers_bring_are_declared(tmp_path):
     assert [(p.topic, p.msg_type) for p in node.publishers] == [
         ('yaw', 'std_msgs::msg::Float64')]
     assert [s.topic for s in node.subscribers] == ['pose']
+
+
+# a class that a library's ROS 1 and ROS 2 model headers both declare
+# (image_transport/publisher.h and publisher.hpp), reached through the
+# unit's own include
+BOTH_VERSIONS = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <image_transport/image_transport.hpp>
+#include <sensor_msgs/msg/image.hpp>
+
+class Relay : public rclcpp::Node
+{
+public:
+  Relay() : Node("relay")
+  {
+    pub_ = image_transport::create_publisher(this, "out");
+  }
+
+private:
+  image_transport::Publisher pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Relay>());
+}
+"""
+
+
+def test_a_model_name_its_include_declares_is_not_declared_again(tmp_path):
+    # before: the ROS 1 header was included too: "redefinition of
+    # 'Publisher'"
+    summary = assert_analyzes_clean(tmp_path, 'relay', BOTH_VERSIONS)
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['out']

@@ -66,7 +66,8 @@ def write_stand_ins(scanner, codes, stub_dir):
     """
     members, constants, field_types, msgs_types, templates, values = \
         used_names(codes)
-    named_headers = _model_headers_named(codes, scanner.visited)
+    named_headers = _model_headers_named(codes, scanner.visited,
+                                         scanner.ros2)
     for header in named_headers:
         # (what they include needs its stand-ins too)
         scanner.scan(os.path.join(MODEL_HEADERS_DIR, header))
@@ -247,7 +248,7 @@ _MODEL_NAME = re.compile(
     + r')\s*::\s*([A-Za-z_]\w*)')
 
 
-def _model_headers_named(codes, visited):
+def _model_headers_named(codes, visited, ros2):
     """The model headers declaring what the sources name, never included.
 
     A real header includes what its declarations use, and code names what
@@ -257,19 +258,27 @@ def _model_headers_named(codes, visited):
     includes never reach is included early, like an implicit message.
 
     :param visited: the files the unit's include scan reached
+    :param ros2: whether the unit is ROS 2 code: of a library's ROS 1 and
+      ROS 2 headers declaring the name, its version's
     """
     # (the recovery reads the model's declarations for its repairs, and
     # imports this module)
     from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
-        model_header_for
+        model_headers_declaring
     # (a message package's interfaces are the implicit messages)
     named = {match.groups() for code in codes
              for match in _MODEL_NAME.finditer(code)
              if match.group(2) not in ('msg', 'srv', 'action')}
-    headers = {model_header_for(f'{top}::{name}') for top, name in named}
-    return sorted(
-        header for header in headers - {None}
-        if os.path.join(MODEL_HEADERS_DIR, header) not in visited)
+    headers = set()
+    for top, name in named:
+        found = model_headers_declaring(f'{top}::{name}')
+        if found and not any(os.path.join(MODEL_HEADERS_DIR, header)
+                             in visited for header in found):
+            headers.add(min(found, key=lambda p: (
+                not p.startswith(top + '/'),
+                p.endswith('.h') if ros2 else p.endswith('.hpp'),
+                len(p), p)))
+    return sorted(headers)
 
 
 def _merge_implicit(stub_dir, implicit):

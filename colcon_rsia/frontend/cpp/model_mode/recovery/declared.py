@@ -310,6 +310,20 @@ def model_header_for(name):
     *namespaces, short = name.split('::')
     if not namespaces:
         return global_enumerator_header(short)
+    found = model_headers_declaring(name)
+    if not found:
+        return None
+    return min(found, key=lambda p: (
+        not p.startswith(namespaces[0] + '/'), len(p), p))
+
+
+def model_headers_declaring(name):
+    """Every model header (relative path) declaring a qualified name.
+
+    (A library's ROS 1 and ROS 2 headers may both: publisher.h and
+    publisher.hpp.)
+    """
+    *namespaces, short = name.split('::')
     texts = model_header_texts()
     with _lock:
         if not _model_header_index:
@@ -324,9 +338,5 @@ def model_header_for(name):
                     declared_names([top_level]) |
                     set(_FUNCTION_DECLARED.findall(top_level)) |
                     _extern_names(text)))
-    found = [path for path, opened, names in _model_header_index
-             if namespaces[0] in opened and short in names]
-    if not found:
-        return None
-    return min(found, key=lambda p: (
-        not p.startswith(namespaces[0] + '/'), len(p), p))
+    return [path for path, opened, names in _model_header_index
+            if namespaces[:1] and namespaces[0] in opened and short in names]
