@@ -716,6 +716,7 @@ def test_include_scan_survives_odd_sources(tmp_path):
         b'#include <roscpp/Empty.h>\n#include <pkg_msgs/ModeAction.h>\n'
         b'#include <pkg/ControllerConfig.h>\n#include <pkg/missing.h>\n'
         b'bool cb(roscpp::Empty::Request&, roscpp::Empty::Response&);\n'
+        b'void reconfigure(pkg::ControllerConfig & config, uint32_t level);\n'
         b'static vendor_sdk::Client client(vendor_sdk::DEFAULT_PORT, 2);\n'
         b'int main() { return vendor_sdk::connect(client).code; } // \xe9\n')
     stub_dir = tmp_path / 'stubs'

@@ -378,3 +378,42 @@ def test_a_namespace_an_unmodelled_header_brings_is_declared(tmp_path):
     [node] = summary.nodes
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('tilt', 'independent')]
+
+
+# a library's header named after its class, in a directory that adds to
+# its namespace's name: no message, though it looks like one
+CLASS_HEADER = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <lanelet2_core/LaneletMap.h>
+
+ros::Publisher pub;
+
+void onMap(const std_msgs::String::ConstPtr & msg)
+{
+  lanelet::LaneletMapPtr map(new lanelet::LaneletMap);
+  for (const auto & area : map->polygonLayer) {
+    std_msgs::String type;
+    type.data = area.attributeOr(lanelet::AttributeName::Type, "none");
+    pub.publish(type);
+  }
+}
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "areas");
+  ros::NodeHandle nh;
+  pub = nh.advertise<std_msgs::String>("area_types", 1);
+  ros::Subscriber sub = nh.subscribe("map", 1, onMap);
+  ros::spin();
+}
+"""
+
+
+def test_a_header_named_after_its_class_is_no_message(tmp_path):
+    # before: a message `lanelet2_core::LaneletMap`, and no `lanelet::`
+    # namespace: "no member named 'LaneletMapPtr' in namespace 'lanelet'"
+    summary = assert_analyzes_clean(tmp_path, 'areas', CLASS_HEADER)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('area_types', 'dependent')]

@@ -95,6 +95,8 @@ class Scanner:
         # include name -> 'stub' (a stand-in by its name) | 'empty' (a
         # system header this machine lacks)
         self.missing = {}
+        # the missing includes a model header makes (its messages)
+        self.included_by_model = set()
         self.user_texts = []
         self.files = files or FileCache()
         # the directories an include searches after its own (keys of
@@ -129,6 +131,8 @@ class Scanner:
                 if name.startswith(GENERATED_PREFIX):
                     continue  # merged into the stub directory, never stood in
                 self.missing.setdefault(name, 'stub')
+                if not user_file:
+                    self.included_by_model.add(name)
 
     def _includes(self, path):
         if path.startswith(MODEL_HEADERS_DIR + os.sep):

@@ -214,8 +214,12 @@ def printable(text):
     return text.encode('ascii', 'replace').decode('ascii')
 
 
-def stand_ins_for(include, codes):
-    """{include name: content} of the stand-in(s) for one include."""
+def stand_ins_for(include, codes, message=False):
+    """{include name: content} of the stand-in(s) for one include.
+
+    :param message: whether a `pkg/Name.h` is known to be a message's
+      header (a model header includes it, or it is part of a message)
+    """
     parts = include.split('/')
     if len(parts) == 3 and parts[1] in _ROS2_INTERFACE_DIRS and \
             parts[2].endswith('.hpp') and PACKAGE.match(parts[0]):
@@ -232,14 +236,23 @@ def stand_ins_for(include, codes):
         re.search(r'\b' + package + r'\s*::\s*' + name + r'\b(?!\s*[(<])',
                   code)
         for code in codes)
-    if not (PACKAGE.match(package) and (CAMEL.match(name) or named)):
+    # ... and a library's header named after its class
+    # (lanelet2_core/LaneletMap.h) looks like one: a message is in its
+    # package's namespace, which the code then names (or in a package
+    # named as interface packages are)
+    in_namespace = message or package.endswith(('_msgs', '_srvs')) or any(
+        re.search(r'(?<![\w:])' + package + r'\s*::', code) or
+        re.search(r'\busing\s+namespace\s+' + package + r'\s*;', code)
+        for code in codes)
+    if not (PACKAGE.match(package) and (
+            named or (CAMEL.match(name) and in_namespace))):
         return {include: empty_stub(include)}
     for suffix, member in (('ActionGoal', 'goal'), ('ActionResult', 'result'),
                            ('ActionFeedback', 'feedback')):
         if name.endswith(suffix) and len(name) > len(suffix):
             base = name[:-len(suffix)]
             inner = base + suffix[len('Action'):]
-            stubs = stand_ins_for(f'{package}/{inner}.h', codes)
+            stubs = stand_ins_for(f'{package}/{inner}.h', codes, True)
             stubs[include] = _message_stub(
                 package, name, includes=[f'{package}/{inner}.h'],
                 typedefs=[(f'_{member}_type', f'{inner}_<ContainerAllocator>')])
@@ -252,7 +265,7 @@ def stand_ins_for(include, codes):
         for part, member in (('Goal', 'goal'), ('Result', 'result'),
                              ('Feedback', 'feedback')):
             sub = f'{package}/{base}Action{part}.h'
-            stubs.update(stand_ins_for(sub, codes))
+            stubs.update(stand_ins_for(sub, codes, True))
             includes.append(sub)
             typedefs.append((f'_action_{member}_type',
                              f'{base}Action{part}_<ContainerAllocator>'))
@@ -266,7 +279,7 @@ def stand_ins_for(include, codes):
             not name.endswith(('Request', 'Response')):
         stubs = {}
         for part in ('Request', 'Response'):
-            stubs.update(stand_ins_for(f'{package}/{name}{part}.h', codes))
+            stubs.update(stand_ins_for(f'{package}/{name}{part}.h', codes, True))
         if message_evidence(name, codes):
             stubs[include] = _combined_stub(package, name)
         else:

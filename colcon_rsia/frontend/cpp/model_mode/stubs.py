@@ -76,7 +76,8 @@ def write_stand_ins(scanner, codes, stub_dir):
         if kind == 'empty':
             stubs[name] = empty_stub(name)
         else:
-            stubs.update(stand_ins_for(name, codes))
+            stubs.update(stand_ins_for(
+                name, codes, name in scanner.included_by_model))
     unknown, own, brought = _unknown_namespaces(stubs, codes)
     implicit = []
     for package, includes in sorted(msgs_types.items()):
