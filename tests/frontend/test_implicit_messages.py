@@ -9,7 +9,13 @@ stand-ins of message headers include nothing; the model declares such
 messages for the unit that names them.
 """
 
+import os
+
+from colcon_rsia.frontend.cpp import model_mode
+from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.package import analysis
 from model_sources import assert_analyzes_clean
+from model_sources import write_sources
 
 # an interface package of any name (no `_msgs` suffix), and
 # builtin_interfaces, named and not included
@@ -254,3 +260,91 @@ def test_a_model_name_its_include_declares_is_not_declared_again(tmp_path):
     summary = assert_analyzes_clean(tmp_path, 'relay', BOTH_VERSIONS)
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['out']
+
+
+# two units of one package: a library file without a ROS 2 include of its
+# own, naming diagnostic_updater's class, and a ROS 2 node including the
+# library's ROS 2 header
+LIBRARY_UNIT = r"""
+#include <corp_driver/status.hpp>
+
+void fill(diagnostic_updater::DiagnosticStatusWrapper & status)
+{
+  status.summary(0, "ok");
+}
+"""
+NODE_UNIT = r"""
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <diagnostic_updater/diagnostic_updater.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Monitor : public rclcpp::Node
+{
+public:
+  Monitor() : Node("monitor"), updater_(this)
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("state", 1);
+  }
+
+private:
+  diagnostic_updater::Updater updater_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+
+def test_a_model_header_named_by_one_unit_is_included_by_it_alone(tmp_path):
+    # before: the library unit's early header (the ROS 1 one: it has no
+    # ROS 2 include) went to every unit of the package; the node then
+    # had both versions: "redefinition of 'DiagnosticStatusWrapper'"
+    package, _ = write_sources(tmp_path, a_library=LIBRARY_UNIT,
+                               node=NODE_UNIT)
+    (package / 'CMakeLists.txt').write_text(
+        'cmake_minimum_required(VERSION 3.8)\nproject(pkg)\n'
+        'add_library(status src/a_library.cpp)\n'
+        'add_executable(monitor src/node.cpp)\n')
+    summary = analysis.analyze_package(
+        name='pkg', path=str(package), build_base=str(tmp_path / 'build'),
+        jobs=1, header_mode='model', workspace_package_dirs=[str(package)],
+        repair=analysis.REPAIR_WHEN_IT_PAYS)
+    units = {u.file: u for u in summary.coverage.units}
+    assert units['src/node.cpp'].errors == 0, summary.diagnostics
+    assert units['src/a_library.cpp'].errors == 0, summary.diagnostics
+
+
+def test_the_workspaces_copy_of_a_model_header_is_not_included_first(
+        tmp_path):
+    # the library itself is in the workspace (its real headers declare
+    # what they declare): the unit names tf2::getYaw, which its own
+    # tf2/utils.h declares, but never includes it
+    package, [source] = write_sources(tmp_path, node=(
+        '#include <corp_driver/pose.hpp>\n'
+        'double yaw(const corp_driver::Pose & pose)\n'
+        '{\n  return tf2::getYaw(pose.orientation);\n}\n'))
+    own = package / 'include' / 'tf2' / 'utils.h'
+    own.parent.mkdir(parents=True)
+    own.write_text('#pragma once\nnamespace tf2 {\n'
+                   'template <class A> double getYaw(const A & a);\n}\n')
+    arguments = model_mode.prepare_model_arguments(
+        source=str(source),
+        arguments=['-std=gnu++17', '-I' + str(package / 'include')],
+        package_path=str(package), workspace_package_dirs=[str(package)],
+        stub_dir=str(tmp_path / 'stubs'))
+    first = [arguments[i + 1] for i, a in enumerate(arguments[:-1])
+             if a == '-include']
+    assert not [f for f in first if f.endswith('tf2/utils.h')]
+    # without the copy, the model's is
+    own.unlink()
+    arguments = model_mode.prepare_model_arguments(
+        source=str(source),
+        arguments=['-std=gnu++17', '-I' + str(package / 'include')],
+        package_path=str(package), workspace_package_dirs=[str(package)],
+        stub_dir=str(tmp_path / 'stubs2'))
+    assert os.path.join(MODEL_HEADERS_DIR, 'tf2', 'utils.h') in arguments

@@ -109,7 +109,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
     scanner.scan(os.path.abspath(source))
     # the sources as code: no comments, literals or include lines
     codes = [code_only(text) for text in scanner.user_texts]
-    up_dirs, own, brought = write_stand_ins(scanner, codes, stub_dir)
+    up_dirs, own, first = write_stand_ins(scanner, codes, stub_dir)
     result = [word for pair in own_first for word in pair] + \
         ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += std_defines(codes)
@@ -136,7 +136,7 @@ def prepare_model_arguments(*, source, arguments, package_path,
         result.append('-DRSIA_MODEL_RCLCPP=1')
     for up_dir in up_dirs:
         result += ['-I', up_dir]
-    for header in brought:
+    for header in first:
         result += ['-include', header]
     return result
 

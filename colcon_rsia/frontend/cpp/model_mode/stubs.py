@@ -61,13 +61,13 @@ def write_stand_ins(scanner, codes, stub_dir):
     """Write the stand-ins one TU needs.
 
     :returns: (the extra include dirs, the namespaces of unknown includes
-      that the TU declares itself, the stand-ins of namespaces no include
-      names, which the unit includes first)
+      that the TU declares itself, the headers the unit includes first:
+      model headers declaring what it names but never includes, and the
+      stand-ins of namespaces no include names)
     """
     members, constants, field_types, msgs_types, templates, values = \
         used_names(codes)
-    named_headers = _model_headers_named(codes, scanner.visited,
-                                         scanner.ros2)
+    named_headers = _model_headers_named(codes, scanner)
     for header in named_headers:
         # (what they include needs its stand-ins too)
         scanner.scan(os.path.join(MODEL_HEADERS_DIR, header))
@@ -91,7 +91,6 @@ def write_stand_ins(scanner, codes, stub_dir):
                 continue
             for stub_name, content in stand_ins_for(include, codes).items():
                 stubs.setdefault(stub_name, content)
-    implicit += named_headers
     up_dirs = set()
     # (the units of a package are parsed in several processes)
     with _lock, safe_files.directory_lock(stub_dir):
@@ -113,9 +112,12 @@ def write_stand_ins(scanner, codes, stub_dir):
         _merge_implicit(stub_dir, implicit)
         _merge_fields(stub_dir, members, constants, field_types, templates,
                       values)
+    # (for this unit only, unlike the implicit messages: another unit of
+    # the package may include the library's other ROS version's header)
     return sorted(up_dirs), own, [
-        os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
-        for namespace in brought]
+        os.path.join(MODEL_HEADERS_DIR, header) for header in named_headers
+    ] + [os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
+         for namespace in brought]
 
 
 def _stub_path(stub_dir, name):
@@ -249,18 +251,20 @@ _MODEL_NAME = re.compile(
     + r')\s*::\s*([A-Za-z_]\w*)')
 
 
-def _model_headers_named(codes, visited, ros2):
+def _model_headers_named(codes, scanner):
     """The model headers declaring what the sources name, never included.
 
     A real header includes what its declarations use, and code names what
     it brought without including it (`tf2::Vector3` after
     tf2_geometry_msgs). The model's headers include less, so the model
     header declaring a `top::name` of a model library that the unit's
-    includes never reach is included early, like an implicit message.
+    includes never reach is included first (by this unit alone).
 
-    :param visited: the files the unit's include scan reached
-    :param ros2: whether the unit is ROS 2 code: of a library's ROS 1 and
-      ROS 2 headers declaring the name, its version's
+    Not where the workspace has its own copy of the header (the library
+    itself: its real headers declare what they declare). Of a library's
+    ROS 1 and ROS 2 headers declaring the name, the unit's version's.
+
+    :param scanner: the unit's include scan (what it reached)
     """
     # (the recovery reads the model's declarations for its repairs, and
     # imports this module)
@@ -274,12 +278,15 @@ def _model_headers_named(codes, visited, ros2):
     for top, name in named:
         found = model_headers_declaring(f'{top}::{name}')
         if found and not any(os.path.join(MODEL_HEADERS_DIR, header)
-                             in visited for header in found):
+                             in scanner.visited for header in found):
             headers.add(min(found, key=lambda p: (
                 not p.startswith(top + '/'),
-                p.endswith('.h') if ros2 else p.endswith('.hpp'),
+                p.endswith('.h') if scanner.ros2 else p.endswith('.hpp'),
                 len(p), p)))
-    return sorted(headers)
+    return sorted(
+        header for header in headers
+        if scanner.resolve(header, False, '') ==
+        os.path.join(MODEL_HEADERS_DIR, header))
 
 
 def _merge_implicit(stub_dir, implicit):
@@ -292,8 +299,8 @@ def _merge_implicit(stub_dir, implicit):
         return
     lines = [
         f'{STUB_MARKER} kind=implicit',
-        '// messages and model names the sources name, declared before any',
-        '// use: the real headers include what their declarations use']
+        '// messages the sources name, declared before any use: the real',
+        '// message headers include what their fields use']
     lines += [f'#include <{n}>' for n in sorted(old_includes | set(implicit))]
     write_atomically(path, '\n'.join(lines) + '\n')
 
