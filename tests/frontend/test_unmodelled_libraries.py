@@ -417,3 +417,51 @@ def test_a_header_named_after_its_class_is_no_message(tmp_path):
     [node] = summary.nodes
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('area_types', 'dependent')]
+
+
+# class templates of an unknown library with value parameters
+VALUE_PARAMETERS = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <Eigen/Core>
+#include <spatial/rtree.hpp>
+
+using Tree = spatial::rtree<int, spatial::rstar<16>>;
+using Wide = spatial::rtree<int, spatial::rstar<16, 4>>;
+
+class Norm : public rclcpp::Node
+{
+public:
+  Norm() : Node("norm")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("norm", 1);
+    timer_ = create_wall_timer(std::chrono::seconds(1), [this]() {
+      Eigen::Matrix<double, 6, 1> twist;
+      Eigen::Matrix<double, 6, 6> covariance;
+      std_msgs::msg::Float64 norm;
+      norm.data = (covariance * twist).norm();
+      pub_->publish(norm);
+    });
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+  Tree tree_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Norm>());
+}
+"""
+
+
+def test_class_templates_of_values_are_declared_with_their_shape(tmp_path):
+    # before: "no template named 'Matrix' in namespace 'Eigen'" and
+    # "template argument for template type parameter must be a type"
+    summary = assert_analyzes_clean(tmp_path, 'norm', VALUE_PARAMETERS)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('norm', 'independent')]

@@ -23,6 +23,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import \
     end_of_template_arguments
 from colcon_rsia.frontend.cpp.model_mode.source_names import KNOWN_METHODS
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
+from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
@@ -319,9 +320,12 @@ def _unknown_namespaces(stubs, codes):
     a variable) as catch-all classes, ALL_CAPS names as constants, others as
     catch-all objects (functions, variables). A name used with template
     arguments (`ns::Name<T>`, or `Name<T>` after `using ns::Name;`) is a
-    template: a class template when capitalised, a function template
-    otherwise, unless a use has value arguments (`ns::Grid<3>`), whose
-    parameters the repairs declare from the use (recovery/). A namespace
+    template: a class template when capitalised or used as a type
+    (`ns::rtree<V, ns::rstar<16>>`), a function template otherwise. A
+    class template's parameters are the shape its uses' arguments fit
+    (`Matrix<double, 3, 3>`: a type, then values), and it has the static
+    members its uses name (`Matrix<double, 3, 3>::Identity()`); where no
+    shape fits every use, the repairs declare it (recovery/). A namespace
     the sources open themselves, or one with messages of this TU, is left
     alone (and named in the second result). Below a namespace the model or
     the sources own, the next directory is a nested namespace; a directory
@@ -393,6 +397,7 @@ def _unknown_namespaces(stubs, codes):
         nested = {}  # nested namespace -> the names used in it
         class_templates = set()  # (nested namespace, name)
         template_kinds = {}  # name -> the kinds of its uses (template_kind)
+        template_members = {}  # name -> its static members the code uses
         scoped = set()  # templates whose use names a type
         for code in codes:
             for match in use.finditer(code):
@@ -405,6 +410,12 @@ def _unknown_namespaces(stubs, codes):
                         template_kind(code[match.end(1):].lstrip()))
                     if _class_template_use(code, match.end(1)):
                         scoped.add(name)
+                    end = end_of_template_arguments(code, match.end(1))
+                    static = end and _STATIC_MEMBER.match(code, end)
+                    if static and member_ok(static.group(1)):
+                        # `Matrix<double, 3, 3>::Identity()`
+                        template_members.setdefault(name, set()).add(
+                            static.group(1))
                 elif _ALIASED.search(
                         code, max(0, match.start() - 80), match.start()):
                     # `namespace fs = boost::filesystem;`: a namespace
@@ -440,9 +451,19 @@ def _unknown_namespaces(stubs, codes):
                     objects.add(name)
         for name, kinds in _templates_used_unqualified(spelled, codes):
             template_kinds.setdefault(name, set()).update(kinds)
-        templates = {name: not name[:1].isupper() and name not in scoped
-                     for name, kinds in template_kinds.items()
-                     if kinds == {'template'}}
+        # {name: True (a function) or (the kind of a class template, its
+        # static members)}
+        templates = {}
+        for name, kinds in template_kinds.items():
+            if not name[:1].isupper() and name not in scoped:
+                # (a catch-all function takes value arguments too)
+                templates[name] = True
+            elif kinds == {'template'} or _common_shape(kinds):
+                # `Matrix<double, 6, 1>`: a class template with a type
+                # and value parameters
+                templates[name] = (
+                    _common_shape(kinds) or 'template',
+                    frozenset(template_members.get(name, ())))
         for name, member in class_templates:
             nested[name].discard(member)
         for name in set(template_kinds) | set(nested):
@@ -483,12 +504,35 @@ _NAMESPACE_USE = re.compile(
     r'(?:\bnamespace|\bnamespace\s+\w+\s*=)\s*\Z')
 
 
+def _common_shape(kinds):
+    """The parameters' shape that every use's arguments fit, or None.
+
+    :param kinds: `template:<shape>`s of the uses (source_names.
+      template_kind): `rstar<16>` and `rstar<16, 4>` fit `v` and a pack of
+      more values; a use of types only (`template`) gives no shape
+    """
+    shapes = [kind.partition(':')[2] for kind in kinds]
+    if not all(shapes):
+        return None
+    shortest = min(shapes, key=len)
+    if all(shape.startswith(shortest) and
+           set(shape[len(shortest):]) <= {shortest[-1]} for shape in shapes):
+        return f'template:{shortest}'
+    return None
+
+
 # what comes before a name in an expression, where `ns::pi * ratio` is a
 # product, not a declaration of a pointer
 _IN_EXPRESSION = re.compile(r'(?:[-+*/%=?!|^]|\breturn)\s*\Z')
 # what follows the arguments of a class template's use: a member
-# (`fieldList<PointT>::type`) or a declared name (`shared_ptr<T> cloud`)
-_AFTER_CLASS_TEMPLATE = re.compile(r'\s*(?:::|[&*]*\s*[A-Za-z_])')
+# (`fieldList<PointT>::type`), a declared name (`shared_ptr<T> cloud`),
+# or the end of the template arguments it is one of (`rtree<V, rstar<16>>`:
+# a function template's use is a call)
+_AFTER_CLASS_TEMPLATE = re.compile(r'\s*(?:::|[&*]*\s*[A-Za-z_]|[>,])')
+# a static member after a class template's arguments
+_STATIC_MEMBER = re.compile(r'\s*::\s*([A-Za-z_]\w*)\b(?!\s*::)')
+# what precedes a type that a use of a template is: `using Tree = `
+_ALIAS_OF = re.compile(r'\busing\s+\w+\s*=\s*(?:typename\s+)?[\w:\s]*\Z')
 
 
 def _class_template_use(code, start):
@@ -498,8 +542,9 @@ def _class_template_use(code, start):
     do, whatever the case of the template's name.
     """
     end = end_of_template_arguments(code, start)
-    return end is not None and \
-        _AFTER_CLASS_TEMPLATE.match(code, end) is not None
+    return end is not None and (
+        _AFTER_CLASS_TEMPLATE.match(code, end) is not None or
+        _ALIAS_OF.search(code, max(0, start - 120), start) is not None)
 
 
 # what precedes the target of a namespace alias
@@ -553,9 +598,19 @@ def _merge_unknown(stub_dir, namespace, names):
                 match.group(2).split())
         objects |= set(re.findall(r'^// object (\w+)$', old, re.M))
         constants |= set(re.findall(r'^// constant (\w+)$', old, re.M))
-        for match in re.finditer(r'^// (class|function) template (\w+)$',
-                                 old, re.M):
-            templates.setdefault(match.group(2), match.group(1) == 'function')
+        for match in re.finditer(
+                r'^// (class|function) template (\w+)(?: (template\S*):)?'
+                r'([\w ]*)$', old, re.M):
+            name = match.group(2)
+            if match.group(1) == 'function':
+                templates[name] = True
+                continue
+            kind, members = match.group(3) or 'template', \
+                frozenset(match.group(4).split())
+            if isinstance(templates.get(name), tuple):
+                # (the parameters as another unit declared them)
+                members |= templates[name][1]
+            templates[name] = (kind, members)
         for match in re.finditer(r'^// namespace (\w+):([\w ]*)$', old, re.M):
             nested.setdefault(match.group(1), set()).update(
                 match.group(2).split())
@@ -584,12 +639,21 @@ def _merge_unknown(stub_dir, namespace, names):
                 f'#ifndef {member}', f'  static ::rsia_model::Any {member};',
                 '#endif')])
         lines.append('#endif')
-    for name, is_function in sorted(templates.items()):
-        lines += [
-            f"// {'function' if is_function else 'class'} template {name}",
-            _undeclared(namespace, name)]
-        lines += catch_all_function(name) if is_function else \
-            catch_all_class(name, head='template <class...> ')
+    for name, declared in sorted(templates.items()):
+        if declared is True:
+            lines += [f'// function template {name}',
+                      _undeclared(namespace, name)]
+            lines += catch_all_function(name)
+        else:
+            kind, members = declared
+            lines += [f'// class template {name} {kind}:' + ''.join(
+                ' ' + m for m in sorted(members)),
+                _undeclared(namespace, name)]
+            lines += catch_all_class(name, head=template_head(kind), members=[
+                line for member in sorted(members)
+                if member not in POINTER_TYPES for line in (
+                    f'#ifndef {member}',
+                    f'  static ::rsia_model::Any {member};', '#endif')])
         lines.append('#endif')
     for name, members in sorted(nested.items()):
         lines += [f'// namespace {name}:' + ''.join(
