@@ -465,3 +465,38 @@ def test_class_templates_of_values_are_declared_with_their_shape(tmp_path):
     [node] = summary.nodes
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('norm', 'independent')]
+
+
+# names written from the global namespace (`::lib::...`)
+GLOBALLY_QUALIFIED = r"""
+#include <ros/ros.h>
+#include <std_msgs/Int32.h>
+#include <slam_core/map_builder.h>
+
+ros::Publisher pub;
+
+void onScan(const std_msgs::Int32::ConstPtr & msg)
+{
+  ::slam_core::sensor::RangeData range_data;
+  auto builder = ::slam_core::mapping::CreateMapBuilder(range_data);
+  std_msgs::Int32 count;
+  count.data = builder.size();
+  pub.publish(count);
+}
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "slam");
+  ros::NodeHandle nh;
+  pub = nh.advertise<std_msgs::Int32>("count", 1);
+  ros::Subscriber sub = nh.subscribe("scan", 1, onScan);
+  ros::spin();
+}
+"""
+
+
+def test_names_qualified_from_the_global_namespace_are_declared(tmp_path):
+    # before: "no type named 'RangeData' in namespace 'slam_core::sensor'"
+    summary = assert_analyzes_clean(tmp_path, 'slam', GLOBALLY_QUALIFIED)
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['count']

@@ -248,7 +248,8 @@ def _merge_fields(stub_dir, members, constants, field_types=(),
 
 # `top::name` of a model library's namespace, where the code names it
 _MODEL_NAME = re.compile(
-    r'(?<![\w:.>])(' + '|'.join(sorted(MODEL_LIBRARIES, key=len, reverse=True))
+    r'(?<![\w:.>])(?:::\s*)?('
+    + '|'.join(sorted(MODEL_LIBRARIES, key=len, reverse=True))
     + r')\s*::\s*([A-Za-z_]\w*)')
 
 
@@ -390,7 +391,7 @@ def _unknown_namespaces(stubs, codes):
             r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?' + spelled + r'\s*;',
             code)})
         use = re.compile(
-            r'(?<![\w:])(?:' + '|'.join([spelled] + aliases) +
+            r'(?<![\w:])(?:::\s*)?(?:' + '|'.join([spelled] + aliases) +
             r')\s*::\s*([A-Za-z_]\w*)'
             r'(\s*<|\s*::\s*([A-Za-z_]\w*)|\s*[&*]*\s*[A-Za-z_]\w*\s*[;=({,)\[])?')
         types, objects, constants = {}, set(), set()
@@ -564,7 +565,8 @@ def _spelled(namespace, *, unqualified=True):
 
 
 # a name qualifying another: `dynamixel::PortHandler` (not `a::b` inside)
-_QUALIFIER = re.compile(r'(?<![\w:.>])([A-Za-z_]\w*)\s*::\s*[A-Za-z_~]')
+_QUALIFIER = re.compile(
+    r'(?<![\w:.>])(?:::\s*)?([A-Za-z_]\w*)\s*::\s*[A-Za-z_~]')
 
 
 def _templates_used_unqualified(spelled, codes):
