@@ -311,7 +311,8 @@ def _unknown_namespaces(stubs, codes):
     """Guess what unknown includes declare.
 
     :returns: ({namespace: (types {name: static members}, objects,
-      constants, templates {name: is a function}, nested namespaces {name:
+      constants, templates {name: True for a function, (the kind of its
+      parameters, static members) for a class}, nested namespaces {name:
       names})}, sorted namespaces the TU declares itself, the namespaces
       no include names, which the unit must include)
 
