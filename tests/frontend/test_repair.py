@@ -5,7 +5,7 @@
 import re
 
 from colcon_rsia.frontend import cpp
-from colcon_rsia.frontend.cpp.model_mode.recovery import kinds
+from colcon_rsia.frontend.cpp.model_mode import model_index
 from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.frontend.cpp.walker import _Walker
@@ -343,7 +343,7 @@ def test_the_packages_own_namespace_is_repaired_where_used_first():
     found = rules.repairs_from_diagnostics(
         [("use of undeclared identifier 'autoware'", 'a.h', 1, 7)],
         line_reader(code.split('\n')[0]), texts=[code],
-        declared=kinds.declared_names([code]))
+        declared=model_index.declared_names([code]))
     assert ('namespace', 'autoware') in found
     # nothing of the package's own is declared again
     assert not {name for _, name in found if 'Tracker' in name}
@@ -480,7 +480,7 @@ def test_a_new_namespace_gets_what_the_code_uses_of_it():
 
 def test_names_the_package_declares_are_never_repaired():
     header = 'namespace karto {\nclass Transform\n{\n};\n}\n'
-    declared = kinds.declared_names([header])
+    declared = model_index.declared_names([header])
     found = rules.repairs_from_diagnostics(
         [("no type named 'Transform' in namespace 'karto'", 'a.cpp', 1, 8),
          ("no type named 'Transform' in namespace 'acme'", 'a.cpp', 2, 7)],

@@ -3,7 +3,7 @@
 """Model mode repairs: helpers of other files, aliases, macros, subdirectories."""
 
 
-from colcon_rsia.frontend.cpp.model_mode.recovery import kinds
+from colcon_rsia.frontend.cpp.model_mode import model_index
 from colcon_rsia.frontend.cpp.model_mode.recovery import rules
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.package import analysis
@@ -721,7 +721,7 @@ def test_a_comparison_declares_no_variable():
 def test_an_alias_of_its_namesake_declares_nothing_of_the_package():
     # the package opens a `namespace pcl` of its own (for a point type) and
     # aliases pcl's names: pcl::PointCloud is still pcl's, and missing
-    declared = kinds.declared_names([
+    declared = model_index.declared_names([
         'namespace pcl\n{\nstruct PointXYZIR {};\n}\n'
         'class Filter\n{\n'
         '  using PointCloud = pcl::PointCloud<pcl::PointXYZ>;\n'
@@ -743,7 +743,7 @@ def test_a_name_the_package_declares_in_another_namespace_is_repaired():
     # the package's `using Trajectory = autoware::trajectory::Trajectory<P>;`
     # inside its own `namespace autoware::planning` declares no
     # autoware::trajectory::Trajectory
-    declared = kinds.declared_names([
+    declared = model_index.declared_names([
         'namespace autoware::planning\n{\n'
         'class Module\n{\n'
         '  using Trajectory = autoware::trajectory::Trajectory<Point>;\n'

@@ -16,6 +16,10 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_LIBRARIES
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
+from colcon_rsia.frontend.cpp.model_mode.model_index import \
+    model_declarations
+from colcon_rsia.frontend.cpp.model_mode.model_index import \
+    model_headers_declaring
 from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS \
     as _ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
@@ -268,10 +272,6 @@ def _model_headers_named(codes, scanner):
 
     :param scanner: the unit's include scan (what it reached)
     """
-    # (the recovery reads the model's declarations for its repairs, and
-    # imports this module)
-    from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
-        model_headers_declaring
     # (a message package's interfaces are the implicit messages)
     named = {match.groups() for code in codes
              for match in _MODEL_NAME.finditer(code)
@@ -485,8 +485,6 @@ def _brought_namespace(name, codes):
     alias, a template parameter) or use it but as a qualifier (`Name
     value;`: a class).
     """
-    from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
-        model_declarations  # (the recovery imports this module)
     if not library_namespace(name) or name in model_declarations() or any(
             re.search(r'\bnamespace\s+' + name + r'\s*=', code)
             for code in codes):

@@ -6,10 +6,12 @@ import re
 import threading
 
 from colcon_rsia.frontend.cpp.model_mode.headers import model_header_texts
+from colcon_rsia.frontend.cpp.model_mode.model_index import declared_names
+from colcon_rsia.frontend.cpp.model_mode.model_index import \
+    model_headers_declaring
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import base_kind
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CONSTANT
-from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import declared_names
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import FUNCTION
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import INCLUDES
@@ -233,44 +235,6 @@ def file_declarations(path, text):
     return found
 
 
-_model_declarations = []
-
-
-def model_declarations():
-    """The names the model headers declare (read once)."""
-    texts = model_header_texts()
-    with _lock:
-        if not _model_declarations:
-            _model_declarations.append(declared_names(
-                text for _, text in texts))
-        return _model_declarations[0]
-
-
-_model_header_index = []
-# a function at namespace level (`Logger get_logger(const std::string &);`):
-# a repair of one of its calls includes the model header instead of
-# declaring a catch-all the call would prefer
-_FUNCTION_DECLARED = re.compile(
-    r'^(?!return\b)(?:[A-Za-z_][\w:<>,]*(?:\s+[\w:<>,]+)*\s*[*&]*\s*)?'
-    r'\b([a-z_]\w*)\s*\(', re.MULTILINE)
-_NAMESPACE_OPENED = re.compile(r'\bnamespace\s+(\w+)\s*\{')
-
-
-# `extern const std::string RGB8, RGBA8, ...;` at namespace level (its list
-# may go on over indented lines)
-_EXTERN_DECLARED = re.compile(r'^extern\s+[^;(){}]*;', re.MULTILINE)
-
-
-def _extern_names(text):
-    """The names of the variables the extern declarations of a text declare."""
-    names = set()
-    for match in _EXTERN_DECLARED.finditer(text):
-        *_, first = match.group(0)[:-1].split(',')[0].split()
-        names.update([first.lstrip('*&')] + [
-            name.strip() for name in match.group(0)[:-1].split(',')[1:]])
-    return names
-
-
 _ENUM_BODY = re.compile(r'\benum\s+(?!class\b|struct\b)\w*\s*(?::[^{;]*)?\{([^}]*)\}')
 _global_enumerators = []  # [{enumerator: model header}], read once
 
@@ -315,28 +279,3 @@ def model_header_for(name):
         return None
     return min(found, key=lambda p: (
         not p.startswith(namespaces[0] + '/'), len(p), p))
-
-
-def model_headers_declaring(name):
-    """Every model header (relative path) declaring a qualified name.
-
-    (A library's ROS 1 and ROS 2 headers may both: publisher.h and
-    publisher.hpp.)
-    """
-    *namespaces, short = name.split('::')
-    texts = model_header_texts()
-    with _lock:
-        if not _model_header_index:
-            for path, text in texts:
-                # what a namespace declares: the model headers do not
-                # indent namespace bodies, members are indented
-                top_level = '\n'.join(
-                    line for line in text.split('\n')
-                    if line[:1] not in (' ', '\t'))
-                _model_header_index.append((
-                    path, set(_NAMESPACE_OPENED.findall(text)),
-                    declared_names([top_level]) |
-                    set(_FUNCTION_DECLARED.findall(top_level)) |
-                    _extern_names(text)))
-    return [path for path, opened, names in _model_header_index
-            if namespaces[:1] and namespaces[0] in opened and short in names]

@@ -4,7 +4,6 @@
 
 import re
 
-from colcon_rsia.frontend.cpp.model_mode.source_names import COMMENT_OR_STRING
 
 ALL_CAPS = re.compile(r'^[A-Z][A-Z0-9_]*$')
 CAMEL = re.compile(r'^_?[A-Z]')
@@ -127,43 +126,3 @@ def declared_as_variable(name, texts):
 
 # a constant by Google's style: kMaxSize
 K_CONSTANT = re.compile(r'^k[A-Z]')
-
-_DECLARATION = re.compile(
-    r'\bnamespace\s+((?:\w+\s*::\s*)+\w+)\s*\{|'
-    r'\b(?:class|struct|union|enum(?:\s+class)?|namespace)\s+'
-    r'(?:\w+\s+)?(\w+)\s*(?:final\s*)?[:{]|'
-    r'\busing\s+(\w+)\s*=|\btypedef\b[^;{}]*?\b(\w+)\s*;|'
-    r'^\s*#\s*define\s+(\w+)', re.MULTILINE)
-
-
-def declared_names(texts):
-    """Names that classes, namespaces, aliases and macros of texts declare."""
-    names = set()
-    for text in texts:
-        # `class X  // : public Base` then `{` on the next line
-        code = COMMENT_OR_STRING.sub(' ', text)
-        for match in _DECLARATION.finditer(code):
-            if _aliases_namesake(code, match):
-                continue
-            # (each namespace of `namespace autoware::planning {`)
-            names.update(part.strip() for g in match.groups() if g
-                         for part in g.split('::'))
-    return names
-
-
-def _aliases_namesake(code, match):
-    """Whether a declaration is an alias of its namesake elsewhere.
-
-    `using PointCloud = pcl::PointCloud<P>;` and `typedef pcl::IndicesPtr
-    IndicesPtr;` declare nothing of pcl's: pcl::PointCloud stays missing
-    (and repairable) when the package opens a `namespace pcl` of its own.
-    """
-    alias, typedef = match.group(3), match.group(4)
-    if alias:
-        end = code.find(';', match.end())
-        target = code[match.end():None if end < 0 else end]
-        return re.search(r'::\s*' + alias + r'\b', target) is not None
-    if typedef:
-        return re.search(r'::\s*' + typedef + r'\b',
-                         match.group(0)[:-1]) is not None
-    return False

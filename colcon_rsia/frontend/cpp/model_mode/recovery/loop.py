@@ -10,6 +10,7 @@ from typing import Optional
 
 from colcon_rsia import safe_files
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
+from colcon_rsia.frontend.cpp.model_mode.model_index import declared_names
 from colcon_rsia.frontend.cpp.model_mode.recovery import applied
 from colcon_rsia.frontend.cpp.model_mode.recovery import edits
 from colcon_rsia.frontend.cpp.model_mode.recovery import messages
@@ -18,8 +19,6 @@ from colcon_rsia.frontend.cpp.model_mode.recovery import render
 from colcon_rsia.frontend.cpp.model_mode.recovery import store
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     file_declarations
-from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import \
-    declared_names
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import HEADER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import is_edit
 from colcon_rsia.frontend.cpp.model_mode.recovery.rules import found_repairs

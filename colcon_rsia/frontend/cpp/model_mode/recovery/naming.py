@@ -4,13 +4,13 @@
 
 import re
 
+from colcon_rsia.frontend.cpp.model_mode.model_index import declared_names
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import base_kind
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import C_FUNCTION
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import CONSTANT
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import declared_as_variable
-from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import declared_names
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import FUNCTION
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import K_CONSTANT
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import KEYWORDS

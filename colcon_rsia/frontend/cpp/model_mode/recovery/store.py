@@ -16,10 +16,10 @@ import re
 import threading
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.model_index import \
+    model_declarations
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     is_declared
-from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
-    model_declarations
 from colcon_rsia.frontend.cpp.model_mode.recovery.declared import \
     one_kind_each
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import FUNCTION
