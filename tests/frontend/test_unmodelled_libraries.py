@@ -500,3 +500,44 @@ def test_names_qualified_from_the_global_namespace_are_declared(tmp_path):
     summary = assert_analyzes_clean(tmp_path, 'slam', GLOBALLY_QUALIFIED)
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['count']
+
+
+# a dynamic_reconfigure config named inside its package's namespace
+CONFIG_IN_OWN_NAMESPACE = r"""
+#include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <dynamic_reconfigure/server.h>
+#include <scan_tools/ScanToolsConfig.h>
+
+namespace scan_tools
+{
+class Scaler
+{
+public:
+  explicit Scaler(ros::NodeHandle & nh) : srv_(nh)
+  {
+    pub_ = nh.advertise<std_msgs::Float64>("scale", 1);
+    srv_.setCallback([this](ScanToolsConfig & config, uint32_t level) {
+      reconfig(config, level);
+    });
+  }
+
+private:
+  void reconfig(ScanToolsConfig & config, uint32_t level)
+  {
+    std_msgs::Float64 scale;
+    scale.data = config.scale;
+    pub_.publish(scale);
+  }
+
+  ros::Publisher pub_;
+  dynamic_reconfigure::Server<ScanToolsConfig> srv_;
+};
+}  // namespace scan_tools
+"""
+
+
+def test_a_config_named_in_its_packages_namespace_is_one(tmp_path):
+    # the package's namespace is opened, never named: still its config
+    # (before: an empty stand-in, "unknown type name 'ScanToolsConfig'")
+    assert_analyzes_clean(tmp_path, 'scan_tools', CONFIG_IN_OWN_NAMESPACE)

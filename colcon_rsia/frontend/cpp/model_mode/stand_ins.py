@@ -237,12 +237,13 @@ def stand_ins_for(include, codes, message=False):
                   code)
         for code in codes)
     # ... and a library's header named after its class
-    # (lanelet2_core/LaneletMap.h) looks like one: a message is in its
-    # package's namespace, which the code then names (or in a package
-    # named as interface packages are)
+    # (lanelet2_core/LaneletMap.h) looks like one: a message (or a
+    # dynamic_reconfigure config) is in its package's namespace, which the
+    # code then names, uses or opens (or in a package named as interface
+    # packages are)
     in_namespace = message or package.endswith(('_msgs', '_srvs')) or any(
         re.search(r'(?<![\w:])' + package + r'\s*::', code) or
-        re.search(r'\busing\s+namespace\s+' + package + r'\s*;', code)
+        re.search(r'\bnamespace\s+' + package + r'\b', code)
         for code in codes)
     if not (PACKAGE.match(package) and (
             named or (CAMEL.match(name) and in_namespace))):
