@@ -541,3 +541,10 @@ def test_a_config_named_in_its_packages_namespace_is_one(tmp_path):
     # the package's namespace is opened, never named: still its config
     # (before: an empty stand-in, "unknown type name 'ScanToolsConfig'")
     assert_analyzes_clean(tmp_path, 'scan_tools', CONFIG_IN_OWN_NAMESPACE)
+
+
+def test_an_include_directory_of_any_characters_gets_a_stand_in():
+    # (its name goes into patterns: `c++` must not be read as one)
+    from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
+    stubs = stand_ins_for('c++/Widget.h', ['c++::Widget w;'])
+    assert 'kind=empty' in stubs['c++/Widget.h'].split('\n', 1)[0]

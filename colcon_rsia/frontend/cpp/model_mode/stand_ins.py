@@ -233,7 +233,8 @@ def stand_ins_for(include, codes, message=False):
     # template arguments, which a message's typedef takes none of
     # (thrust/device_vector.h and thrust::device_vector<T>)
     named = IDENTIFIER.match(name) and any(
-        re.search(r'\b' + package + r'\s*::\s*' + name + r'\b(?!\s*[(<])',
+        re.search(r'\b' + re.escape(package) + r'\s*::\s*' + name +
+                  r'\b(?!\s*[(<])',
                   code)
         for code in codes)
     # ... and a library's header named after its class
@@ -242,8 +243,8 @@ def stand_ins_for(include, codes, message=False):
     # code then names, uses or opens (or in a package named as interface
     # packages are)
     in_namespace = message or package.endswith(('_msgs', '_srvs')) or any(
-        re.search(r'(?<![\w:])' + package + r'\s*::', code) or
-        re.search(r'\bnamespace\s+' + package + r'\b', code)
+        re.search(r'(?<![\w:])' + re.escape(package) + r'\s*::', code) or
+        re.search(r'\bnamespace\s+' + re.escape(package) + r'\b', code)
         for code in codes)
     if not (PACKAGE.match(package) and (
             named or (CAMEL.match(name) and in_namespace))):
