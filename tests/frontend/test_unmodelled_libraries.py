@@ -544,7 +544,9 @@ def test_a_config_named_in_its_packages_namespace_is_one(tmp_path):
 
 
 def test_an_include_directory_of_any_characters_gets_a_stand_in():
-    # (its name goes into patterns: `c++` must not be read as one)
+    # (its name goes into patterns, and must not be read as one: before,
+    # re.error ended the unit's preparation)
     from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
-    stubs = stand_ins_for('c++/Widget.h', ['c++::Widget w;'])
-    assert 'kind=empty' in stubs['c++/Widget.h'].split('\n', 1)[0]
+    for include in ('c++/Widget.h', 'vendor(2/Widget.h'):
+        stubs = stand_ins_for(include, ['int widgets;'])
+        assert 'kind=empty' in stubs[include].split('\n', 1)[0]
