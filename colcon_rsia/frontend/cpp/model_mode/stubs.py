@@ -371,10 +371,8 @@ def _unknown_namespaces(stubs, codes):
                 namespaces.add(prefix)
     # a namespace no include of the unit names, brought by an unknown
     # header (a library's header includes Eigen's): the unit includes it
-    brought = sorted(
-        name for name in qualifiers - namespaces
-        if empties and name not in with_messages and
-        _brought_namespace(name, codes))
+    brought = sorted(_brought_namespaces(
+        qualifiers - namespaces - with_messages, codes)) if empties else []
     namespaces.update(brought)
     # names that are namespaces of their own at the top: `dir::` alone
     # never means `top::dir::` for them
@@ -478,25 +476,31 @@ def _unknown_namespaces(stubs, codes):
     return result, own, [name for name in brought if name in result]
 
 
-def _brought_namespace(name, codes):
-    """Whether `name`, used as `name::`, may be a library's namespace.
+def _brought_namespaces(names, codes):
+    """Those of `names` (used as `name::`) that may be a library's namespace.
 
-    Not when the model declares it, nor when the sources do (a class, an
-    alias, a template parameter) or use it but as a qualifier (`Name
-    value;`: a class).
+    Not one the model declares, nor one the sources do (a class, an alias,
+    a template parameter) or use but as a qualifier (`Name value;`: a
+    class). (One search of the sources for all of them: a unit's scanned
+    headers may be megabytes.)
     """
-    if not library_namespace(name) or name in model_declarations() or any(
-            re.search(r'\bnamespace\s+' + name + r'\s*=', code)
-            for code in codes):
-        return False  # (the last: an alias the sources declare)
-    use = re.compile(r'(?<![\w:.>])' + name + r'\b(?!\s*::)')
+    names = {name for name in names if library_namespace(name) and
+             name not in model_declarations()}
+    if not names:
+        return set()
+    spelled = '|'.join(sorted(names, key=len, reverse=True))
+    alias = re.compile(r'\bnamespace\s+(' + spelled + r')\s*=')
+    use = re.compile(r'(?<![\w:.>])(' + spelled + r')\b(?!\s*::)')
+    other = set()
     for code in codes:
+        other.update(alias.findall(code))
         for match in use.finditer(code):
             # `using namespace name;`, `namespace alias = name;`
             before = code[max(0, match.start() - 80):match.start()]
-            if not _NAMESPACE_USE.search(before):
-                return False
-    return True
+            if match.group(1) not in other and \
+                    not _NAMESPACE_USE.search(before):
+                other.add(match.group(1))
+    return names - other
 
 
 # what precedes a namespace's name where it is not followed by `::`
