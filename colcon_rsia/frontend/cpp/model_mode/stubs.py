@@ -377,6 +377,9 @@ def _unknown_namespaces(stubs, codes):
     # names that are namespaces of their own at the top: `dir::` alone
     # never means `top::dir::` for them
     tops = MODEL_NAMESPACES | {name.split('/')[0] for name in stubs}
+    # every `namespace alias = target;` of the sources (read once)
+    aliased = {(alias, target) for code in codes
+               for alias, target in _NAMESPACE_ALIAS.findall(code)}
     result = {}
     own = []
     for namespace in sorted(namespaces):
@@ -386,9 +389,8 @@ def _unknown_namespaces(stubs, codes):
         last = namespace.rsplit('::', 1)[-1]
         spelled = _spelled(namespace, unqualified=last not in tops)
         # (and its aliases: `namespace ec = Eigen;` then `ec::Matrix3f`)
-        aliases = sorted({alias for code in codes for alias in re.findall(
-            r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?' + spelled + r'\s*;',
-            code)})
+        aliases = sorted({alias for alias, target in aliased
+                          if re.fullmatch(spelled, target)})
         use = re.compile(
             r'(?<![\w:])(?:::\s*)?(?:' + '|'.join([spelled] + aliases) +
             r')\s*::\s*([A-Za-z_]\w*)'
@@ -458,12 +460,14 @@ def _unknown_namespaces(stubs, codes):
             if not name[:1].isupper() and name not in scoped:
                 # (a catch-all function takes value arguments too)
                 templates[name] = True
-            elif kinds == {'template'} or _common_shape(kinds):
-                # `Matrix<double, 6, 1>`: a class template with a type
-                # and value parameters
+                continue
+            # `Matrix<double, 6, 1>`: a class template with a type and
+            # value parameters
+            kind = 'template' if kinds == {'template'} else \
+                _common_shape(kinds)
+            if kind:
                 templates[name] = (
-                    _common_shape(kinds) or 'template',
-                    frozenset(template_members.get(name, ())))
+                    kind, frozenset(template_members.get(name, ())))
         for name, member in class_templates:
             nested[name].discard(member)
         for name in set(template_kinds) | set(nested):
@@ -497,15 +501,15 @@ def _brought_namespaces(names, codes):
         for match in use.finditer(code):
             # `using namespace name;`, `namespace alias = name;`
             before = code[max(0, match.start() - 80):match.start()]
-            if match.group(1) not in other and \
-                    not _NAMESPACE_USE.search(before):
+            if match.group(1) not in other and not (
+                    _OPENED.search(before) or _ALIASED.search(before)):
                 other.add(match.group(1))
     return names - other
 
 
-# what precedes a namespace's name where it is not followed by `::`
-_NAMESPACE_USE = re.compile(
-    r'(?:\bnamespace|\bnamespace\s+\w+\s*=)\s*\Z')
+# the namespace an alias names: `namespace fs = boost::filesystem;`
+_NAMESPACE_ALIAS = re.compile(
+    r'\bnamespace\s+(\w+)\s*=\s*(?:::\s*)?([A-Za-z_][\w\s:]*?)\s*;')
 
 
 def _common_shape(kinds):
@@ -553,6 +557,8 @@ def _class_template_use(code, start):
 
 # what precedes the target of a namespace alias
 _ALIASED = re.compile(r'\bnamespace\s+\w+\s*=\s*(?:::\s*)?\Z')
+# what precedes a namespace's name in `using namespace name;`
+_OPENED = re.compile(r'\bnamespace\s*\Z')
 
 
 def _spelled(namespace, *, unqualified=True):
