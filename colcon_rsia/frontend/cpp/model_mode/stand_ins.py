@@ -237,17 +237,20 @@ def stand_ins_for(include, codes, message=False):
                   r'\b(?!\s*[(<])',
                   code)
         for code in codes)
-    # ... and a library's header named after its class
-    # (lanelet2_core/LaneletMap.h) looks like one: a message (or a
-    # dynamic_reconfigure config) is in its package's namespace, which the
-    # code then names, uses or opens (or in a package named as interface
-    # packages are)
-    in_namespace = message or package.endswith(('_msgs', '_srvs')) or any(
-        re.search(r'(?<![\w:])' + re.escape(package) + r'\s*::', code) or
-        re.search(r'\bnamespace\s+' + re.escape(package) + r'\b', code)
-        for code in codes)
+
+    def in_namespace():
+        # ... and a library's header named after its class
+        # (lanelet2_core/LaneletMap.h) looks like one: a message (or a
+        # dynamic_reconfigure config) is in its package's namespace, which
+        # the code then names, uses or opens (or in a package named as
+        # interface packages are). (Searched only where it decides.)
+        return message or package.endswith(('_msgs', '_srvs')) or any(
+            re.search(r'(?<![\w:])' + re.escape(package) + r'\s*::', code)
+            or re.search(r'\bnamespace\s+' + re.escape(package) + r'\b',
+                         code)
+            for code in codes)
     if not (PACKAGE.match(package) and (
-            named or (CAMEL.match(name) and in_namespace))):
+            named or (CAMEL.match(name) and in_namespace()))):
         return {include: empty_stub(include)}
     for suffix, member in (('ActionGoal', 'goal'), ('ActionResult', 'result'),
                            ('ActionFeedback', 'feedback')):
