@@ -429,8 +429,10 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     ] + facts.diagnostics
     errors = cpp.error_diagnostics(tu)
     facts.errors = len(errors)
+    # (an error with no place, a force-included header not found say,
+    # stops the parse before the package's code: it counts)
     facts.package_errors = sum(
-        1 for e in errors if e[1] and _inside(e[1], package_path))
+        1 for e in errors if not e[1] or _inside(e[1], package_path))
     facts.repair_rounds = rounds
     # (without an error in the package's code the parse lost nothing; the
     # repair rounds counted it already when they ran)

@@ -550,3 +550,68 @@ def test_an_include_directory_of_any_characters_gets_a_stand_in():
     for include in ('c++/Widget.h', 'vendor(2/Widget.h'):
         stubs = stand_ins_for(include, ['int widgets;'])
         assert 'kind=empty' in stubs[include].split('\n', 1)[0]
+
+
+# a package adding overloads to a library's namespace (as a conversions
+# header does): the library's own names it uses stay the library's
+EXTENDED_NAMESPACE = r"""
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <grid/conversions.h>
+#include <grid/GridHeader.h>
+
+namespace grid
+{
+namespace io
+{
+inline int load(const std::string & file, sensor_msgs::PointCloud2 & cloud)
+{
+  grid::GridBlob blob;
+  int result = grid::io::load(file, blob);
+  grid::toMsg(blob, cloud);
+  return result;
+}
+}  // namespace io
+
+template <typename T>
+void fromMsg(const sensor_msgs::PointCloud2 & cloud, grid::Cloud<T> & out)
+{
+  grid::FieldMap map;
+  grid::makeMapping<T>(cloud.fields, map);
+  grid::GridHeader header;
+  out.header = header;
+}
+}  // namespace grid
+
+ros::Publisher pub;
+
+void onCloud(const sensor_msgs::PointCloud2::ConstPtr & msg)
+{
+  grid::Cloud<grid::Cell> cells;
+  grid::fromMsg(*msg, cells);
+  sensor_msgs::PointCloud2 copy;
+  grid::io::load("cells.bin", copy);
+  pub.publish(copy);
+}
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "cells");
+  ros::NodeHandle nh;
+  pub = nh.advertise<sensor_msgs::PointCloud2>("cells", 1);
+  ros::Subscriber sub = nh.subscribe("cloud", 1, onCloud);
+  ros::spin();
+}
+"""
+
+
+def test_a_namespace_the_sources_add_to_keeps_the_librarys_names(tmp_path):
+    # before: "no template named 'Cloud' in namespace 'grid'": a namespace
+    # the sources open was left to them whole; then, declared, the
+    # library's `grid::io::load` of another type would not be an overload
+    # of theirs, nor `grid::GridHeader` the stand-in of its header
+    summary = assert_analyzes_clean(tmp_path, 'cells', EXTENDED_NAMESPACE)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('cells', 'dependent')]
+    assert [s.topic for s in node.subscribers] == ['cloud']

@@ -197,6 +197,14 @@ def read_text(path):
     return data.decode('utf-8', errors='surrogateescape')
 
 
+def write_atomically(path, content):
+    """Write a text file whole or not at all (readers never see half).
+
+    Stand-ins keep undecodable names as they were read.
+    """
+    safe_files.write_text_atomically(path, content, errors='surrogateescape')
+
+
 def _read_includes(text):
     return [(m.group(1) == '"', m.group(2).strip())
             for m in INCLUDE.finditer(text)]

@@ -117,3 +117,34 @@ def model_headers_declaring(name):
                     _extern_names(text)))
     return [path for path, opened, names in _model_header_index
             if namespaces[:1] and namespaces[0] in opened and short in names]
+
+
+_model_header_words = []
+_CLASS_NAMED = re.compile(r'\b(?:class|struct)\s+(\w+)')
+_NAMESPACE_NAMED = re.compile(r'\bnamespace\s+(\w+)')
+
+
+def _header_words():
+    """Per model header: the namespaces and the classes it names (once)."""
+    texts = model_header_texts()
+    with _lock:
+        if not _model_header_words:
+            _model_header_words.extend(
+                (set(_NAMESPACE_NAMED.findall(text)),
+                 set(_CLASS_NAMED.findall(text))) for _, text in texts)
+    return _model_header_words
+
+
+def model_declares_class(name):
+    """Whether a model header declares (or names) a class `name`."""
+    return any(name in classes for _, classes in _header_words())
+
+
+def model_declares_in(top, name):
+    """Whether a model header of namespace `top` declares `name` in it.
+
+    (Roughly: a header that opens `top` and names a namespace or class
+    `name`; a model library's declarations may live in rsia_model/.)
+    """
+    return any(top in namespaces and (name in namespaces or name in classes)
+               for namespaces, classes in _header_words())

@@ -11,9 +11,11 @@ its guessed namespace, declared when nothing else declares it).
 import os
 import re
 
-from colcon_rsia.frontend.cpp.model_mode.headers import model_header_texts
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
+from colcon_rsia.frontend.cpp.model_mode.model_index import \
+    model_declares_class
+from colcon_rsia.frontend.cpp.model_mode.model_index import model_declares_in
 from colcon_rsia.frontend.cpp.model_mode.source_names import CAMEL
 from colcon_rsia.frontend.cpp.model_mode.source_names import IDENTIFIER
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
@@ -88,7 +90,7 @@ def _qt_class(name):
     An object of QObject (widgets are), unless the model has the class.
     """
     match = _QT_CLASS_HEADER.match(name)
-    if match is None or _model_declares_class(match.group(1)):
+    if match is None or model_declares_class(match.group(1)):
         return []
     qt_class = match.group(1)
     # (a repair header, force-included first, may have declared it)
@@ -175,7 +177,7 @@ def nested_in_model(top, name):
     (Not a name the model declares in `top` itself.)
     """
     return IDENTIFIER.match(name) is not None and member_ok(name) and not (
-        top in MODEL_NAMESPACES and _model_declares(top, name))
+        top in MODEL_NAMESPACES and model_declares_in(top, name))
 
 
 def namespace_key(namespace):
@@ -189,24 +191,6 @@ def repaired_guard(qualified_name):
     The stand-ins of unknown libraries leave a name so defined to it.
     """
     return '__'.join(['RSIA_REPAIRED'] + qualified_name.split('::'))
-
-
-def _model_declares_class(name):
-    """Whether a model header declares a class `name`."""
-    declared = re.compile(r'\b(?:class|struct)\s+' + name + r'\b')
-    return any(declared.search(text) for _, text in model_header_texts())
-
-
-def _model_declares(top, name):
-    """Whether a model header of namespace `top` declares `name` in it.
-
-    (Roughly: a header that opens `top` and declares a namespace or class
-    `name`; a model library's declarations may live in rsia_model/.)
-    """
-    opened = re.compile(r'\bnamespace\s+' + top + r'\b')
-    declared = re.compile(r'\b(?:namespace|class|struct)\s+' + name + r'\b')
-    return any(declared.search(text) and opened.search(text)
-               for _, text in model_header_texts())
 
 
 def printable(text):

@@ -16,6 +16,8 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_LIBRARIES
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
+from colcon_rsia.frontend.cpp.model_mode.include_scan import \
+    write_atomically
 from colcon_rsia.frontend.cpp.model_mode.model_index import \
     model_declarations
 from colcon_rsia.frontend.cpp.model_mode.model_index import \
@@ -27,9 +29,15 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import \
     end_of_template_arguments
 from colcon_rsia.frontend.cpp.model_mode.source_names import KNOWN_METHODS
 from colcon_rsia.frontend.cpp.model_mode.source_names import member_ok
-from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
 from colcon_rsia.frontend.cpp.model_mode.source_names import used_names
+from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
+    names_in_bodies
+from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
+    namespace_openings
+from colcon_rsia.frontend.cpp.model_mode.source_namespaces import opens
+from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
+    using_declarations
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import empty_stub
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import guessed_namespace
@@ -39,9 +47,11 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_in_model
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import prefix_namespaces
-from colcon_rsia.frontend.cpp.model_mode.stand_ins import repaired_guard
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import merge_unknown
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import unit_unknown
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import UNKNOWN_DIR
 
 FIELDS_HEADER = os.path.join('rsia_model', 'fields.h')
 IMPLICIT_MESSAGES_HEADER = os.path.join('rsia_model', 'implicit_messages.h')
@@ -51,7 +61,6 @@ IMPLICIT_MESSAGES_HEADER = os.path.join('rsia_model', 'implicit_messages.h')
 MAX_UP_LEVELS = 8
 
 
-UNKNOWN_DIR = os.path.join('rsia_model', 'unknown')
 # where each unit's repair header is (recovery/store.py)
 REPAIR_DIR = os.path.join('rsia_model', 'repair')
 # the catch-all declarations of the model mode: what is declared there
@@ -112,8 +121,12 @@ def write_stand_ins(scanner, codes, stub_dir):
                 # include stays unresolved, as with no stand-in at all
             if up:
                 up_dirs.add(up)
+        added_to = []
         for namespace, names in unknown.items():
-            _merge_unknown(stub_dir, namespace, names)
+            if namespace in own:
+                added_to.append(unit_unknown(stub_dir, namespace, names))
+            else:
+                merge_unknown(stub_dir, namespace, names)
         _merge_implicit(stub_dir, implicit)
         _merge_fields(stub_dir, members, constants, field_types, templates,
                       values)
@@ -122,7 +135,7 @@ def write_stand_ins(scanner, codes, stub_dir):
     return sorted(up_dirs), own, [
         os.path.join(MODEL_HEADERS_DIR, header) for header in named_headers
     ] + [os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
-         for namespace in brought]
+         for namespace in brought] + added_to
 
 
 def _stub_path(stub_dir, name):
@@ -171,14 +184,6 @@ def _write_stub(target, content):
 def _stub_kind(text):
     match = re.search(r'kind=(\w+)', text.split('\n', 1)[0])
     return match.group(1) if match else None
-
-
-def write_atomically(path, content):
-    """Write a text file whole or not at all (readers never see half).
-
-    Stand-ins keep undecodable names as they were read.
-    """
-    safe_files.write_text_atomically(path, content, errors='surrogateescape')
 
 
 def _merge_fields(stub_dir, members, constants, field_types=(),
@@ -313,8 +318,9 @@ def _unknown_namespaces(stubs, codes):
     :returns: ({namespace: (types {name: static members}, objects,
       constants, templates {name: True for a function, (the kind of its
       parameters, static members) for a class}, nested namespaces {name:
-      names})}, sorted namespaces the TU declares itself, the namespaces
-      no include names, which the unit must include)
+      names}, the stand-ins of its messages)}, sorted namespaces the TU
+      declares itself, the namespaces no include names, which the unit
+      must include)
 
     For the namespace of each unknown include directory (a package's name is
     its namespace, by ROS convention), the names the sources use after
@@ -328,23 +334,26 @@ def _unknown_namespaces(stubs, codes):
     (`Matrix<double, 3, 3>`: a type, then values), and it has the static
     members its uses name (`Matrix<double, 3, 3>::Identity()`); where no
     shape fits every use, the repairs declare it (recovery/). A namespace
-    the sources open themselves, or one with messages of this TU, is left
-    alone (and named in the second result). Below a namespace the model or
+    the sources open themselves is left alone (and named in the second
+    result). In one with stand-ins of messages (a library's
+    `pcl/PCLHeader.h` beside its `pcl/point_cloud.h`), what those declare
+    is left to them. Below a namespace the model or
     the sources own, the next directory is a nested namespace; a directory
     named after its namespace and more (`dynamixel_sdk/`) gives that
     namespace (stand_ins.nested_namespace, prefix_namespaces).
     """
     empties = [name for name, content in stubs.items()
                if 'kind=empty' in content.split('\n', 1)[0]]
-    with_messages = {name.split('/')[0] for name, content in stubs.items()
-                     if 'kind=empty' not in content.split('\n', 1)[0]}
+    # namespace -> the stand-ins of its messages (configs, services)
+    with_messages = {}
+    for name, content in stubs.items():
+        if 'kind=empty' not in content.split('\n', 1)[0]:
+            with_messages.setdefault(name.split('/')[0], set()).add(name)
+
+    openings = namespace_openings(codes)
 
     def opened(namespace):
-        opening = re.compile(r'\bnamespace\s+' + _spelled(namespace) + r'\b')
-        return any(opening.search(code) for code in codes)
-
-    def is_own(namespace):
-        return namespace in with_messages or opened(namespace)
+        return any(opens(opening, namespace) for opening in openings)
 
     def known_top(namespace):
         # a model library's or the sources' own: what an unknown include
@@ -372,7 +381,8 @@ def _unknown_namespaces(stubs, codes):
     # a namespace no include of the unit names, brought by an unknown
     # header (a library's header includes Eigen's): the unit includes it
     brought = sorted(_brought_namespaces(
-        qualifiers - namespaces - with_messages, codes)) if empties else []
+        qualifiers - namespaces - set(with_messages), codes)) \
+        if empties else []
     namespaces.update(brought)
     # names that are namespaces of their own at the top: `dir::` alone
     # never means `top::dir::` for them
@@ -380,12 +390,19 @@ def _unknown_namespaces(stubs, codes):
     # every `namespace alias = target;` of the sources (read once)
     aliased = {(alias, target) for code in codes
                for alias, target in _NAMESPACE_ALIAS.findall(code)}
+    # every `using a::b::name;` of the sources: (('a', 'b'), 'name')
+    usings = using_declarations(codes)
     result = {}
     own = []
     for namespace in sorted(namespaces):
-        if is_own(namespace):
+        theirs, functions = set(), set()
+        if opened(namespace):
+            # a library's namespace the sources add to (`namespace pcl {`
+            # and their overloads): what they write in it is theirs, the
+            # rest of what they use of it the library's
             own.append(namespace)
-            continue
+            theirs, functions = names_in_bodies(namespace, codes)
+        messages = with_messages.get(namespace, set())
         last = namespace.rsplit('::', 1)[-1]
         spelled = _spelled(namespace, unqualified=last not in tops)
         # (and its aliases: `namespace ec = Eigen;` then `ec::Matrix3f`)
@@ -451,7 +468,8 @@ def _unknown_namespaces(stubs, codes):
                     constants.add(name)
                 else:
                     objects.add(name)
-        for name, kinds in _templates_used_unqualified(spelled, codes):
+        for name, kinds in _templates_used_unqualified(
+                namespace, last not in tops, usings, codes):
             template_kinds.setdefault(name, set()).update(kinds)
         # {name: True (a function) or (the kind of a class template, its
         # static members)}
@@ -474,10 +492,50 @@ def _unknown_namespaces(stubs, codes):
             types.pop(name, None)
         objects -= set(types) | set(template_kinds) | set(nested)
         constants -= set(types) | set(template_kinds) | set(nested)
-        if types or objects or constants or templates or nested:
+        overloads = _theirs_left(namespace, codes, theirs, functions, (
+            types, objects, constants, templates, nested))
+        if types or objects or constants or templates or nested or \
+                overloads:
             result[namespace] = (types, objects, constants, templates,
-                                 nested)
-    return result, own, [name for name in brought if name in result]
+                                 nested, messages, overloads)
+    # (one the unit adds to has a header of the unit's own)
+    return result, own, [name for name in brought
+                         if name in result and name not in own]
+
+
+def _theirs_left(namespace, codes, theirs, functions, names):
+    """Leave to the sources what they write in a namespace they add to.
+
+    What they call there may have the library's overloads too: those are
+    declared as catch-all overloads that any of theirs beats.
+
+    :returns: the overloads, as names relative to the namespace
+    """
+    types, objects, constants, templates, nested = names
+    overloads = set()
+    for name in set(types) | objects | constants | set(templates):
+        if name in theirs:
+            # (a class of theirs has a constructor: only what the uses
+            # take for a function is one)
+            if name in functions and (name in objects or
+                                      templates.get(name) is True):
+                overloads.add(name)
+            types.pop(name, None)
+            templates.pop(name, None)
+            objects.discard(name)
+            constants.discard(name)
+    for name in theirs & set(nested):
+        inner_names, inner_functions = names_in_bodies(
+            f'{namespace}::{name}', codes)
+        if not inner_names:
+            # (not a namespace they open: a variable of theirs, say)
+            del nested[name]
+            continue
+        for member in nested[name] & inner_names:
+            if member in inner_functions:
+                overloads.add(f'{name}::{member}')
+        nested[name] -= inner_names
+    return overloads
 
 
 def _brought_namespaces(names, codes):
@@ -578,14 +636,19 @@ _QUALIFIER = re.compile(
     r'(?<![\w:.>])(?:::\s*)?([A-Za-z_]\w*)\s*::\s*[A-Za-z_~]')
 
 
-def _templates_used_unqualified(spelled, codes):
+def _templates_used_unqualified(namespace, unqualified, using_declarations,
+                                codes):
     """[(name, {template kinds})] of `using ns::name;` + `name<...>`.
 
-    :param spelled: the namespace as `_spelled` gives it
+    :param unqualified: whether the sources may write `a::b` as `b`
+      (`_spelled`)
+    :param using_declarations: the sources' `using` declarations, as
+      (qualifier parts, name)
     """
-    brought = {name for code in codes for name in re.findall(
-        r'\busing\s+(?:::\s*)?' + spelled +
-        r'\s*::\s*([A-Za-z_]\w*)\s*;', code)}
+    *parents, last = namespace.split('::')
+    spellings = {(*parents, last)} | ({(last,)} if unqualified else set())
+    brought = {name for qualifier, name in using_declarations
+               if qualifier in spellings}
     found = []
     for name in sorted(brought):
         if not member_ok(name):
@@ -596,159 +659,3 @@ def _templates_used_unqualified(spelled, codes):
         if kinds:
             found.append((name, kinds))
     return found
-
-
-def _merge_unknown(stub_dir, namespace, names):
-    """Grow rsia_model/unknown/<namespace>.h by these declarations."""
-    types, objects, constants, templates, nested = names
-    path = os.path.join(stub_dir, UNKNOWN_DIR, namespace_key(namespace) + '.h')
-    old = read_text(path) or ''
-    if old.startswith(STUB_MARKER):
-        for match in re.finditer(r'^// type (\w+):([\w ]*)$', old, re.M):
-            types.setdefault(match.group(1), set()).update(
-                match.group(2).split())
-        objects |= set(re.findall(r'^// object (\w+)$', old, re.M))
-        constants |= set(re.findall(r'^// constant (\w+)$', old, re.M))
-        for match in re.finditer(
-                r'^// (class|function) template (\w+)(?: (template\S*):)?'
-                r'([\w ]*)$', old, re.M):
-            name = match.group(2)
-            if match.group(1) == 'function':
-                templates[name] = True
-                continue
-            kind, members = match.group(3) or 'template', \
-                frozenset(match.group(4).split())
-            if isinstance(templates.get(name), tuple):
-                # (the parameters as another unit declared them)
-                members |= templates[name][1]
-            templates[name] = (kind, members)
-        for match in re.finditer(r'^// namespace (\w+):([\w ]*)$', old, re.M):
-            nested.setdefault(match.group(1), set()).update(
-                match.group(2).split())
-    # a name another unit used with template arguments is a template
-    for name in set(templates) | set(nested):
-        types.pop(name, None)
-    objects -= set(types) | set(templates) | set(nested)
-    constants -= set(types) | objects | set(templates) | set(nested)
-    guard = f'RSIA_MODEL_UNKNOWN_{namespace_key(namespace)}_H'
-    lines = [
-        f'{STUB_MARKER} kind=unknown: namespace {namespace}',
-        f'// what the analysed sources use of `{namespace}::` (from headers the',
-        '// model mode does not have): catch-all declarations',
-        f'#ifndef {guard}', f'#define {guard}', '',
-        '#include <rsia_model/message.h>', '']
-    for part in namespace.split('::'):
-        lines += [f'namespace {part}', '{']
-    for name in sorted(types):
-        members = sorted(types[name])
-        # a repair header (recovery/) may have declared it already
-        lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
-                  _undeclared(namespace, name)]
-        lines += catch_all_class(name, members=[
-            line for member in members if member not in POINTER_TYPES
-            for line in (
-                f'#ifndef {member}', f'  static ::rsia_model::Any {member};',
-                '#endif')])
-        lines.append('#endif')
-    for name, declared in sorted(templates.items()):
-        if declared is True:
-            lines += [f'// function template {name}',
-                      _undeclared(namespace, name)]
-            lines += catch_all_function(name)
-        else:
-            kind, members = declared
-            lines += [f'// class template {name} {kind}:' + ''.join(
-                ' ' + m for m in sorted(members)),
-                _undeclared(namespace, name)]
-            lines += catch_all_class(name, head=template_head(kind), members=[
-                line for member in sorted(members)
-                if member not in POINTER_TYPES for line in (
-                    f'#ifndef {member}',
-                    f'  static ::rsia_model::Any {member};', '#endif')])
-        lines.append('#endif')
-    for name, members in sorted(nested.items()):
-        lines += [f'// namespace {name}:' + ''.join(
-            ' ' + m for m in sorted(members)), f'namespace {name}', '{']
-        for member in sorted(members):
-            lines.append(_undeclared(f'{namespace}::{name}', member))
-            if _ALL_CAPS.match(member):
-                lines.append(f'constexpr int {member} = 1;')
-            elif member[:1].isupper():
-                lines += catch_all_class(member)
-            else:
-                lines += catch_all_function(member)
-            lines.append('#endif')
-        lines.append(f'}}  // namespace {name}')
-    # (a repair header, force-included first, may have declared any of
-    # them as another kind: a function the sources call, say)
-    for name in sorted(objects):
-        lines += [f'// object {name}', _undeclared(namespace, name),
-                  f'extern ::rsia_model::Any {name};', '#endif']
-    for i, name in enumerate(sorted(constants)):
-        lines += [f'// constant {name}', _undeclared(namespace, name),
-                  f'constexpr int {name} = {i + 1};', '#endif']
-    lines.append('')
-    for part in reversed(namespace.split('::')):
-        lines.append(f'}}  // namespace {part}')
-    lines += ['', f'#endif  // {guard}', '']
-    content = '\n'.join(lines)
-    if content != old:
-        write_atomically(path, content)
-
-
-def _undeclared(namespace, name):
-    """The condition of a declaration no macro or repair header made."""
-    return f'#if !defined({name}) && ' \
-        f'!defined({repaired_guard(namespace + "::" + name)})'
-
-
-def catch_all_class(name, *, head='', members=()):
-    """The lines of a class of an unknown library, made from anything."""
-    # its own assignment from anything (see rsia_model::Unknown), which
-    # also hides the base's copy and move assignments: with them, `x = {}`
-    # would tie between the class's and the base's. Made from an Unknown
-    # too (`Filter<P>::PointCloud`, repaired as one): C++ takes no
-    # inherited constructor for that
-    # its pointer types by ROS convention, its own (see
-    # rsia_model::UnknownPointer); not one of its own name (a class `Ptr`,
-    # `cv::Ptr`: C++ forbids a member named as its class)
-    pointers = [
-        (alias, f'  using {alias} = {target};') for alias, target in (
-            ('Ptr', f'::rsia_model::UnknownPointer<{name}>'),
-            ('ConstPtr', f'::rsia_model::UnknownPointer<const {name}>'),
-            ('SharedPtr', f'::rsia_model::UnknownPointer<{name}>'),
-            ('ConstSharedPtr',
-             f'::rsia_model::UnknownPointer<const {name}>'))]
-    return [f'{head}struct {name} : ::rsia_model::Unknown', '{',
-            '  using ::rsia_model::Unknown::Unknown;',
-            f'  {name}() = default;',
-            f'  {name}(const ::rsia_model::Unknown&);',
-            f'  template <class RsiaV> {name}& operator=(RsiaV&&);',
-            *[line for alias, line in pointers if alias != name],
-            *members, '};']
-
-
-# the pointer types every class of an unknown library has (see above): no
-# member of their names is declared again
-POINTER_TYPES = frozenset({'Ptr', 'ConstPtr', 'SharedPtr', 'ConstSharedPtr'})
-
-
-def catch_all_function(name):
-    """The lines of a function of an unknown library, taking anything.
-
-    Explicit template arguments go to RsiaT (`f<T>(x)`), to RsiaN and
-    RsiaM (`f<0>(x)`), to both (`get<min_corner, 0>(box)`) or to RsiaC,
-    a template (`ranges::to<std::vector>()`); the call's arguments are
-    deduced; the braced forms take braced lists, which deduce nothing (see
-    rsia_model/message.h).
-    """
-    return ['template <class... RsiaT, class... RsiaA>',
-            f'::rsia_model::Any& {name}(RsiaA&&...);',
-            'template <template <class...> class RsiaC, class... RsiaA>',
-            f'::rsia_model::Any& {name}(RsiaA&&...);',
-            'template <long long RsiaN, long long... RsiaM, class... RsiaA>',
-            f'::rsia_model::Any& {name}(RsiaA&&...);',
-            'template <class RsiaT, long long RsiaN, long long... RsiaM, '
-            'class... RsiaA>',
-            f'::rsia_model::Any& {name}(RsiaA&&...);',
-            f'RSIA_MODEL_BRACED_FUNCTION({name})']

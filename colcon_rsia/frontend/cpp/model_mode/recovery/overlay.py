@@ -22,7 +22,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import ALL_CAPS
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import K_CONSTANT
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import MODEL_MEMBER
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import SOURCE_NOISE
-from colcon_rsia.frontend.cpp.model_mode.stubs import POINTER_TYPES
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import POINTER_TYPES
 
 FUNCTION_SHAPE = 'function'
 TYPE_SHAPE = 'type'

@@ -39,9 +39,10 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import TYPE
 from colcon_rsia.frontend.cpp.model_mode.recovery.kinds import VALUE
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_head
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import repaired_guard
-from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_class
-from colcon_rsia.frontend.cpp.model_mode.stubs import catch_all_function
-from colcon_rsia.frontend.cpp.model_mode.stubs import POINTER_TYPES
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import catch_all_class
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import \
+    catch_all_function
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import POINTER_TYPES
 
 MARKER = '// colcon-rsia repairs v1'
 

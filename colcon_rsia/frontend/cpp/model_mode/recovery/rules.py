@@ -87,7 +87,7 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.naming import uses_of_namespac
 from colcon_rsia.frontend.cpp.model_mode.recovery.std_headers import \
     STD_HEADER_OF
 from colcon_rsia.frontend.cpp.model_mode.source_names import template_kind
-from colcon_rsia.frontend.cpp.model_mode.stubs import UNKNOWN_DIR
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import UNKNOWN_DIR
 
 
 @dataclass
