@@ -615,3 +615,57 @@ def test_a_namespace_the_sources_add_to_keeps_the_librarys_names(tmp_path):
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('cells', 'dependent')]
     assert [s.topic for s in node.subscribers] == ['cloud']
+
+
+# an rviz panel: its base class's library includes Qt, the panel's own
+# code uses Qt's classes and the moc macros without including Qt
+QT_THROUGH_A_LIBRARY = r"""
+#include <rviz_common/panel.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+namespace demo_panels
+{
+class Stamp : public rviz_common::Panel
+{
+  Q_OBJECT
+
+public:
+  explicit Stamp(QWidget * parent = nullptr) : rviz_common::Panel(parent)
+  {
+    label_ = new QLabel("stamp");
+    QVBoxLayout * layout = new QVBoxLayout;
+    layout->addWidget(label_);
+  }
+
+  void onInitialize() override
+  {
+    node_ = std::make_shared<rclcpp::Node>("stamp_panel");
+    pub_ = node_->create_publisher<std_msgs::msg::String>("stamp", 1);
+  }
+
+protected Q_SLOTS:
+  void onClicked()
+  {
+    std_msgs::msg::String msg;
+    msg.data = label_->text().toStdString();
+    pub_->publish(msg);
+  }
+
+private:
+  QLabel * label_;
+  rclcpp::Node::SharedPtr node_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}  // namespace demo_panels
+"""
+
+
+def test_qt_used_through_a_library_header_is_declared(tmp_path):
+    # before: "unknown type name 'QWidget'" (and Q_OBJECT): only the
+    # panel library's real header includes Qt
+    summary = assert_analyzes_clean(tmp_path, 'stamp', QT_THROUGH_A_LIBRARY)
+    # (a panel no plugin export names is no node: its call is still read)
+    assert [(site.api, site.line, site.origin)
+            for site in summary.coverage.call_sites] == [
+        ('create_publisher', 23, 'ast')]

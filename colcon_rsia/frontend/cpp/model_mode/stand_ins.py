@@ -103,6 +103,32 @@ def _qt_class(name):
             f'  {qt_class}() = default;', '};', '#endif']
 
 
+# Qt's classes (QWidget, QPainter; not Q_OBJECT nor QT_VERSION), written
+# without a qualifier, and the moc macros
+_QT_NAME = re.compile(r'(?<![\w:])Q(?!t[A-Z])[A-Z][A-Z0-9]*[a-z]\w*\b')
+_MOC_MACRO = re.compile(r'\bQ_(?:OBJECT|GADGET|SIGNALS|SLOTS|EMIT)\b')
+
+
+def qt_used(codes, declared, includes):
+    """The lines of a header declaring what the sources use of Qt, or [].
+
+    A class of a library built on Qt (an rviz panel) uses Qt's classes and
+    the moc macros without including Qt: the library's headers do. Only
+    where the sources show Qt (a moc macro, an include of Qt).
+
+    :param declared: the names the sources declare themselves
+    :param includes: the includes nothing provides
+    """
+    if not any(_MOC_MACRO.search(code) for code in codes) and \
+            not any(_QT_HEADER.match(name) for name in includes):
+        return []
+    names = {name for code in codes for name in _QT_NAME.findall(code)}
+    lines = ['#include <rsia_model/qt_core.h>']
+    for name in sorted(names - declared):
+        lines += _qt_class(name)
+    return lines
+
+
 def guessed_namespace(include):
     """The namespace an unknown `dir/...` include probably declares.
 

@@ -18,6 +18,7 @@ from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
 from colcon_rsia.frontend.cpp.model_mode.include_scan import read_text
 from colcon_rsia.frontend.cpp.model_mode.include_scan import \
     write_atomically
+from colcon_rsia.frontend.cpp.model_mode.model_index import declared_names
 from colcon_rsia.frontend.cpp.model_mode.model_index import \
     model_declarations
 from colcon_rsia.frontend.cpp.model_mode.model_index import \
@@ -47,9 +48,11 @@ from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_in_model
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import nested_namespace
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import prefix_namespaces
+from colcon_rsia.frontend.cpp.model_mode.stand_ins import qt_used
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import stand_ins_for
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 from colcon_rsia.frontend.cpp.model_mode.unknown_headers import merge_unknown
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import unit_header
 from colcon_rsia.frontend.cpp.model_mode.unknown_headers import unit_unknown
 from colcon_rsia.frontend.cpp.model_mode.unknown_headers import UNKNOWN_DIR
 
@@ -122,6 +125,14 @@ def write_stand_ins(scanner, codes, stub_dir):
             if up:
                 up_dirs.add(up)
         added_to = []
+        qt = qt_used(codes, declared_names(codes), stubs) \
+            if any(stub.startswith(STUB_MARKER + ' kind=empty')
+                   for stub in stubs.values()) else []
+        if qt:
+            # (an include it does not have may include Qt)
+            added_to.append(unit_header(stub_dir, 'qt', '\n'.join(
+                [f'{STUB_MARKER} kind=unknown: what the sources use of Qt',
+                 '#pragma once', *qt, ''])))
         for namespace, names in unknown.items():
             if namespace in own:
                 added_to.append(unit_unknown(stub_dir, namespace, names))

@@ -42,10 +42,14 @@ def unit_unknown(stub_dir, namespace, names):
     (For a namespace the unit adds to: what another unit of the package
     uses of it may be what this one declares.)
     """
-    content = _unknown_header(stub_dir, namespace, names)
+    return unit_header(stub_dir, namespace_key(namespace),
+                       _unknown_header(stub_dir, namespace, names))
+
+
+def unit_header(stub_dir, key, content):
+    """Write a header of one unit's own, named by its content; its path."""
     digest = hashlib.sha1(content.encode()).hexdigest()[:16]
-    path = os.path.join(stub_dir, UNKNOWN_DIR,
-                        f'{namespace_key(namespace)}.{digest}.h')
+    path = os.path.join(stub_dir, UNKNOWN_DIR, f'{key}.{digest}.h')
     if read_text(path) != content:
         write_atomically(path, content)
     return path

@@ -9,6 +9,10 @@
 #ifndef RSIA_MODEL_STD_H
 #define RSIA_MODEL_STD_H
 
+// (real library headers include <cassert> and <climits>: code uses
+// assert and INT_MAX through them; both are small)
+#include <cassert>
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
