@@ -407,13 +407,17 @@ def _unknown_namespaces(stubs, codes):
     own = []
     for namespace in sorted(namespaces):
         theirs, functions = set(), set()
+        messages = with_messages.get(namespace, set())
         if opened(namespace):
             # a library's namespace the sources add to (`namespace pcl {`
             # and their overloads): what they write in it is theirs, the
             # rest of what they use of it the library's
             own.append(namespace)
             theirs, functions = names_in_bodies(namespace, codes)
-        messages = with_messages.get(namespace, set())
+        elif messages:
+            # (the stand-ins of its messages declare it)
+            own.append(namespace)
+            continue
         last = namespace.rsplit('::', 1)[-1]
         spelled = _spelled(namespace, unqualified=last not in tops)
         # (and its aliases: `namespace ec = Eigen;` then `ec::Matrix3f`)
@@ -524,6 +528,9 @@ def _theirs_left(namespace, codes, theirs, functions, names):
     """
     types, objects, constants, templates, nested = names
     overloads = set()
+    # (a call without arguments would tie between theirs and a catch-all)
+    functions = {name for name in functions
+                 if not _called_without_arguments(name, codes)}
     for name in set(types) | objects | constants | set(templates):
         if name in theirs:
             # (a class of theirs has a constructor: only what the uses
@@ -543,10 +550,17 @@ def _theirs_left(namespace, codes, theirs, functions, names):
             del nested[name]
             continue
         for member in nested[name] & inner_names:
-            if member in inner_functions:
+            if member in inner_functions and \
+                    not _called_without_arguments(member, codes):
                 overloads.add(f'{name}::{member}')
         nested[name] -= inner_names
     return overloads
+
+
+def _called_without_arguments(name, codes):
+    """Whether the sources call a function `name()`."""
+    call = re.compile(r'\b' + name + r'\s*\(\s*\)')
+    return any(call.search(code) for code in codes)
 
 
 def _brought_namespaces(names, codes):
