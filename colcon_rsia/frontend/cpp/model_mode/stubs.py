@@ -329,9 +329,10 @@ def _unknown_namespaces(stubs, codes):
     :returns: ({namespace: (types {name: static members}, objects,
       constants, templates {name: True for a function, (the kind of its
       parameters, static members) for a class}, nested namespaces {name:
-      names}, the stand-ins of its messages)}, sorted namespaces the TU
-      declares itself, the namespaces no include names, which the unit
-      must include)
+      names}, the stand-ins of its messages, the catch-all overloads of
+      functions of the sources)}, sorted namespaces the TU declares itself
+      (their names go to a header of the unit's own), the namespaces no
+      include names, which the unit must include)
 
     For the namespace of each unknown include directory (a package's name is
     its namespace, by ROS convention), the names the sources use after
@@ -344,11 +345,12 @@ def _unknown_namespaces(stubs, codes):
     class template's parameters are the shape its uses' arguments fit
     (`Matrix<double, 3, 3>`: a type, then values), and it has the static
     members its uses name (`Matrix<double, 3, 3>::Identity()`); where no
-    shape fits every use, the repairs declare it (recovery/). A namespace
-    the sources open themselves is left alone (and named in the second
-    result). In one with stand-ins of messages (a library's
-    `pcl/PCLHeader.h` beside its `pcl/point_cloud.h`), what those declare
-    is left to them. Below a namespace the model or
+    shape fits every use, the repairs declare it (recovery/). In a
+    namespace the sources open themselves (a library's they add to), what
+    they write inside their blocks is theirs (_theirs_left), and so is
+    what stand-ins of its messages declare (`pcl/PCLHeader.h`); one with
+    such stand-ins that they do not open is left to them whole. Both are
+    named in the second result. Below a namespace the model or
     the sources own, the next directory is a nested namespace; a directory
     named after its namespace and more (`dynamixel_sdk/`) gives that
     namespace (stand_ins.nested_namespace, prefix_namespaces).
