@@ -673,3 +673,49 @@ def test_qt_used_through_a_library_header_is_declared(tmp_path):
     assert [(site.api, site.line, site.origin)
             for site in summary.coverage.call_sites] == [
         ('create_publisher', 23, 'ast')]
+
+
+# boost::bind's placeholders written bare, in a unit that includes no
+# <boost/bind.hpp> itself: the real headers of its libraries do
+BARE_PLACEHOLDERS = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <vendor_io/port.h>
+
+class Echo
+{
+public:
+  Echo()
+  {
+    pub_ = nh_.advertise<std_msgs::String>("echo", 1);
+    sub_ = nh_.subscribe<std_msgs::String>(
+      "words", 1, boost::bind(&Echo::onWord, this, _1));
+  }
+
+private:
+  void onWord(const std_msgs::String::ConstPtr & word)
+  {
+    pub_.publish(*word);
+  }
+
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  ros::Subscriber sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "echo");
+  Echo echo;
+  ros::spin();
+}
+"""
+
+
+def test_boost_binds_placeholders_written_bare_are_declared(tmp_path):
+    # before: "use of undeclared identifier '_1'"
+    summary = assert_analyzes_clean(tmp_path, 'echo', BARE_PLACEHOLDERS)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('echo', 'dependent')]
+    assert [s.topic for s in node.subscribers] == ['words']

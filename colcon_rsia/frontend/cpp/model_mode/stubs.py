@@ -301,10 +301,25 @@ def _model_headers_named(codes, scanner):
                 not p.startswith(top + '/'),
                 p.endswith('.h') if scanner.ros2 else p.endswith('.hpp'),
                 len(p), p)))
+    # `boost::bind(&C::f, this, _1)`: the placeholders written bare, which
+    # only <boost/bind.hpp>'s using-directive declares (the real headers of
+    # ROS 1 and its libraries include it)
+    if ('boost', 'bind') in named and \
+            any(_BARE_PLACEHOLDER.search(code) for code in codes) and \
+            not any(_PLACEHOLDERS_USED.search(code) for code in codes) and \
+            os.path.join(MODEL_HEADERS_DIR, _BOOST_BIND) not in scanner.visited:
+        headers.add(_BOOST_BIND)
     return sorted(
         header for header in headers
         if scanner.resolve(header, False, '') ==
         os.path.join(MODEL_HEADERS_DIR, header))
+
+
+_BOOST_BIND = os.path.join('boost', 'bind.hpp')
+_BARE_PLACEHOLDER = re.compile(r'(?<![\w:])_[1-9]\b')
+_PLACEHOLDERS_USED = re.compile(
+    r'\bplaceholders\s*::\s*_[1-9]\s*;|\bnamespace\s+(?:::\s*)?\w+\s*::'
+    r'\s*placeholders\b')
 
 
 def _merge_implicit(stub_dir, implicit):
