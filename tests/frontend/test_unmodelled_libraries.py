@@ -719,3 +719,61 @@ def test_boost_binds_placeholders_written_bare_are_declared(tmp_path):
     assert [(p.topic, p.label) for p in node.publishers] == [
         ('echo', 'dependent')]
     assert [s.topic for s in node.subscribers] == ['words']
+
+
+# a C library the model lacks: its names carry its prefix, not a namespace
+C_LIBRARY = r"""
+#include <ros/ros.h>
+#include <std_msgs/UInt32.h>
+#include <scanlib.h>
+
+class Reader
+{
+public:
+  explicit Reader(ros::NodeHandle & nh)
+  {
+    pub_ = nh.advertise<std_msgs::UInt32>("packets", 10);
+    handle_ = scanlib_open("eth0", errors_);
+  }
+
+  bool poll()
+  {
+    struct scanlib_header * header;
+    const unsigned char * data;
+    int scanlib_result = scanlib_next(handle_, &header, &data);
+    if (scanlib_result != SCANLIB_OK) {
+      return false;
+    }
+    std_msgs::UInt32 size;
+    size.data = scanlib_result;
+    pub_.publish(size);
+    return true;
+  }
+
+private:
+  ros::Publisher pub_;
+  scanlib_t * handle_;
+  char errors_[SCANLIB_ERRBUF_SIZE];
+};
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "reader");
+  ros::NodeHandle nh;
+  Reader reader(nh);
+  ros::Rate rate(100);
+  while (ros::ok()) {
+    reader.poll();
+    rate.sleep();
+  }
+}
+"""
+
+
+def test_a_c_librarys_prefixed_names_are_declared(tmp_path):
+    # before: "unknown type name 'scanlib_t'" (and the functions, the
+    # constants): `<scanlib.h>` declares no namespace to guess from
+    summary = assert_analyzes_clean(tmp_path, 'reader', C_LIBRARY)
+    [node] = summary.nodes
+    assert [(p.topic, p.label, p.pattern) for p in node.publishers] == [
+        ('packets', 'independent', 'no_subscribers')]

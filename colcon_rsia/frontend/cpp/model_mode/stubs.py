@@ -12,6 +12,8 @@ import re
 import threading
 
 from colcon_rsia import safe_files
+from colcon_rsia.frontend.cpp.model_mode.c_libraries import c_library_header
+from colcon_rsia.frontend.cpp.model_mode.c_libraries import c_library_names
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_HEADERS_DIR
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_LIBRARIES
 from colcon_rsia.frontend.cpp.model_mode.headers import MODEL_NAMESPACES
@@ -125,14 +127,20 @@ def write_stand_ins(scanner, codes, stub_dir):
             if up:
                 up_dirs.add(up)
         added_to = []
-        qt = qt_used(codes, declared_names(codes), stubs) \
-            if any(stub.startswith(STUB_MARKER + ' kind=empty')
-                   for stub in stubs.values()) else []
+        unknown_includes = [
+            name for name, stub in stubs.items()
+            if stub.startswith(STUB_MARKER + ' kind=empty')]
+        declared = declared_names(codes) if unknown_includes else set()
+        qt = qt_used(codes, declared, stubs) if unknown_includes else []
         if qt:
             # (an include it does not have may include Qt)
             added_to.append(unit_header(stub_dir, 'qt', '\n'.join(
                 [f'{STUB_MARKER} kind=unknown: what the sources use of Qt',
                  '#pragma once', *qt, ''])))
+        c_names = c_library_names(unknown_includes, codes, declared)
+        if c_names:
+            added_to.append(unit_header(
+                stub_dir, 'c_libraries', c_library_header(c_names)))
         for namespace, names in unknown.items():
             if namespace in own:
                 added_to.append(unit_unknown(stub_dir, namespace, names))
