@@ -777,3 +777,44 @@ def test_a_c_librarys_prefixed_names_are_declared(tmp_path):
     [node] = summary.nodes
     assert [(p.topic, p.label, p.pattern) for p in node.publishers] == [
         ('packets', 'independent', 'no_subscribers')]
+
+
+# a class befriending an unknown library's class: `class ns::name` is a
+# class whatever its case
+BEFRIENDED = r"""
+#include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <archive/access.hpp>
+
+class Gauge
+{
+  friend class archive::access;
+
+public:
+  double value = 0.0;
+};
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "gauge");
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<std_msgs::Float64>("gauge", 1);
+  Gauge gauge;
+  ros::Rate rate(10);
+  while (ros::ok()) {
+    std_msgs::Float64 msg;
+    msg.data = gauge.value;
+    pub.publish(msg);
+    rate.sleep();
+  }
+}
+"""
+
+
+def test_a_befriended_class_of_an_unknown_library_is_a_class(tmp_path):
+    # before: "no class named 'access' in namespace 'archive'" (declared
+    # as an object: a lower-case name)
+    summary = assert_analyzes_clean(tmp_path, 'gauge', BEFRIENDED)
+    [node] = summary.nodes
+    assert [(p.topic, p.label, p.pattern) for p in node.publishers] == [
+        ('gauge', 'independent', 'no_subscribers')]

@@ -464,7 +464,12 @@ def _unknown_namespaces(stubs, codes):
                     match.group(3)
                 if not member_ok(name) or name == last:
                     continue
-                if after and after.strip() == '<':
+                if not member and _ELABORATED.search(
+                        code, max(0, match.start() - 20), match.start()):
+                    # `friend class ns::access;`: a class, whatever its
+                    # case
+                    types.setdefault(name, set())
+                elif after and after.strip() == '<':
                     template_kinds.setdefault(name, set()).add(
                         template_kind(code[match.end(1):].lstrip()))
                     if _class_template_use(code, match.end(1)):
@@ -639,6 +644,8 @@ def _common_shape(kinds):
 
 # what comes before a name in an expression, where `ns::pi * ratio` is a
 # product, not a declaration of a pointer
+# `class ` before a qualified name: an elaborated type specifier
+_ELABORATED = re.compile(r'\b(?:class|struct|union|enum)\s+\Z')
 _IN_EXPRESSION = re.compile(r'(?:[-+*/%=?!|^]|\breturn)\s*\Z')
 # what follows the arguments of a class template's use: a member
 # (`fieldList<PointT>::type`), a declared name (`shared_ptr<T> cloud`),
