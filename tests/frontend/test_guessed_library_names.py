@@ -276,3 +276,147 @@ def test_a_befriended_class_of_an_unknown_library_is_a_class(tmp_path):
     [node] = summary.nodes
     assert [(p.topic, p.label, p.pattern) for p in node.publishers] == [
         ('gauge', 'independent', 'no_subscribers')]
+
+
+# a stack's namespace the sources add to (`namespace corp {`), and one of
+# its libraries the model lacks, included: the unit's own header of `corp`
+# declares `corp::geometry_utils::` as nested, the library's header as a
+# namespace of its own
+NESTED_TWICE = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+#include <corp/geometry_utils/arc_length.hpp>
+
+namespace corp
+{
+class Odometer : public rclcpp::Node
+{
+public:
+  Odometer() : Node("odometer")
+  {
+    pub_ = create_publisher<std_msgs::msg::Float64>("distance", 1);
+    timer_ = create_wall_timer(std::chrono::seconds(1), [this]() {
+      std_msgs::msg::Float64 out;
+      out.data = corp::geometry_utils::calcArcLength(points_);
+      corp::geometry_utils::Polyline line;
+      pub_->publish(out);
+    });
+  }
+
+private:
+  std::vector<double> points_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+  rclcpp::TimerBase::SharedPtr timer_;
+};
+}  // namespace corp
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<corp::Odometer>());
+}
+"""
+
+
+def test_a_namespace_guessed_twice_is_declared_once(tmp_path):
+    # before: "redefinition of 'calcArcLength' as different kind of
+    # symbol", "redefinition of 'Polyline'": the unit's header of `corp`
+    # and the package's of `corp::geometry_utils` both declared them
+    summary = assert_analyzes_clean(tmp_path, 'odometer', NESTED_TWICE)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('distance', 'independent')]
+
+
+# a message named but never included (the real headers of other messages
+# include it), beside an unknown library: `builtin_interfaces::` was taken
+# for a namespace that library's headers bring
+IMPLICIT_MESSAGE = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/header.hpp>
+#include <lanes/lanelet_map.hpp>
+
+using Stamp = builtin_interfaces::msg::Time;
+
+Stamp newer(const Stamp & a, const Stamp & b)
+{
+  return rclcpp::Time(a) > rclcpp::Time(b) ? a : b;
+}
+
+class Arbiter : public rclcpp::Node
+{
+public:
+  Arbiter() : Node("arbiter")
+  {
+    pub_ = create_publisher<std_msgs::msg::Header>("latest", 1);
+    sub_ = create_subscription<std_msgs::msg::Header>(
+      "stamps", 1, [this](std_msgs::msg::Header::ConstSharedPtr msg) {
+        std_msgs::msg::Header out = *msg;
+        out.stamp = newer(msg->stamp, last_);
+        lanes::LaneletMap map;
+        pub_->publish(out);
+      });
+  }
+
+private:
+  Stamp last_;
+  rclcpp::Publisher<std_msgs::msg::Header>::SharedPtr pub_;
+  rclcpp::Subscription<std_msgs::msg::Header>::SharedPtr sub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Arbiter>());
+}
+"""
+
+
+def test_a_message_named_but_not_included_is_its_stand_ins(tmp_path):
+    # before: "definition of type 'Time' conflicts with type alias of the
+    # same name": a catch-all `builtin_interfaces::msg::Time` beside the
+    # message's stand-in
+    summary = assert_analyzes_clean(tmp_path, 'arbiter', IMPLICIT_MESSAGE)
+    [node] = summary.nodes
+    assert [(p.topic, p.label) for p in node.publishers] == [
+        ('latest', 'dependent')]
+
+
+# a header of the package that uses C's `assert` and includes only
+# <vector>: with the real headers, a library's header included before it
+# brings <cassert>
+ASSERTING_HEADER = r"""
+#pragma once
+#include <vector>
+
+inline double last(const std::vector<double> & samples)
+{
+  assert(!samples.empty());
+  return samples.back();
+}
+"""
+
+ASSERTING = r"""
+#include <planning/samples.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/float64.hpp>
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("sampler");
+  auto pub = node->create_publisher<std_msgs::msg::Float64>("last", 1);
+  std_msgs::msg::Float64 out;
+  out.data = last({1.0, 2.0});
+  pub->publish(out);
+}
+"""
+
+
+def test_cs_assert_used_without_its_header_is_declared(tmp_path):
+    # before: "use of undeclared identifier 'assert'" in the header
+    summary = assert_analyzes_clean(
+        tmp_path, 'sampler', ASSERTING,
+        headers={'include/planning/samples.hpp': ASSERTING_HEADER})
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['last']

@@ -36,6 +36,7 @@ completes what clang's errors show missing.
 
 
 import os
+import re
 
 from colcon_rsia.frontend.cpp.model_mode.arguments import filter_arguments
 from colcon_rsia.frontend.cpp.model_mode.arguments import is_inside
@@ -52,6 +53,8 @@ from colcon_rsia.frontend.cpp.model_mode.source_names import std_defines
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import namespace_key
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_atomically
 from colcon_rsia.frontend.cpp.model_mode.stubs import write_stand_ins
+
+_ASSERT_CALLED = re.compile(r'(?<![\w:.>])assert\s*\(')
 
 
 def prepare_model_arguments(*, source, arguments, package_path,
@@ -113,6 +116,10 @@ def prepare_model_arguments(*, source, arguments, package_path,
     result = [word for pair in own_first for word in pair] + \
         ['-I', MODEL_HEADERS_DIR] + kept + ['-I', stub_dir]
     result += std_defines(codes)
+    if any(_ASSERT_CALLED.search(code) for code in codes):
+        # C's `assert`, which the real headers of the libraries included
+        # before its use bring (the model's include less)
+        result += ['-include', 'cassert']
     result += export_macro_defines(codes)
     result += override_defines(codes)
     result += [f'-DRSIA_MODEL_OWN_{namespace_key(namespace)}'

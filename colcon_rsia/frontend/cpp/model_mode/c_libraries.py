@@ -52,7 +52,8 @@ def c_library_names(includes, codes, declared):
     kind: 'type', 'function', 'constant' or 'object'.
 
     :param includes: the unit's includes nothing provides
-    :param declared: the names the sources declare themselves
+    :param declared: a function of the names the sources declare
+      themselves
     """
     prefixes = _prefixes(includes)
     if not prefixes:
@@ -60,31 +61,30 @@ def c_library_names(includes, codes, declared):
     # the prefix, then `_` or a capital (`pcap_t`, `cudaMalloc`)
     used = re.compile(r'(?<![\w:.>~])((?i:' + '|'.join(
         sorted(map(re.escape, prefixes))) + r')(?:_|(?<=[a-z])[A-Z])\w*)')
-    names, theirs = {}, set(declared)
-    for code in codes:
-        for match in used.finditer(code):
-            before = code[max(0, match.start() - 40):match.start()]
-            if _DECLARED_AFTER.search(before):
-                theirs.add(match.group(1))
-    for code in codes:
-        for match in used.finditer(code):
-            name = match.group(1)
-            if name in theirs:
-                continue
-            after = code[match.end():match.end() + 80]
-            before = code[max(0, match.start() - 8):match.start()]
-            if ALL_CAPS.match(name):
-                kind = 'constant'
-            elif name.endswith('_t') or before.rstrip().endswith(
-                    ('struct', 'enum', 'union')) or _DECLARES.match(after):
-                kind = 'type'
-            elif re.match(r'\s*\(', after):
-                kind = 'function'
-            else:
-                kind = 'object'
-            # (a type wins over another use of the same name)
-            if names.get(name) != 'type':
-                names[name] = kind
+    uses = [(code, match) for code in codes for match in used.finditer(code)]
+    names, theirs = {}, set(declared())
+    for code, match in uses:
+        before = code[max(0, match.start() - 40):match.start()]
+        if _DECLARED_AFTER.search(before):
+            theirs.add(match.group(1))
+    for code, match in uses:
+        name = match.group(1)
+        if name in theirs:
+            continue
+        after = code[match.end():match.end() + 80]
+        before = code[max(0, match.start() - 8):match.start()]
+        if ALL_CAPS.match(name):
+            kind = 'constant'
+        elif name.endswith('_t') or before.rstrip().endswith(
+                ('struct', 'enum', 'union')) or _DECLARES.match(after):
+            kind = 'type'
+        elif re.match(r'\s*\(', after):
+            kind = 'function'
+        else:
+            kind = 'object'
+        # (a type wins over another use of the same name)
+        if names.get(name) != 'type':
+            names[name] = kind
     return names
 
 
@@ -94,8 +94,9 @@ def c_library_header(names):
              'libraries the model lacks', '#pragma once',
              '#include <rsia_model/message.h>']
     for i, (name, kind) in enumerate(sorted(names.items())):
-        lines.append(f'#if !defined({name}) && '
-                     f'!defined({repaired_guard(name)})')
+        lines += [f'#if !defined({name}) && '
+                  f'!defined({repaired_guard(name)})',
+                  f'#define {repaired_guard(name)}']
         if kind == 'type':
             lines += catch_all_class(name)
         elif kind == 'function':

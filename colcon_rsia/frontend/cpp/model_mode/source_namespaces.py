@@ -51,18 +51,20 @@ def using_declarations(codes):
             for qualifier, name in _USING_NAME.findall(code)}
 
 
-def names_in_bodies(namespace, codes):
+def names_in_bodies(namespace, codes, openings):
     """What the sources write in their `namespace` blocks: (names, functions).
 
     names: every name written unqualified there, declared or only used (a
     superset of what the sources declare in a namespace they add to:
     `namespace pcl { inline int getFieldIndex(...) ... }`); functions: those
     of them written before `(` and never as a class or a scope.
+
+    :param openings: the sources' namespace_openings
     """
     names, functions, classes = set(), set(), set()
     # the namespaces they open inside it (`namespace a::b {` for `a`)
     *parents, last = namespace.split('::')
-    for opening in namespace_openings(codes):
+    for opening in openings:
         for prefix in ((last,), (*parents, last)):
             if opening[:len(prefix)] == prefix and len(opening) > len(prefix):
                 names.add(opening[len(prefix)])

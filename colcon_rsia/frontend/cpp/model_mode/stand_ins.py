@@ -116,7 +116,8 @@ def qt_used(codes, declared, includes):
     the moc macros without including Qt: the library's headers do. Only
     where the sources show Qt (a moc macro, an include of Qt).
 
-    :param declared: the names the sources declare themselves
+    :param declared: a function of the names the sources declare
+      themselves
     :param includes: the includes nothing provides
     """
     if not any(_MOC_MACRO.search(code) for code in codes) and \
@@ -124,7 +125,7 @@ def qt_used(codes, declared, includes):
         return []
     names = {name for code in codes for name in _QT_NAME.findall(code)}
     lines = ['#include <rsia_model/qt_core.h>']
-    for name in sorted(names - declared):
+    for name in sorted(names - declared()):
         lines += _qt_class(name)
     return lines
 
@@ -212,9 +213,10 @@ def namespace_key(namespace):
 
 
 def repaired_guard(qualified_name):
-    """The macro a repair header defines with its declaration of a name.
+    """The macro defined with a catch-all declaration of a name.
 
-    The stand-ins of unknown libraries leave a name so defined to it.
+    A repair header, a partial model or a stand-in of an unknown library
+    defines it; any later declaration of the name steps aside.
     """
     return '__'.join(['RSIA_REPAIRED'] + qualified_name.split('::'))
 

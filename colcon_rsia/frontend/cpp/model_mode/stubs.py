@@ -7,6 +7,7 @@ parsed in parallel processes: the generated files only ever grow, writes
 are atomic and serialised by a lock on the directory (processes share it).
 """
 
+import functools
 import os
 import re
 import threading
@@ -97,7 +98,7 @@ def write_stand_ins(scanner, codes, stub_dir):
         else:
             stubs.update(stand_ins_for(
                 name, codes, name in scanner.included_by_model))
-    unknown, own, brought = _unknown_namespaces(stubs, codes)
+    unknown, own, brought = _unknown_namespaces(stubs, codes, msgs_types)
     implicit = []
     for package, includes in sorted(msgs_types.items()):
         for include in sorted(includes):
@@ -130,7 +131,8 @@ def write_stand_ins(scanner, codes, stub_dir):
         unknown_includes = [
             name for name, stub in stubs.items()
             if stub.startswith(STUB_MARKER + ' kind=empty')]
-        declared = declared_names(codes) if unknown_includes else set()
+        # (read only where an unknown include needs it: a costly scan)
+        declared = functools.cache(lambda: declared_names(codes))
         qt = qt_used(codes, declared, stubs) if unknown_includes else []
         if qt:
             # (an include it does not have may include Qt)
@@ -346,9 +348,11 @@ def _merge_implicit(stub_dir, implicit):
     write_atomically(path, '\n'.join(lines) + '\n')
 
 
-def _unknown_namespaces(stubs, codes):
+def _unknown_namespaces(stubs, codes, messages_named):
     """Guess what unknown includes declare.
 
+    :param messages_named: {package: the includes of its messages the
+      sources name} (source_names.used_names)
     :returns: ({namespace: (types {name: static members}, objects,
       constants, templates {name: True for a function, (the kind of its
       parameters, static members) for a class}, nested namespaces {name:
@@ -416,9 +420,10 @@ def _unknown_namespaces(stubs, codes):
                 namespaces.add(prefix)
     # a namespace no include of the unit names, brought by an unknown
     # header (a library's header includes Eigen's): the unit includes it
+    # (a message package's messages have stand-ins, included or implicit)
     brought = sorted(_brought_namespaces(
-        qualifiers - namespaces - set(with_messages), codes)) \
-        if empties else []
+        qualifiers - namespaces - set(with_messages) - set(messages_named),
+        codes)) if empties else []
     namespaces.update(brought)
     # names that are namespaces of their own at the top: `dir::` alone
     # never means `top::dir::` for them
@@ -438,7 +443,8 @@ def _unknown_namespaces(stubs, codes):
             # and their overloads): what they write in it is theirs, the
             # rest of what they use of it the library's
             own.append(namespace)
-            theirs, functions = names_in_bodies(namespace, codes)
+            theirs, functions = names_in_bodies(
+                namespace, codes, openings)
         elif messages:
             # (the stand-ins of its messages declare it)
             own.append(namespace)
@@ -533,12 +539,21 @@ def _unknown_namespaces(stubs, codes):
                     kind, frozenset(template_members.get(name, ())))
         for name, member in class_templates:
             nested[name].discard(member)
+        # a message the sources name is its stand-in's (`pkg::msg::Time`,
+        # ROS 1's `pkg::Image`), included or implicit
+        for kind in ('msg', 'srv', 'action'):
+            if any(include.startswith(f'{namespace}/{kind}/')
+                   for include in messages_named.get(namespace, ())):
+                nested.pop(kind, None)
+        for name in list(types):
+            if f'{namespace}/{name}.h' in messages_named.get(namespace, ()):
+                del types[name]
         for name in set(template_kinds) | set(nested):
             types.pop(name, None)
         objects -= set(types) | set(template_kinds) | set(nested)
         constants -= set(types) | set(template_kinds) | set(nested)
-        overloads = _theirs_left(namespace, codes, theirs, functions, (
-            types, objects, constants, templates, nested))
+        overloads = _theirs_left(namespace, codes, openings, (
+            theirs, functions), (types, objects, constants, templates, nested))
         if types or objects or constants or templates or nested or \
                 overloads:
             result[namespace] = (types, objects, constants, templates,
@@ -548,14 +563,16 @@ def _unknown_namespaces(stubs, codes):
                          if name in result and name not in own]
 
 
-def _theirs_left(namespace, codes, theirs, functions, names):
+def _theirs_left(namespace, codes, openings, written, names):
     """Leave to the sources what they write in a namespace they add to.
 
     What they call there may have the library's overloads too: those are
     declared as catch-all overloads that any of theirs beats.
 
+    :param written: what they write there (names_in_bodies)
     :returns: the overloads, as names relative to the namespace
     """
+    theirs, functions = written
     types, objects, constants, templates, nested = names
     overloads = set()
     # (a call without arguments would tie between theirs and a catch-all)
@@ -574,7 +591,7 @@ def _theirs_left(namespace, codes, theirs, functions, names):
             constants.discard(name)
     for name in theirs & set(nested):
         inner_names, inner_functions = names_in_bodies(
-            f'{namespace}::{name}', codes)
+            f'{namespace}::{name}', codes, openings)
         if not inner_names:
             # (not a namespace they open: a variable of theirs, say)
             del nested[name]

@@ -188,9 +188,13 @@ def _unknown_header(stub_dir, namespace, names):
 
 
 def _undeclared(namespace, name):
-    """The condition of a declaration no macro or repair header made."""
-    return f'#if !defined({name}) && ' \
-        f'!defined({repaired_guard(namespace + "::" + name)})'
+    """The opening of a declaration no macro or earlier header made.
+
+    (Its guard tells the later ones: a namespace's own header and its
+    parent's, which declares it as nested, may both be in a unit.)
+    """
+    guard = repaired_guard(namespace + '::' + name)
+    return f'#if !defined({name}) && !defined({guard})\n#define {guard}'
 
 
 def catch_all_class(name, *, head='', members=()):
