@@ -42,6 +42,7 @@ from colcon_rsia.package.nodes import skipped_executable
 from colcon_rsia.package.nodes import target_naming
 from colcon_rsia.package.nodes import TEXT_READER
 from colcon_rsia.package.repair_gains import unrecorded_calls
+from colcon_rsia.package.units import parse_units
 from colcon_rsia.package.workers import check_stop
 from colcon_rsia.summary import store
 from colcon_rsia.summary import wrapper_store
@@ -138,7 +139,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
     resource_dir = find_resource_dir()
     if resource_dir is None and entries:
         raise AnalysisError(RESOURCE_DIR_HINT)
-    precompiled_dir = shared_repairs = plan_headers = None
+    precompiled_dir = shared_repairs = plan_headers = reseed = None
     if header_mode == 'exact':
         from colcon_rsia.frontend.cpp import shared_headers
         # the system headers units share, compiled once for them
@@ -157,6 +158,7 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
                 recovery.workspace_repairs,
                 build_paths.workspace_repairs_file(build_base),
                 workspace_package_dirs)
+            reseed = functools.partial(recovery.reseed, package_path=path)
 
     prepared_at = time.monotonic()
     try:
@@ -166,13 +168,13 @@ def analyze_package(*, name, path, build_base, jobs=None, use_cache=True,
             resource_dir=resource_dir) if use_cache else None
     except ValueError as e:
         raise AnalysisError(str(e)) from None
-    units, diagnostics = workers.parse_units(
+    units, diagnostics = parse_units(
         entries, unit_facts=_unit_facts, package_path=path,
         resource_dir=resource_dir, precompiled_dir=precompiled_dir,
         cache=build_paths.cache_dir(build_base) if use_cache else None,
         jobs=jobs or workers.default_jobs(), timeout=timeout, repair=repair,
         shared=shared, shared_repairs=shared_repairs,
-        plan_headers=plan_headers,
+        plan_headers=plan_headers, reseed=reseed,
         wrappers=wrapper_store.read_workspace_wrappers(
             build_base, workspace_package_dirs if dependency_dirs is None
             else dependency_dirs))
@@ -345,7 +347,7 @@ def _inside(file, directory):
 def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
                 wrappers=(), wrappers_digest=None, precompiled_dir=None,
                 repair=REPAIR_WHEN_IT_PAYS, shared=None, shared_repairs=None,
-                package_headers=None):
+                package_headers=None, reseeded=False):
     """Facts of one TU, parsed (in a worker process: see workers.py).
 
     :param hidden: {file: why} of files libclang is given as empty
@@ -357,6 +359,8 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     :param package_headers: exact mode: {unit file: the system headers it
       shares with other units of its package} (shared_headers.plan); the
       PCH of them is kept in ``precompiled_dir``
+    :param reseeded: the unit is parsed again, seeded with what its package
+      learnt since (recovery.reseed): one more parse, as a repair round
     """
     hidden = hidden or {}
     relative = safe_files.display(os.path.relpath(entry.file, package_path))
@@ -433,7 +437,7 @@ def _unit_facts(entry, package_path, resource_dir, cache, hidden=None, *,
     # stops the parse before the package's code: it counts)
     facts.package_errors = sum(
         1 for e in errors if not e[1] or _inside(e[1], package_path))
-    facts.repair_rounds = rounds
+    facts.repair_rounds = rounds + reseeded
     # (without an error in the package's code the parse lost nothing; the
     # repair rounds counted it already when they ran)
     facts.lost_calls = 0 if not facts.package_errors else \

@@ -22,6 +22,7 @@ must guard its own code with ``if __name__ == '__main__':`` (the fork
 server imports the script, as its main module, once).
 
 Also here: how an analysis is stopped (Ctrl-C, :func:`request_stop`).
+Which units are parsed, and which come from the cache: units.py.
 """
 
 import atexit
@@ -41,11 +42,7 @@ import time
 from colcon_rsia import safe_files
 from colcon_rsia.environment_variables import \
     UNIT_TIMEOUT_ENVIRONMENT_VARIABLE
-from colcon_rsia.package.cache import read_cached_facts
-from colcon_rsia.package.cache import unit_cache_file
-from colcon_rsia.package.cache import write_cached_facts
 from colcon_rsia.package.settings import positive_number
-from colcon_rsia.summary import wrapper_store
 
 
 class Interrupted(Exception):
@@ -144,138 +141,6 @@ PRECOMPILING = 'precompiling'
 
 class WorkersUnavailable(Exception):
     """No worker process can be started here (str: why)."""
-
-
-def parse_units(entries, *, unit_facts, package_path, resource_dir, cache,
-                jobs, timeout, wrappers=(), precompiled_dir=None,
-                repair=None, shared=None, shared_repairs=None,
-                plan_headers=None):
-    """Facts of a package's TUs; return (facts by file, messages).
-
-    The units whose facts are cached are read here; the others are parsed
-    in worker processes: one that crashes libclang or takes longer than
-    ``timeout`` loses only itself.
-
-    :param unit_facts: the function that parses one unit (entry and the
-      keyword arguments below; analysis._unit_facts)
-    :param precompiled_dir: where the model mode's precompiled standard
-      headers are kept (None: parse without them)
-    :param wrappers: the WrapperSummary of the workspace's other
-      packages, for the calls of functions whose body is out of sight
-    :param float timeout: the seconds one unit may take
-    :param repair: when the model mode repairs a unit (for unit_facts)
-    :param shared: the shared_cache.SharedCache looked in after ``cache``
-      (and given to unit_facts, which stores the facts it makes), or None
-    :param shared_repairs: a function making the model mode's repairs the
-      workspace's units share (for unit_facts), called only when a unit is
-      parsed; or None
-    :param plan_headers: exact mode: the function that plans which system
-      headers the units to parse share, precompiled in ``precompiled_dir``
-      (shared_headers.plan); None for the model mode
-    :raises Interrupted: when :func:`request_stop` was called
-    """
-    hidden = _unsafe_includes(entries, package_path)
-    # (the cached facts of a unit depend on its repairs too)
-    digest = f'{wrapper_store.wrappers_digest(wrappers)}:{repair}'
-    if shared is not None:
-        # (libclang sees the hidden files empty: other facts)
-        shared = shared.with_hidden(hidden)
-    found = [_checked_or_cached(entry, package_path, cache, digest, shared)
-             for entry in entries]
-    todo = [i for i, result in enumerate(found) if result is None]
-    if shared_repairs is not None:
-        shared_repairs = shared_repairs() if todo else None
-    package_headers = None
-    if plan_headers is not None:
-        # (a file libclang must see empty could be among those headers)
-        package_headers = {} if hidden else \
-            plan_headers([entries[i] for i in todo])
-    results, diagnostics = parse(
-        _guarded, [entries[i] for i in todo], context=dict(
-            unit_facts=unit_facts, package_path=package_path,
-            resource_dir=resource_dir, cache=cache, hidden=hidden,
-            wrappers=wrappers, wrappers_digest=digest,
-            precompiled_dir=precompiled_dir, repair=repair, shared=shared,
-            shared_repairs=shared_repairs, package_headers=package_headers),
-        jobs=jobs, timeout=timeout, cleanup_dirs=[cache, precompiled_dir])
-    if shared is not None and todo:
-        shared.evict()  # what the workers added may pass the size limit
-    for i, (parsed, result) in zip(todo, results):
-        found[i] = result if parsed else (None, [
-            f'{_relative(entries[i], package_path)}: not analysed: {result}'])
-    units = {}
-    for entry, (facts, messages) in zip(entries, found):
-        if facts is not None:
-            units[entry.file] = facts
-        diagnostics.extend(messages)
-    return units, diagnostics
-
-
-def _guarded(entry, *, unit_facts, **context):
-    """Run the unit's parse; raise nothing but Interrupted."""
-    try:
-        check_stop()
-        return unit_facts(entry, **context)
-    except Interrupted:
-        raise
-    except Exception as e:  # noqa: B902
-        # a bug of ours in one unit loses that unit, not the package
-        relative = os.path.relpath(entry.file, context['package_path'])
-        return None, [f'{relative}: not analysed (internal error: '
-                      f'{type(e).__name__}: {e}); please report it']
-
-
-def _relative(entry, package_path):
-    return safe_files.display(os.path.relpath(entry.file, package_path))
-
-
-def _unsafe_includes(entries, package_path):
-    """Files an include could make libclang open that it must not."""
-    search_dirs = sorted({d for e in entries for d in safe_files.include_dirs(
-        e.arguments, e.directory)})
-    return safe_files.unsafe_inputs(
-        [e.file for e in entries], search_dirs=search_dirs,
-        roots=[package_path] + search_dirs,
-        # colcon_rsia itself (its model headers): this module is in
-        # colcon_rsia/package
-        skip=[os.path.dirname(os.path.dirname(os.path.abspath(__file__)))])
-
-
-def _checked_or_cached(entry, package_path, cache, wrappers_digest,
-                       shared=None):
-    """(facts, messages) of a TU known without parsing it, or None.
-
-    Its facts from the cache when nothing it reads changed (the package's
-    cache, then the shared one); nothing when it cannot be read.
-    """
-    relative = _relative(entry, package_path)
-    try:
-        safe_files.check_file(entry.file, roots=[package_path])
-        safe_files.read_head(entry.file, 1)
-    except safe_files.UnsafeFileError as e:
-        return None, [f'{relative}: {e}']
-    except FileNotFoundError:
-        pass  # said below
-    except OSError as e:
-        return None, [f'{relative}: cannot be read ({e.strerror or e})']
-    if cache is not None:
-        cached = read_cached_facts(
-            unit_cache_file(cache, entry), entry, wrappers_digest)
-        if cached is not None:
-            return cached, list(cached.diagnostics)
-        found = shared.lookup(entry, wrappers_digest) \
-            if shared is not None else None
-        if found is not None:
-            cached, inputs = found
-            # the next run finds it in the package's cache, without
-            # hashing the files again
-            write_cached_facts(unit_cache_file(cache, entry), entry, inputs,
-                               cached, wrappers_digest)
-            return cached, list(cached.diagnostics)
-    if not os.path.isfile(entry.file):
-        return None, [f'{relative}: source file missing (stale compile '
-                      'database?); skipped']
-    return None
 
 
 def parse(function, items, *, context, jobs, timeout, cleanup_dirs=()):

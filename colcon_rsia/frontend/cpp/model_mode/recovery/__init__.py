@@ -11,6 +11,8 @@ table of rules (:data:`.rules.RULES`, one row per class of diagnostic,
 each with worked examples), whose answers are permissive declarations
 (:mod:`.render`) or edits of the code in memory (:mod:`.edits`,
 :mod:`.applied`), and the unit is parsed again (:func:`.loop.parse_unit`).
+A unit parsed before its package's other units learnt what its errors
+show missing is seeded with that and parsed once more (:func:`.reseed`).
 
 No rule names a library: what a name becomes follows from how the code
 uses it (:mod:`.naming`: ``ns::`` a namespace, ``(`` a function, ``<`` a
@@ -26,11 +28,12 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.loop import parse_unit
 from colcon_rsia.frontend.cpp.model_mode.recovery.loop import ParsedUnit
 from colcon_rsia.frontend.cpp.model_mode.recovery.loop import \
     workspace_repairs
+from colcon_rsia.frontend.cpp.model_mode.recovery.reseed import reseed
 from colcon_rsia.frontend.cpp.model_mode.recovery.store import \
     ensure_repair_header
 from colcon_rsia.frontend.cpp.model_mode.recovery.store import repair_header
 
 __all__ = [
     'MAX_REPAIR_ROUNDS', 'ParsedUnit', 'ensure_repair_header', 'parse_unit',
-    'repair_header', 'workspace_repairs',
+    'repair_header', 'reseed', 'workspace_repairs',
 ]

@@ -80,7 +80,7 @@ def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
       with what the workspace's other units needed, and offers its own
     :rtype: ParsedUnit
     """
-    header = _repair_header_of(entry.arguments)
+    header = repair_header_of(entry.arguments)
     if header is None:
         tu = parse(entry.arguments, [])
         return ParsedUnit(tu, facts_of(tu) if facts_of else None)
@@ -90,7 +90,8 @@ def parse_unit(index, entry, *, parse, resource_dir, package_path, relative,
         check_stop=check_stop, workspace=workspace_repairs).run()
 
 
-def _repair_header_of(arguments):
+def repair_header_of(arguments):
+    """The repair header a unit's arguments force-include, or None."""
     for option, value in zip(arguments, arguments[1:]):
         if option == '-include' and \
                 f'/{store.REPAIR_DIR}/' in value.replace(os.sep, '/'):

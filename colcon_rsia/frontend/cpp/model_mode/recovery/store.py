@@ -215,6 +215,16 @@ def seed_repairs(header, source, declared, workspace=None):
 
     :param workspace: a WorkspaceRepairs, or None
     """
+    seeds = shared_seeds(header, declared, workspace)
+    return bool(seeds) and add_repairs(header, source, seeds, SEEDED)
+
+
+def shared_seeds(header, declared, workspace=None):
+    """{(kind, name)} a unit starts with: what its package's units shared.
+
+    :param declared: the names the unit's package declares
+    :param workspace: a WorkspaceRepairs (the workspace's too), or None
+    """
     path = os.path.join(os.path.dirname(header), SHARED_REPAIRS)
     with _shared_lock:
         shared = _read_shared(path)
@@ -223,9 +233,8 @@ def seed_repairs(header, source, declared, workspace=None):
     # a unit may include the model header or the package header that
     # another unit lacked: only names declared in neither are seeded
     declared = set(declared) | model_declarations()
-    seeds = {r for r in shared
-             if r[0] in INCLUDES or not is_declared(r[1], declared)}
-    return bool(seeds) and add_repairs(header, source, seeds, SEEDED)
+    return {r for r in shared
+            if r[0] in INCLUDES or not is_declared(r[1], declared)}
 
 
 def _read_shared(path):
