@@ -740,13 +740,17 @@ def test_include_scan_survives_odd_sources(tmp_path):
     assert '_goal_type' in stub('pkg_msgs/ModeActionGoal.h')
     assert 'struct ModeGoal_' in stub('pkg_msgs/ModeGoal.h')
     assert 'class ControllerConfig ' in stub('pkg/ControllerConfig.h')
-    # names used from an unknown library get catch-all declarations, unless
-    # the TU declares that namespace itself (here: it has pkg's config)
+    # names used from an unknown library get catch-all declarations
     unknown = stub('rsia_model/unknown/vendor_sdk.h')
     assert 'struct Client ' in unknown
     assert 'extern ::rsia_model::Any connect;' in unknown
     assert 'constexpr int DEFAULT_PORT = 1;' in unknown
-    assert '-DRSIA_MODEL_OWN_pkg' in arguments
+    # but what a stand-in declares (pkg's config) is the stand-in's: the
+    # namespace's header includes it instead
+    unknown = stub('rsia_model/unknown/pkg.h')
+    assert '#include <pkg/ControllerConfig.h>' in unknown
+    assert 'ControllerConfig :' not in unknown
+    assert '-DRSIA_MODEL_OWN_pkg' not in arguments
     # `../gone/up.h` is found through an extra directory inside the stubs
     up = [arguments[i + 1] for i, a in enumerate(arguments[:-1])
           if a == '-I' and arguments[i + 1].startswith(str(stub_dir / '_up'))]

@@ -374,10 +374,11 @@ def _unknown_namespaces(stubs, codes, messages_named):
     members its uses name (`Matrix<double, 3, 3>::Identity()`); where no
     shape fits every use, the repairs declare it (recovery/). In a
     namespace the sources open themselves (a library's they add to), what
-    they write inside their blocks is theirs (_theirs_left), and so is
-    what stand-ins of its messages declare (`pcl/PCLHeader.h`); one with
-    such stand-ins that they do not open is left to them whole. Both are
-    named in the second result. Below a namespace the model or
+    they write inside their blocks is theirs (_theirs_left); such a
+    namespace is named in the second result. What stand-ins of a
+    namespace's messages declare (`pcl/PCLHeader.h`), and the messages
+    the sources name (msg/, srv/, action/), are theirs in any namespace;
+    the namespace's header includes those stand-ins. Below a namespace the model or
     the sources own, the next directory is a nested namespace; a directory
     named after its namespace and more (`dynamixel_sdk/`) gives that
     namespace (stand_ins.nested_namespace, prefix_namespaces).
@@ -445,10 +446,6 @@ def _unknown_namespaces(stubs, codes, messages_named):
             own.append(namespace)
             theirs, functions = names_in_bodies(
                 namespace, codes, openings)
-        elif messages:
-            # (the stand-ins of its messages declare it)
-            own.append(namespace)
-            continue
         last = namespace.rsplit('::', 1)[-1]
         spelled = _spelled(namespace, unqualified=last not in tops)
         # (and its aliases: `namespace ec = Eigen;` then `ec::Matrix3f`)
