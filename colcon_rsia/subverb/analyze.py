@@ -54,9 +54,10 @@ class AnalyzeRsiaSubverb(RsiaSubverbExtensionPoint):
             '--repair', choices=('when-it-pays', 'always'),
             default='when-it-pays',
             help='model mode: repair a unit when its AST lost calls the '
-                 'tokens show (when-it-pays), or whenever its own code has '
-                 'parse errors (always: fewer errors, more parses) '
-                 '(default: when-it-pays)')
+                 'tokens show, or once when what its package learnt from '
+                 'the other units answers its errors (when-it-pays), or '
+                 'whenever its own code has parse errors (always: fewer '
+                 'errors, more parses) (default: when-it-pays)')
         parser.add_argument(
             '--jobs', type=positive_int, default=None, metavar='N',
             help='Translation units parsed in parallel, each in a worker '
