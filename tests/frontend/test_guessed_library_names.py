@@ -465,3 +465,68 @@ def test_a_namespace_with_message_stand_ins_keeps_its_other_names(tmp_path):
         headers={'include/mapper/cloud.hpp': MESSAGE_LIKE_HEADER})
     [node] = summary.nodes
     assert [p.topic for p in node.publishers] == ['size']
+
+
+# a base class of the workspace returning a container of a library's type,
+# and an override returning it by the library's alias of that container
+SCENE_BASE = r"""
+#pragma once
+#include <vector>
+#include <walls/wall.hpp>
+
+namespace planner
+{
+class Scene
+{
+public:
+  virtual ~Scene() = default;
+  virtual std::vector<walls::Wall> createWalls() = 0;
+};
+}  // namespace planner
+"""
+
+OVERRIDE_ALIAS = r"""
+#include <ros/ros.h>
+#include <std_msgs/Int32.h>
+#include <planner/scene.hpp>
+#include <walls/walls.hpp>
+
+namespace planner
+{
+class Crosswalk : public Scene
+{
+public:
+  walls::Walls createWalls() override;
+};
+
+walls::Walls Crosswalk::createWalls()
+{
+  walls::Walls all;
+  all.push_back(walls::Wall());
+  return all;
+}
+}  // namespace planner
+
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "crosswalk");
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<std_msgs::Int32>("walls", 1);
+  planner::Crosswalk scene;
+  std_msgs::Int32 out;
+  out.data = scene.createWalls().size();
+  pub.publish(out);
+}
+"""
+
+
+def test_a_name_an_override_returns_is_what_the_base_returns(tmp_path):
+    # before: "virtual function 'createWalls' has a different return type
+    # ('walls::Walls') than the function it overrides (which has return
+    # type 'std::vector<walls::Wall>')": the library's alias was guessed
+    # as a class
+    summary = assert_analyzes_clean(
+        tmp_path, 'crosswalk', OVERRIDE_ALIAS,
+        headers={'include/planner/scene.hpp': SCENE_BASE})
+    [node] = summary.nodes
+    assert [p.topic for p in node.publishers] == ['walls']

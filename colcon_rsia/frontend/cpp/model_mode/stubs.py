@@ -40,6 +40,7 @@ from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
 from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
     namespace_openings
 from colcon_rsia.frontend.cpp.model_mode.source_namespaces import opens
+from colcon_rsia.frontend.cpp.model_mode.source_namespaces import parts
 from colcon_rsia.frontend.cpp.model_mode.source_namespaces import \
     using_declarations
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import combined_stub_from
@@ -357,7 +358,8 @@ def _unknown_namespaces(stubs, codes, messages_named):
       constants, templates {name: True for a function, (the kind of its
       parameters, static members) for a class}, nested namespaces {name:
       names}, the stand-ins of its messages, the catch-all overloads of
-      functions of the sources)}, sorted namespaces the TU declares itself
+      functions of the sources, aliases {name: the type it stands for})},
+      sorted namespaces the TU declares itself
       (their names go to a header of the unit's own), the namespaces no
       include names, which the unit must include)
 
@@ -551,10 +553,13 @@ def _unknown_namespaces(stubs, codes, messages_named):
         constants -= set(types) | set(template_kinds) | set(nested)
         overloads = _theirs_left(namespace, codes, openings, (
             theirs, functions), (types, objects, constants, templates, nested))
+        aliases = _override_aliases(namespace, types, templates, codes)
+        for name in aliases:
+            del types[name]
         if types or objects or constants or templates or nested or \
-                overloads:
+                overloads or aliases:
             result[namespace] = (types, objects, constants, templates,
-                                 nested, messages, overloads)
+                                 nested, messages, overloads, aliases)
     # (one the unit adds to has a header of the unit's own)
     return result, own, [name for name in brought
                          if name in result and name not in own]
@@ -599,6 +604,60 @@ def _theirs_left(namespace, codes, openings, written, names):
                 overloads.add(f'{name}::{member}')
         nested[name] -= inner_names
     return overloads
+
+
+def _override_aliases(namespace, types, templates, codes):
+    """{name: type} of the namespace's names an override returns.
+
+    C++ wants an override to return what the function it overrides
+    returns: `ns::Walls walls() override;` beside `virtual
+    std::vector<ns::Wall> walls() = 0;` in the sources makes `Walls` the
+    library's alias of that type, not a class. Only a type the header of
+    the namespace can spell: standard containers of its own names.
+    """
+    *_, last = namespace.split('::')
+    aliases = {}
+    for code in codes:
+        for match in _OVERRIDER.finditer(code):
+            qualifier, name, function = match.groups()
+            if name not in types or name in aliases or (
+                    qualifier and parts(qualifier)[-1:] != (last,)):
+                continue
+            base = re.search(r'\bvirtual\s+([^;{}()=]+?)\s*\b' +
+                             re.escape(function) + r'\s*\(',
+                             '\n'.join(codes))
+            target = base and re.sub(r'\s+', ' ', base.group(1).strip())
+            if target and _spellable(target, namespace, name, types,
+                                     templates):
+                aliases[name] = target
+    return aliases
+
+
+# `[ns::]Name function(...) [const] [noexcept] [final] override`
+_OVERRIDER = re.compile(
+    r'(?<![\w:])((?:[A-Za-z_]\w*\s*::\s*)*)([A-Za-z_]\w*)\s+'
+    r'([A-Za-z_]\w*)\s*\([^;{}]*?\)\s*(?:const\s*)?(?:noexcept\s*)?'
+    r'(?:final\s*)?override\b')
+# what a header of an unknown namespace can name besides its own names
+# (rsia_model/message.h includes them)
+_SPELLABLE = frozenset({
+    'std::vector', 'std::array', 'std::string', 'std::size_t', 'bool',
+    'char', 'int', 'long', 'short', 'unsigned', 'signed', 'float', 'double',
+    'const'})
+
+
+def _spellable(target, namespace, name, types, templates):
+    """Whether the namespace's header can declare an alias of `target`."""
+    own = (set(types) | set(templates)) - {name}
+    for used in re.findall(r'[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*',
+                           target):
+        used = re.sub(r'\s+', '', used)
+        if used in _SPELLABLE or used in own or (
+                used.startswith(namespace + '::') and
+                used[len(namespace) + 2:] in own) or used.isdigit():
+            continue
+        return False
+    return True
 
 
 def _called_without_arguments(name, codes):

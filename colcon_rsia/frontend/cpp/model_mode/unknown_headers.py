@@ -57,9 +57,11 @@ def unit_header(stub_dir, key, content):
 
 def _add_declared(old, names):
     """Add what an unknown namespace's header declares to `names`."""
-    types, objects, constants, templates, nested, messages, overloads = \
-        names
+    types, objects, constants, templates, nested, messages, overloads, \
+        aliases = names
     messages |= set(re.findall(r'^// stand-in <(.+)>$', old, re.M))
+    for match in re.finditer(r'^// alias (\w+) = (.+)$', old, re.M):
+        aliases.setdefault(match.group(1), match.group(2))
     overloads |= set(re.findall(r'^// overload (\S+)$', old, re.M))
     for match in re.finditer(r'^// type (\w+):([\w ]*)$', old, re.M):
         types.setdefault(match.group(1), set()).update(
@@ -86,8 +88,11 @@ def _add_declared(old, names):
 
 def _unknown_header(stub_dir, namespace, names):
     """The text of a header declaring what the sources use of a namespace."""
-    types, objects, constants, templates, nested, messages, overloads = \
-        names
+    types, objects, constants, templates, nested, messages, overloads, \
+        aliases = names
+    # (an alias another unit found for a name this one takes for a class)
+    for name in aliases:
+        types.pop(name, None)
     # what the stand-ins of the namespace's messages declare is theirs:
     # the header includes them instead (a unit may name a message that
     # only an unknown header of the library includes)
@@ -159,6 +164,10 @@ def _unknown_header(stub_dir, namespace, names):
                 lines += catch_all_function(member)
             lines.append('#endif')
         lines.append(f'}}  // namespace {name}')
+    # (after the names they may stand for)
+    for name, target in sorted(aliases.items()):
+        lines += [f'// alias {name} = {target}', _undeclared(namespace, name),
+                  f'using {name} = {target};', '#endif']
     # (a repair header, force-included first, may have declared any of
     # them as another kind: a function the sources call, say)
     for name in sorted(objects):
