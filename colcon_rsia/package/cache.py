@@ -88,6 +88,15 @@ def read_cached_facts(cache_file, entry, wrappers=None):
         return None  # no cache, or one we cannot trust: parse again
 
 
+def cached_inputs(cache_file):
+    """The files a unit's cached facts were made from, or None."""
+    try:
+        with open(cache_file, encoding='utf-8') as h:
+            return list(json.load(h)['inputs'])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
 def write_cached_facts(cache_file, entry, inputs, facts, wrappers=None):
     """Cache a unit's facts with the stamps of the files it read."""
     data = {

@@ -26,7 +26,7 @@ NOT_ANALYSED = 'not_analysed'
 # starts a diagnostic, "executable 'x': ...", is no path)
 _LOCATED = re.compile(
     r'(?P<file>[^\s:]+)(?::(?P<line>\d+))?(?::\d+)?: (?P<reason>.*)', re.S)
-_PARSE_ERROR = 'parse error: '
+PARSE_ERROR = 'parse error: '
 
 
 def split_problem(text, package_path=None):
@@ -42,15 +42,15 @@ def split_problem(text, package_path=None):
     problem.update(file=match.group('file'), reason=match.group('reason'))
     if match.group('line'):
         problem['line'] = int(match.group('line'))
-    if problem['reason'].startswith(_PARSE_ERROR):
+    if problem['reason'].startswith(PARSE_ERROR):
         # the unit that was parsed, and the place of the error within it
-        inner = _LOCATED.fullmatch(problem['reason'][len(_PARSE_ERROR):])
+        inner = _LOCATED.fullmatch(problem['reason'][len(PARSE_ERROR):])
         if inner is not None:
             problem['unit'] = problem['file']
             problem['file'] = _relative(inner.group('file'), package_path)
             problem['line'] = int(inner.group('line')) \
                 if inner.group('line') else None
-            problem['reason'] = 'parse error: ' + inner.group('reason')
+            problem['reason'] = PARSE_ERROR + inner.group('reason')
     return problem
 
 

@@ -8,13 +8,15 @@ mode, a unit parsed before its package learnt what it lacks may be parsed
 once more (recovery.reseed).
 """
 
-import json
 import os
 
 from colcon_rsia import safe_files
+from colcon_rsia.package.cache import cached_inputs
 from colcon_rsia.package.cache import read_cached_facts
 from colcon_rsia.package.cache import unit_cache_file
 from colcon_rsia.package.cache import write_cached_facts
+from colcon_rsia.package.problems import PARSE_ERROR
+from colcon_rsia.package.problems import split_problem
 from colcon_rsia.package.workers import check_stop
 from colcon_rsia.package.workers import Interrupted
 from colcon_rsia.package.workers import parse
@@ -174,17 +176,18 @@ def _parse_reseeded(parsed, entries, found, *, reseed, context, jobs,
     cache, shared = context['cache'], context['shared']
     again = []
     for i in parsed:
-        undo = reseed(entries[i], found[i][0],
+        undo = reseed(entries[i], found[i][0], _parse_errors(found[i][0]),
                       workspace=context['shared_repairs'])
         if undo is not None:
-            again.append((i, undo, _cached(cache, entries[i])))
+            again.append((i, undo, cache and cached_inputs(
+                unit_cache_file(cache, entries[i]))))
     if not again:
         return []
     results, diagnostics = parse(
         _guarded, [entries[i] for i, _, _ in again],
         context=dict(context, reseeded=True), jobs=jobs, timeout=timeout,
         cleanup_dirs=[cache, context['precompiled_dir']])
-    for (i, undo, cached), (ok, result) in zip(again, results):
+    for (i, undo, inputs), (ok, result) in zip(again, results):
         old = found[i][0]
         if ok and result[0] is not None and \
                 _score(result[0]) < _score(old):
@@ -192,34 +195,29 @@ def _parse_reseeded(parsed, entries, found, *, reseed, context, jobs,
             continue
         undo()
         old.repair_rounds += 1
-        if cached is not None:
-            # (the second parse cached its facts: the kept ones again)
-            cached['facts'] = old.to_dict()
-            _write_cached(unit_cache_file(cache, entries[i]), cached)
+        if inputs:
+            # (the second parse cached its facts: the kept ones again, made
+            # from the same files, the unit's source first)
+            write_cached_facts(unit_cache_file(cache, entries[i]),
+                               entries[i], inputs, old,
+                               context['wrappers_digest'])
             if shared is not None:
                 shared.store(entries[i], context['wrappers_digest'],
-                             list(cached['inputs'])[1:], old)
+                             inputs[1:], old)
     return diagnostics
+
+
+def _parse_errors(facts):
+    """[(file, line, message)] of the errors a unit's parse left."""
+    errors = []
+    for text in facts.diagnostics:
+        problem = split_problem(text)
+        if problem['unit'] is not None and problem['line'] is not None:
+            errors.append((problem['file'], problem['line'],
+                           problem['reason'][len(PARSE_ERROR):]))
+    return errors
 
 
 def _score(facts):
     """Which facts of a unit are kept: the lowest wins."""
     return facts.lost_calls, facts.package_errors
-
-
-def _cached(cache, entry):
-    """The cache entry of a unit, as data (None without one)."""
-    if cache is None:
-        return None
-    try:
-        with open(unit_cache_file(cache, entry), encoding='utf-8') as h:
-            return json.load(h)
-    except (OSError, ValueError):
-        return None
-
-
-def _write_cached(path, data):
-    try:
-        safe_files.write_json_atomically(path, data)
-    except OSError:
-        pass  # a cache that cannot be written only costs time

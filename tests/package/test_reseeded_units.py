@@ -28,7 +28,7 @@ def _parse_again(tmp_path, monkeypatch, second):
                        first, DIGEST)
     undone = []
 
-    def reseed(entry, facts, *, workspace):
+    def reseed(entry, facts, errors, *, workspace):
         return lambda: undone.append(entry.file)
 
     def parse(function, items, *, context, **_):

@@ -12,12 +12,12 @@ names used after `namespace::` of an unknown C++ library are.
 import re
 
 from colcon_rsia.frontend.cpp.model_mode.source_names import ALL_CAPS
-from colcon_rsia.frontend.cpp.model_mode.stand_ins import repaired_guard
 from colcon_rsia.frontend.cpp.model_mode.stand_ins import STUB_MARKER
 from colcon_rsia.frontend.cpp.model_mode.unknown_headers import \
     catch_all_class
 from colcon_rsia.frontend.cpp.model_mode.unknown_headers import \
     catch_all_function
+from colcon_rsia.frontend.cpp.model_mode.unknown_headers import undeclared
 
 # a prefix shorter than this says nothing (`<io.h>`: `io_service`)
 _MIN_PREFIX = 3
@@ -94,9 +94,7 @@ def c_library_header(names):
              'libraries the model lacks', '#pragma once',
              '#include <rsia_model/message.h>']
     for i, (name, kind) in enumerate(sorted(names.items())):
-        lines += [f'#if !defined({name}) && '
-                  f'!defined({repaired_guard(name)})',
-                  f'#define {repaired_guard(name)}']
+        lines.append(undeclared(name))
         if kind == 'type':
             lines += catch_all_class(name)
         elif kind == 'function':

@@ -617,6 +617,7 @@ def _override_aliases(namespace, types, templates, codes):
     """
     *_, last = namespace.split('::')
     aliases = {}
+    sources = '\n'.join(codes)
     for code in codes:
         for match in _OVERRIDER.finditer(code):
             qualifier, name, function = match.groups()
@@ -624,8 +625,7 @@ def _override_aliases(namespace, types, templates, codes):
                     qualifier and parts(qualifier)[-1:] != (last,)):
                 continue
             base = re.search(r'\bvirtual\s+([^;{}()=]+?)\s*\b' +
-                             re.escape(function) + r'\s*\(',
-                             '\n'.join(codes))
+                             re.escape(function) + r'\s*\(', sources)
             target = base and re.sub(r'\s+', ' ', base.group(1).strip())
             if target and _spellable(target, namespace, name, types,
                                      templates):

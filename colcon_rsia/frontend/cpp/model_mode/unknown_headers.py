@@ -128,7 +128,7 @@ def _unknown_header(stub_dir, namespace, names):
         members = sorted(types[name])
         # a repair header (recovery/) may have declared it already
         lines += [f'// type {name}:' + ''.join(' ' + m for m in members),
-                  _undeclared(namespace, name)]
+                  undeclared(f'{namespace}::{name}')]
         lines += catch_all_class(name, members=[
             line for member in members if member not in POINTER_TYPES
             for line in (
@@ -138,13 +138,13 @@ def _unknown_header(stub_dir, namespace, names):
     for name, declared in sorted(templates.items()):
         if declared is True:
             lines += [f'// function template {name}',
-                      _undeclared(namespace, name)]
+                      undeclared(f'{namespace}::{name}')]
             lines += catch_all_function(name)
         else:
             kind, members = declared
             lines += [f'// class template {name} {kind}:' + ''.join(
                 ' ' + m for m in sorted(members)),
-                _undeclared(namespace, name)]
+                undeclared(f'{namespace}::{name}')]
             lines += catch_all_class(name, head=template_head(kind), members=[
                 line for member in sorted(members)
                 if member not in POINTER_TYPES for line in (
@@ -155,7 +155,7 @@ def _unknown_header(stub_dir, namespace, names):
         lines += [f'// namespace {name}:' + ''.join(
             ' ' + m for m in sorted(members)), f'namespace {name}', '{']
         for member in sorted(members):
-            lines.append(_undeclared(f'{namespace}::{name}', member))
+            lines.append(undeclared(f'{namespace}::{name}::{member}'))
             if ALL_CAPS.match(member):
                 lines.append(f'constexpr int {member} = 1;')
             elif member[:1].isupper():
@@ -166,15 +166,15 @@ def _unknown_header(stub_dir, namespace, names):
         lines.append(f'}}  // namespace {name}')
     # (after the names they may stand for)
     for name, target in sorted(aliases.items()):
-        lines += [f'// alias {name} = {target}', _undeclared(namespace, name),
+        lines += [f'// alias {name} = {target}', undeclared(f'{namespace}::{name}'),
                   f'using {name} = {target};', '#endif']
     # (a repair header, force-included first, may have declared any of
     # them as another kind: a function the sources call, say)
     for name in sorted(objects):
-        lines += [f'// object {name}', _undeclared(namespace, name),
+        lines += [f'// object {name}', undeclared(f'{namespace}::{name}'),
                   f'extern ::rsia_model::Any {name};', '#endif']
     for i, name in enumerate(sorted(constants)):
-        lines += [f'// constant {name}', _undeclared(namespace, name),
+        lines += [f'// constant {name}', undeclared(f'{namespace}::{name}'),
                   f'constexpr int {name} = {i + 1};', '#endif']
     # a function the sources declare (or call) here, which the library
     # overloads: C varargs, the last choice, so that every overload of
@@ -196,13 +196,14 @@ def _unknown_header(stub_dir, namespace, names):
     return '\n'.join(lines)
 
 
-def _undeclared(namespace, name):
+def undeclared(qualified_name):
     """The opening of a declaration no macro or earlier header made.
 
     (Its guard tells the later ones: a namespace's own header and its
     parent's, which declares it as nested, may both be in a unit.)
     """
-    guard = repaired_guard(namespace + '::' + name)
+    name = qualified_name.rsplit('::', 1)[-1]
+    guard = repaired_guard(qualified_name)
     return f'#if !defined({name}) && !defined({guard})\n#define {guard}'
 
 

@@ -23,13 +23,10 @@ from colcon_rsia.frontend.cpp.model_mode.recovery.loop import \
 from colcon_rsia.frontend.cpp.model_mode.recovery.loop import \
     repair_header_of
 
-# what a unit's summary says of an error: `<unit>: parse error: <file>:<line>:
-# <message>`
-_ERROR = re.compile(r': parse error: (.*?):(\d+): (.*)$')
 _QUOTED_NAME = re.compile(r"'(?:[\w:]*::)?([A-Za-z_]\w*)")
 
 
-def reseed(entry, facts, *, package_path, workspace=None):
+def reseed(entry, facts, errors, *, package_path, workspace=None):
     """Seed a unit left with errors with what its package learnt since.
 
     Only a unit whose own code has errors, that was not repaired (its
@@ -38,6 +35,7 @@ def reseed(entry, facts, *, package_path, workspace=None):
     edit).
 
     :param facts: the unit's facts from its parse (TuFacts)
+    :param errors: (file, line, message) of the errors its parse left
     :param workspace: the store.WorkspaceRepairs, or None
     :returns: a function that puts the unit's repairs back as they were
       (its new parse was no better), or None: not worth another parse
@@ -46,11 +44,9 @@ def reseed(entry, facts, *, package_path, workspace=None):
     if header is None or not facts.package_errors or facts.repair_rounds:
         return None
     names, places = set(), set()
-    for diagnostic in facts.diagnostics:
-        match = _ERROR.search(diagnostic)
-        if match:
-            names.update(_QUOTED_NAME.findall(match.group(3)))
-            places.add((os.path.abspath(match.group(1)), match.group(2)))
+    for file, line, message in errors:
+        names.update(_QUOTED_NAME.findall(message))
+        places.add((os.path.abspath(file), int(line)))
     before = store.read_records(header)
     learnt = store.shared_seeds(
         header, package_declarations(package_path), workspace) - set(before)
@@ -67,5 +63,5 @@ def _answers(repair, names, places):
     if is_edit(kind):
         # `<file>:<line>:<column>`
         file, line, _ = name.rsplit(':', 2)
-        return (os.path.abspath(file), line) in places
+        return (os.path.abspath(file), int(line)) in places
     return name.rsplit('::', 1)[-1] in names
